@@ -1,0 +1,39 @@
+#pragma once
+// One physical effect in the force pipeline (bulk springs, bond damping, base contact, a loader, a
+// friction law). The run assembles the pipeline from exactly the effects the scene names.
+//
+// Step structure (physics.md B.17): within one integrator step the effect's discrete state (junction
+// states, anchors, counts, clocks) is frozen; add_forces() is a pure function of the stage state;
+// after the step is accepted, commit() judges and applies the state transitions once.
+#include <limits>
+#include <string_view>
+
+#include "frictionlab/component.hpp"
+#include "frictionlab/stage.hpp"
+#include "frictionlab/state.hpp"
+
+namespace frictionlab {
+
+class Effect : public Component {
+public:
+    ~Effect() override;
+
+    /// Short name for the pipeline log, e.g. "bulk springs (41x9, geometric)".
+    virtual std::string describe() const = 0;
+
+    /// Adds this effect's forces at one state (whole arrays; no allocation, no I/O).
+    virtual void add_forces(const StageView& s, ForceView& f) = 0;
+
+    /// Called at the start of every stage of the run, before any step of it.
+    virtual void begin_stage(const StageInfo&, const StageView&) {}
+    /// Called before each integrator step with the accepted state the step starts from.
+    virtual void begin_step(const StageView&) {}
+    /// Called once the step to `end` (of length dt) is accepted: apply discrete transitions.
+    virtual void commit(const StageView& /*end*/, double /*dt*/) {}
+    /// Simulated time of the next scheduled discrete event, for adaptive steppers.
+    virtual double next_event_time() const { return std::numeric_limits<double>::infinity(); }
+    /// Sets initial values of this effect's aux variables (if it allocated any).
+    virtual void initialise_aux(Eigen::Ref<Eigen::ArrayXd> /*aux*/) const {}
+};
+
+}  // namespace frictionlab

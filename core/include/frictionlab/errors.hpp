@@ -1,0 +1,25 @@
+#pragma once
+// The two ways a command fails: bad input (exit code 2) and a run that fails (exit code 1).
+#include <stdexcept>
+#include <string>
+
+namespace frictionlab {
+
+/// Bad input: a scene, an option, a plugin that cannot be used. Exit code 2.
+struct InputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// A run that cannot go on (non-finite value, runaway, failed stage check). Exit code 1. Outputs
+/// written so far stay valid.
+struct RunError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+namespace exit_code {
+inline constexpr int ok = 0;
+inline constexpr int run_failure = 1;
+inline constexpr int bad_input = 2;
+}  // namespace exit_code
+
+}  // namespace frictionlab

@@ -1,0 +1,57 @@
+#pragma once
+// The kinds of plugin a scene names. Each is a small interface in the language of the physics.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "frictionlab/body.hpp"
+#include "frictionlab/context.hpp"
+#include "frictionlab/effect.hpp"
+
+namespace frictionlab {
+
+class System;
+struct RunView;
+
+/// The elastic slider: geometry, masses and its internal force effects (springs, bond damping).
+class BulkModel : public Component {
+public:
+    ~BulkModel() override;
+    virtual const Body& body() const = 0;
+    /// The bulk's effects, only those its parameters switch on (no damping effect when eta = 0).
+    virtual std::vector<std::unique_ptr<Effect>> effects(const Context&) = 0;
+};
+
+/// Tangential force on the interface nodes from the base.
+class FrictionLaw : public Effect {
+public:
+    ~FrictionLaw() override;
+};
+
+/// A boundary force on a node set: normal load, driving spring, base contact.
+class Loader : public Effect {
+public:
+    ~Loader() override;
+};
+
+/// Reads the run at its cadence (set in the scene, handled by the run) and writes outputs.
+class Observer : public Component {
+public:
+    ~Observer() override;
+    virtual void begin(const RunView&) {}
+    virtual void observe(const RunView&) = 0;
+    /// Called once at the end, also when the run fails, so outputs stay valid.
+    virtual void end(const RunView&) {}
+};
+
+/// Advances the system by one accepted step, obeying the freeze-and-commit rule.
+class Integrator : public Component {
+public:
+    ~Integrator() override;
+    /// Takes one step no longer than max_dt (to land on stage ends) and returns its length.
+    virtual double step(System&, double max_dt) = 0;
+    /// The step the integrator is configured for (fixed steppers) or starts from (adaptive).
+    virtual double nominal_dt() const = 0;
+};
+
+}  // namespace frictionlab

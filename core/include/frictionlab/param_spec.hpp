@@ -1,0 +1,144 @@
+#pragma once
+// Parameters of a plugin type, declared once beside the type (design.md §1.4).
+//
+// A type binds scene keys to members of its typed `Params` struct:
+//
+//     static ParamSpec<Params> spec() {
+//         ParamSpec<Params> s("Three-state junction friction (Li et al. 2020).");
+//         s.add("mu_s", &Params::mu_s, "Static coefficient of one micro-contact.").greater_than(0);
+//         return s;
+//     }
+//
+// Defaults are the member initialisers of `Params`. The same declaration drives scene validation,
+// `frictionlab doc` and `frictionlab example`; constructors only ever see a filled `Params`.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace frictionlab {
+
+enum class ValueType { boolean, integer, real, string, real_list, string_list };
+
+using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>,
+                                std::vector<std::string>>;
+
+/// The values of one component, key -> value, as read from a scene (defaults filled in).
+using ParamValues = std::map<std::string, ParamValue, std::less<>>;
+
+/// Everything a user needs to know about one key: the single source for docs and validation.
+struct ParamInfo {
+    std::string key;
+    std::string doc;
+    std::string unit;  // SI unit, "1" for dimensionless, empty where meaningless (names, flags)
+    ValueType type = ValueType::real;
+    ParamValue default_value;
+    bool required = false;
+    std::optional<double> greater_than, at_least, less_than, at_most;  // numeric bounds
+    std::vector<std::string> choices;                                  // allowed strings
+};
+
+/// A rule between several keys, checked after every key is individually valid.
+struct ParamRule {
+    std::string key;  // the key an error is reported at
+    std::function<std::string(const ParamValues&)> check;  // empty string = fine
+};
+
+std::string to_string(ValueType);
+std::string to_string(const ParamValue&);
+/// The bound or choice `value` violates, or "" if it satisfies every constraint of `info`.
+std::string violated_constraint(const ParamInfo& info, const ParamValue& value);
+
+namespace detail {
+template <class T> struct value_type_of;
+template <> struct value_type_of<bool> { static constexpr auto type = ValueType::boolean; using stored = bool; };
+template <> struct value_type_of<int> { static constexpr auto type = ValueType::integer; using stored = std::int64_t; };
+template <> struct value_type_of<std::int64_t> { static constexpr auto type = ValueType::integer; using stored = std::int64_t; };
+template <> struct value_type_of<double> { static constexpr auto type = ValueType::real; using stored = double; };
+template <> struct value_type_of<std::string> { static constexpr auto type = ValueType::string; using stored = std::string; };
+template <> struct value_type_of<std::vector<double>> { static constexpr auto type = ValueType::real_list; using stored = std::vector<double>; };
+template <> struct value_type_of<std::vector<std::string>> { static constexpr auto type = ValueType::string_list; using stored = std::vector<std::string>; };
+}  // namespace detail
+
+template <class P>
+class ParamSpec {
+public:
+    /// Fluent access to one declared key; returned by add().
+    class Field {
+    public:
+        Field(ParamSpec& spec, std::size_t index) : spec_(&spec), index_(index) {}
+        Field& unit(std::string u) { info().unit = std::move(u); return *this; }
+        Field& greater_than(double v) { info().greater_than = v; return *this; }
+        Field& at_least(double v) { info().at_least = v; return *this; }
+        Field& less_than(double v) { info().less_than = v; return *this; }
+        Field& at_most(double v) { info().at_most = v; return *this; }
+        Field& one_of(std::vector<std::string> c) { info().choices = std::move(c); return *this; }
+        /// The key must be given in the scene; the member initialiser is then only an example value.
+        Field& required() { info().required = true; return *this; }
+
+    private:
+        ParamInfo& info() { return spec_->infos_[index_]; }
+        ParamSpec* spec_;
+        std::size_t index_;
+    };
+
+    explicit ParamSpec(std::string summary = {}) : summary_(std::move(summary)) {}
+
+    template <class T>
+    Field add(std::string key, T P::*member, std::string doc) {
+        using traits = detail::value_type_of<T>;
+        using stored = typename traits::stored;
+        ParamInfo info;
+        info.key = std::move(key);
+        info.doc = std::move(doc);
+        info.type = traits::type;
+        info.default_value = stored(P{}.*member);
+        infos_.push_back(std::move(info));
+        setters_.push_back([member](P& p, const ParamValue& v) { p.*member = static_cast<T>(std::get<stored>(v)); });
+        return Field(*this, infos_.size() - 1);
+    }
+
+    /// A constraint across keys, e.g. mu_d * tan(phi0) < 1. `check` sees the filled Params and
+    /// returns an error message, or "" when the values are consistent.
+    ParamSpec& rule(std::string key, std::function<std::string(const P&)> check) {
+        rules_.push_back({std::move(key), std::move(check)});
+        return *this;
+    }
+
+    const std::string& summary() const { return summary_; }
+    const std::vector<ParamInfo>& params() const { return infos_; }
+
+    /// Params from validated values; keys that are absent keep their defaults.
+    P build(const ParamValues& values) const {
+        P p{};
+        for (std::size_t i = 0; i < infos_.size(); ++i)
+            if (auto it = values.find(infos_[i].key); it != values.end()) setters_[i](p, it->second);
+        return p;
+    }
+
+    /// The cross-key rules, type-erased for the registry.
+    std::vector<ParamRule> erased_rules() const {
+        std::vector<ParamRule> out;
+        for (const auto& r : rules_)
+            out.push_back({r.key, [this_copy = *this, check = r.check](const ParamValues& v) {
+                               return check(this_copy.build(v));
+                           }});
+        return out;
+    }
+
+private:
+    struct TypedRule {
+        std::string key;
+        std::function<std::string(const P&)> check;
+    };
+    std::string summary_;
+    std::vector<ParamInfo> infos_;
+    std::vector<std::function<void(P&, const ParamValue&)>> setters_;
+    std::vector<TypedRule> rules_;
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,66 @@
+#pragma once
+// The assembled system: state vector, masses and the force pipeline. Integrators drive it through
+// derivative(), begin_step() and accept(); the run drives stages and observation.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "frictionlab/body.hpp"
+#include "frictionlab/effect.hpp"
+#include "frictionlab/stage.hpp"
+#include "frictionlab/state.hpp"
+
+namespace frictionlab {
+
+class System {
+public:
+    System(const Body& body, Index aux_size);
+
+    /// Adds an effect to the pipeline, active in the named stages only (empty: in every stage).
+    /// Effects are evaluated in the order added.
+    void add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in = {});
+
+    const Body& body() const { return body_; }
+    const StateLayout& layout() const { return layout_; }
+    double time() const { return t_; }
+    long long step_index() const { return steps_; }
+    const Eigen::VectorXd& y() const { return y_; }
+    StageView state() const { return view_of(y_, layout_, t_); }
+    /// Initial conditions before the first stage (positions default to the reference ones).
+    Eigen::VectorXd& initial_state() { return y_; }
+
+    /// dy/dt at (t, y): [v | F/m | aux rates]. Pure in (t, y) given the frozen discrete state.
+    void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
+    void begin_step();
+    /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
+    void accept(double t, const Eigen::VectorXd& y);
+    double next_event_time() const;
+
+    void begin_stage(const StageInfo& stage);
+    /// Evaluates every active effect at the accepted state, so published quantities and net_force()
+    /// describe it (observers call this; its cost is proportional to their cadence).
+    void refresh();
+    /// Net force on every node at the last refresh(): [fx (N) | fz (N)].
+    const Eigen::VectorXd& net_force() const { return net_force_; }
+    /// describe() of every effect active in the current stage, in evaluation order.
+    std::vector<std::string> pipeline() const;
+    /// Number of derivative evaluations so far (for tests and benchmarks).
+    long long evaluations() const { return evaluations_; }
+
+private:
+    struct Slot {
+        std::unique_ptr<Effect> effect;
+        std::vector<std::string> active_in;
+        bool active = true;
+    };
+    const Body& body_;
+    StateLayout layout_;
+    Eigen::ArrayXd inverse_mass_;
+    std::vector<Slot> slots_;
+    std::vector<Effect*> active_;  // the current stage's pipeline, evaluation order
+    Eigen::VectorXd y_, scratch_, net_force_;
+    double t_ = 0;
+    long long steps_ = 0, evaluations_ = 0;
+};
+
+}  // namespace frictionlab

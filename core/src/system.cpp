@@ -1,0 +1,78 @@
+#include "frictionlab/system.hpp"
+
+#include <algorithm>
+
+namespace frictionlab {
+
+System::System(const Body& body, Index aux_size)
+    : body_(body), layout_{body.size(), aux_size}, inverse_mass_(body.mass.inverse()) {
+    const Index n = layout_.nodes;
+    y_ = Eigen::VectorXd::Zero(layout_.size());
+    y_.segment(0, n) = body.x0.matrix();
+    y_.segment(n, n) = body.z0.matrix();
+    scratch_ = Eigen::VectorXd::Zero(layout_.size());
+    net_force_ = Eigen::VectorXd::Zero(2 * n);
+}
+
+void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in) {
+    slots_.push_back({std::move(effect), std::move(active_in), true});
+    active_.push_back(slots_.back().effect.get());
+}
+
+void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+    const Index n = layout_.nodes;
+    dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    dy.tail(layout_.size() - 2 * n).setZero();
+    const StageView s = view_of(y, layout_, t);
+    ForceView f = forces_of(dy, layout_);
+    for (Effect* e : active_) e->add_forces(s, f);
+    f.fx *= inverse_mass_;
+    f.fz *= inverse_mass_;
+    ++evaluations_;
+}
+
+void System::begin_step() {
+    const StageView s = state();
+    for (Effect* e : active_) e->begin_step(s);
+}
+
+void System::accept(double t, const Eigen::VectorXd& y) {
+    const double dt = t - t_;
+    y_ = y;
+    t_ = t;
+    ++steps_;
+    const StageView s = state();
+    for (Effect* e : active_) e->commit(s, dt);
+}
+
+double System::next_event_time() const {
+    double next = std::numeric_limits<double>::infinity();
+    for (const Effect* e : active_) next = std::min(next, e->next_event_time());
+    return next;
+}
+
+void System::begin_stage(const StageInfo& stage) {
+    active_.clear();
+    for (Slot& slot : slots_) {
+        slot.active = slot.active_in.empty() ||
+                      std::find(slot.active_in.begin(), slot.active_in.end(), stage.name) != slot.active_in.end();
+        if (slot.active) active_.push_back(slot.effect.get());
+    }
+    const StageView s = state();
+    for (Effect* e : active_) e->begin_stage(stage, s);
+}
+
+void System::refresh() {
+    derivative(t_, y_, scratch_);
+    const Index n = layout_.nodes;
+    net_force_.head(n) = (scratch_.segment(2 * n, n).array() * body_.mass).matrix();
+    net_force_.tail(n) = (scratch_.segment(3 * n, n).array() * body_.mass).matrix();
+}
+
+std::vector<std::string> System::pipeline() const {
+    std::vector<std::string> names;
+    for (const Effect* e : active_) names.push_back(e->describe());
+    return names;
+}
+
+}  // namespace frictionlab
