@@ -23,6 +23,9 @@ struct Body {
     Eigen::ArrayXd mass;    // [nnode], kg
     double length = 0, height = 0, width = 0;  // L (x), H (z), B (y), m
     double spacing = 0;                        // rest spacing of neighbouring nodes l_s, m
+    /// Stiffness K of the bulk's nearest-neighbour springs (N/m): boundary effects that the model
+    /// defines relative to it (the paper's base contact K_b = K/2) read it from here.
+    double bond_stiffness = 0;
     std::map<std::string, NodeSet, std::less<>> node_sets;
     std::vector<std::array<Index, 2>> bonds;  // springs, for pictures and bond-force output
     std::vector<std::array<Index, 4>> cells;  // quads, counter-clockwise; empty for a chain
