@@ -1,1 +1,189 @@
-int main() { return 0; }
+// frictionlab: run, check and document FrictionLab scenes.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "doc_writer.hpp"
+#include "frictionlab/errors.hpp"
+#include "frictionlab/plugin_search.hpp"
+#include "frictionlab/registry.hpp"
+#include "frictionlab/run.hpp"
+#include "frictionlab/scene.hpp"
+
+namespace fl = frictionlab;
+
+namespace {
+
+/// Options every subcommand shares.
+struct Common {
+    std::vector<std::filesystem::path> plugin_paths;
+    std::string log_level = "info";
+    bool quiet = false;
+
+    void attach(CLI::App& cmd) {
+        cmd.add_option("--plugin-path", plugin_paths, "Also load plugins from this directory (repeatable; searched first)")
+            ->check(CLI::ExistingDirectory);
+        cmd.add_option("--log-level", log_level, "Log level")
+            ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
+        cmd.add_flag("-q,--quiet", quiet, "Only warnings and errors");
+    }
+
+    std::shared_ptr<spdlog::logger> logger() const {
+        auto log = std::make_shared<spdlog::logger>("frictionlab", std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
+        log->set_level(quiet ? spdlog::level::warn : spdlog::level::from_str(log_level));
+        log->set_pattern("[%H:%M:%S.%e] %^%l%$: %v");
+        return log;
+    }
+
+    std::vector<std::filesystem::path> directories(const std::vector<std::filesystem::path>& scene_paths) const {
+        const char* env = std::getenv("FRICTIONLAB_PLUGIN_PATH");
+        return fl::plugin_directories(plugin_paths, scene_paths, env ? env : "", fl::shipped_plugin_directory());
+    }
+};
+
+/// Reads and validates a scene, loading the plugins it needs. Prints every diagnostic and returns
+/// nothing if the scene has any error.
+std::optional<fl::Scene> read_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                                    const Common& common, fl::Registry& registry) {
+    fl::Diagnostics diagnostics;
+    auto document = fl::SceneDocument::load(file, overrides, diagnostics);
+    const auto scene_paths = document.plugin_paths(diagnostics);
+    fl::load_plugins(registry, common.directories(scene_paths));
+    fl::Scene scene = document.validate(registry, diagnostics);
+    if (!diagnostics.empty()) {
+        std::cerr << diagnostics.format();
+        std::cerr << diagnostics.list().size() << (diagnostics.list().size() == 1 ? " error" : " errors") << " in "
+                  << file.string() << "\n";
+        return std::nullopt;
+    }
+    return scene;
+}
+
+std::vector<const fl::TypeInfo*> all_types(const fl::Registry& registry) {
+    std::vector<const fl::TypeInfo*> out;
+    for (auto kind : {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator,
+                      fl::Kind::observer})
+        for (const auto* t : registry.types(kind)) out.push_back(t);
+    return out;
+}
+
+std::optional<fl::Kind> kind_named(const std::string& name) {
+    for (auto kind : {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator,
+                      fl::Kind::observer})
+        if (fl::to_string(kind) == name) return kind;
+    return std::nullopt;
+}
+
+/// The types a `KIND[/TYPE]` selector names; throws InputError with the alternatives otherwise.
+std::vector<const fl::TypeInfo*> select_types(const fl::Registry& registry, const std::string& selector) {
+    if (selector.empty()) return all_types(registry);
+    const auto slash = selector.find('/');
+    const std::string kind_name = selector.substr(0, slash);
+    const auto kind = kind_named(kind_name);
+    if (!kind)
+        throw fl::InputError("unknown kind '" + kind_name +
+                             "' (kinds: bulk_model, friction_law, loader, integrator, observer)");
+    if (slash == std::string::npos) return registry.types(*kind);
+    const std::string type = selector.substr(slash + 1);
+    if (const auto* t = registry.find(*kind, type)) return {t};
+    std::string known;
+    for (const auto* t : registry.types(*kind)) known += (known.empty() ? "" : ", ") + t->type;
+    throw fl::InputError("no " + kind_name + " type '" + type + "' (available: " + known + ")");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"FrictionLab: simulations of the onset of frictional sliding.\n"
+                 "Scenes are YAML files naming a bulk model, friction law, loaders, integrator, stages and observers."};
+    app.set_version_flag("--version", "frictionlab " + fl::framework_version());
+    app.require_subcommand(1);
+    app.fallthrough();
+
+    Common common;
+    std::filesystem::path scene_file;
+    std::vector<std::string> overrides;
+    std::string output;
+    bool force = false;
+    std::string selector, format = "text";
+
+    auto* run = app.add_subcommand("run", "Run a scene");
+    run->add_option("scene", scene_file, "Scene file (YAML)")->required();
+    run->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
+    run->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
+    run->add_flag("--force", force, "Replace the output directory if it exists");
+    common.attach(*run);
+
+    auto* check = app.add_subcommand("check", "Validate a scene; report every error with file:line:column");
+    check->add_option("scene", scene_file, "Scene file (YAML)")->required();
+    check->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
+    common.attach(*check);
+
+    auto* list = app.add_subcommand("list", "List every kind and type, with the library that provides it");
+    common.attach(*list);
+
+    auto* doc = app.add_subcommand("doc", "Document types and their parameters: doc [KIND[/TYPE]]");
+    doc->add_option("selector", selector, "A kind (e.g. friction_law) or KIND/TYPE; all types if omitted");
+    doc->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "md", "json"}));
+    common.attach(*doc);
+
+    auto* example = app.add_subcommand("example", "Print a valid YAML snippet with every default: example KIND/TYPE");
+    example->add_option("selector", selector, "KIND/TYPE, e.g. friction_law/three_state_junctions")->required();
+    common.attach(*example);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? fl::exit_code::ok : fl::exit_code::bad_input;
+    }
+
+    auto log = common.logger();
+    try {
+        fl::Registry registry;
+        if (*run || *check) {
+            if (!output.empty()) overrides.push_back("output=" + output);
+            auto scene = read_scene(scene_file, overrides, common, registry);
+            if (!scene) return fl::exit_code::bad_input;
+            if (*check) {
+                std::cout << scene_file.string() << ": ok\n";
+                return fl::exit_code::ok;
+            }
+            const bool live = isatty(STDERR_FILENO) && !common.quiet;
+            const auto summary = fl::run_scene(*scene, registry, *log, {force, live});
+            log->info("done: {} steps, {:.6g} s simulated in {:.3g} s wall ({:.3g} steps/s); outputs in {}",
+                      summary.steps, summary.simulated_time, summary.wall_seconds,
+                      summary.steps / std::max(summary.wall_seconds, 1e-9), scene->output_directory.string());
+            return fl::exit_code::ok;
+        }
+        fl::load_plugins(registry, common.directories({}));
+        if (*list) {
+            for (const auto* t : all_types(registry))
+                std::cout << fl::to_string(t->kind) << "/" << t->type << "  "
+                          << (t->library.empty() ? "built in" : t->library) << "\n";
+        } else if (*doc) {
+            const auto f = format == "md" ? fl::cli::DocFormat::markdown
+                           : format == "json" ? fl::cli::DocFormat::json
+                                              : fl::cli::DocFormat::text;
+            std::cout << fl::cli::render_doc(select_types(registry, selector), f);
+        } else if (*example) {
+            const auto types = select_types(registry, selector);
+            if (types.size() != 1) throw fl::InputError("example needs KIND/TYPE, e.g. friction_law/three_state_junctions");
+            std::cout << fl::example_yaml(*types.front());
+        }
+        return fl::exit_code::ok;
+    } catch (const fl::InputError& e) {
+        log->error("{}", e.what());
+        return fl::exit_code::bad_input;
+    } catch (const fl::RunError& e) {
+        log->error("run failed: {}", e.what());
+        return fl::exit_code::run_failure;
+    } catch (const std::exception& e) {
+        log->error("internal error: {}", e.what());
+        return fl::exit_code::run_failure;
+    }
+}

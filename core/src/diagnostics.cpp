@@ -4,11 +4,13 @@
 #include <numeric>
 #include <tuple>
 
+#include <fmt/format.h>
+
 namespace frictionlab {
 
 std::string Diagnostic::format() const {
-    std::string out = where.file.empty() ? std::string("<scene>") : where.file;
-    if (where.line > 0) out += ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
+    std::string out = where.file.empty() ? "<scene>" : where.file;
+    if (where.line > 0) out += fmt::format(":{}:{}", where.line, where.column);
     out += ": error: ";
     if (!key_path.empty()) out += key_path + ": ";
     return out + message;

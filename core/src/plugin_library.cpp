@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstring>
+#include <system_error>
 #include <utility>
 
 #include <fmt/format.h>
@@ -33,20 +34,35 @@ std::string first_difference(const AbiFingerprint& plugin, const AbiFingerprint&
                                p[i].second, h[i].second);
     return {};
 }
+
+/// dlerror() repeats the file name ("<file>: cannot open shared object file: ..."); our message
+/// already starts with it.
+std::string dl_reason(const std::string& file) {
+    const char* e = dlerror();
+    std::string reason = e ? e : "dlopen failed";
+    if (const std::string prefix = file + ": "; reason.starts_with(prefix)) reason.erase(0, prefix.size());
+    return reason;
+}
+
+/// Absolute, so that dlopen opens this very file: a name without a slash would instead be searched
+/// for in LD_LIBRARY_PATH and the system library directories. Also what run metadata records.
+std::filesystem::path absolute_path(const std::filesystem::path& file) {
+    std::error_code ec;
+    auto p = std::filesystem::absolute(file, ec);
+    return ec ? file : p.lexically_normal();
+}
 }  // namespace
 
-PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(file) {
+PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(absolute_path(file)) {
     const auto fail = [&](const std::string& why) {
         if (handle_) dlclose(handle_);
         handle_ = nullptr;
         throw InputError(fmt::format("{}: cannot use this plugin: {}", file_.string(), why));
     };
+    if (std::error_code ec; !std::filesystem::exists(file_, ec)) fail("no such file");
     dlerror();
-    handle_ = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle_) {
-        const char* e = dlerror();
-        fail(e ? e : "dlopen failed");
-    }
+    handle_ = dlopen(file_.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle_) fail(dl_reason(file_.string()));
     void* symbol = dlsym(handle_, FRICTIONLAB_PLUGIN_ENTRY_SYMBOL);
     if (!symbol)
         fail("it does not export the entry symbol '" FRICTIONLAB_PLUGIN_ENTRY_SYMBOL
@@ -56,6 +72,7 @@ PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(file) {
     std::memcpy(&entry, &symbol, sizeof entry);  // object pointer -> function pointer, as POSIX allows
     header_ = entry();
     if (!header_) fail("its entry point returned no header");
+    // Only the first two fields are read before they have been checked: their place never moves.
     if (header_->header_version != plugin_header_version || header_->header_size != sizeof(PluginHeader))
         fail(fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
                          header_->header_version, header_->header_size, plugin_header_version,

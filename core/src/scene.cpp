@@ -1,15 +1,105 @@
-// PLACEHOLDER: being written (scene parsing and validation).
 #include "frictionlab/scene.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
 #include "frictionlab/registry.hpp"
+#include "scene_overrides.hpp"
+#include "scene_validator.hpp"
+#include "scene_yaml.hpp"
+
 namespace frictionlab {
-struct SceneDocument::Impl {};
-SceneDocument::SceneDocument(std::unique_ptr<Impl> i) : impl_(std::move(i)) {}
+
+namespace {
+struct SceneData {
+    std::optional<YAML::Node> root;  // none when the file could not be read or is malformed
+    detail::SourceMap sources;
+    std::filesystem::path folder;    // that relative plugin paths are taken from
+};
+}  // namespace
+
+struct SceneDocument::Impl {
+    SceneData data;
+};
+
+SceneDocument::SceneDocument(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 SceneDocument::SceneDocument(SceneDocument&&) noexcept = default;
 SceneDocument& SceneDocument::operator=(SceneDocument&&) noexcept = default;
 SceneDocument::~SceneDocument() = default;
-SceneDocument SceneDocument::load(const std::filesystem::path&, const std::vector<std::string>&, Diagnostics&) { throw InputError("todo"); }
-SceneDocument SceneDocument::parse(const std::string&, const std::string&, const std::vector<std::string>&, Diagnostics&) { throw InputError("todo"); }
-std::vector<std::filesystem::path> SceneDocument::plugin_paths(Diagnostics&) const { return {}; }
-Scene SceneDocument::validate(const Registry&, Diagnostics&) const { return {}; }
-std::string example_yaml(const TypeInfo&) { return {}; }
+
+namespace {
+
+// Bad input is reported, never thrown; anything else escaping is a bug, still reported rather
+// than thrown so that a command can print every diagnostic it has.
+template <class F>
+void reporting_failures(const std::string& file, Diagnostics& diagnostics, F&& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        diagnostics.error({file, 0, 0}, "", std::string("unexpected failure while reading the scene: ") + e.what());
+    }
 }
+
+std::optional<std::string> read_file(const std::filesystem::path& file, Diagnostics& diagnostics) {
+    std::error_code ec;
+    const auto fail = [&](const std::string& why) {
+        diagnostics.error({file.string(), 0, 0}, "", "cannot read the scene file: " + why);
+        return std::nullopt;
+    };
+    if (!std::filesystem::exists(file, ec)) return fail("it does not exist");
+    if (std::filesystem::is_directory(file, ec)) return fail("it is a folder");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return fail(std::strerror(errno));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) return fail(std::strerror(errno));
+    return text;
+}
+
+SceneData read(const std::optional<std::string>& text, const std::string& name, const std::filesystem::path& folder,
+               const std::vector<std::string>& overrides, Diagnostics& diagnostics) {
+    SceneData data{std::nullopt, detail::SourceMap(name), folder};
+    if (!text) return data;
+    reporting_failures(name, diagnostics, [&] {
+        data.root = detail::read_yaml(*text, name, diagnostics);
+        if (data.root) detail::apply_overrides(*data.root, overrides, data.sources, diagnostics);
+    });
+    return data;
+}
+
+}  // namespace
+
+SceneDocument SceneDocument::load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                                  Diagnostics& diagnostics) {
+    auto data = read(read_file(file, diagnostics), file.string(), file.parent_path(), overrides, diagnostics);
+    return SceneDocument(std::make_unique<Impl>(std::move(data)));
+}
+
+SceneDocument SceneDocument::parse(const std::string& text, const std::string& name,
+                                   const std::vector<std::string>& overrides, Diagnostics& diagnostics) {
+    auto data = read(text, name, std::filesystem::path(name).parent_path(), overrides, diagnostics);
+    return SceneDocument(std::make_unique<Impl>(std::move(data)));
+}
+
+std::vector<std::filesystem::path> SceneDocument::plugin_paths(Diagnostics& diagnostics) const {
+    std::vector<std::filesystem::path> paths;
+    if (!impl_->data.root) return paths;
+    reporting_failures(impl_->data.sources.file(), diagnostics, [&] {
+        paths = detail::read_plugin_paths(*impl_->data.root, impl_->data.sources, impl_->data.folder, diagnostics);
+    });
+    return paths;
+}
+
+// A document that could not be read has had its error reported by load() or parse() already.
+Scene SceneDocument::validate(const Registry& registry, Diagnostics& diagnostics) const {
+    Scene scene;
+    scene.file = impl_->data.sources.file();
+    if (!impl_->data.root) return scene;
+    reporting_failures(impl_->data.sources.file(), diagnostics, [&] {
+        scene = detail::validate_scene(*impl_->data.root, impl_->data.sources, impl_->data.folder, registry, diagnostics);
+    });
+    return scene;
+}
+
+}  // namespace frictionlab

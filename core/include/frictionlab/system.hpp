@@ -44,6 +44,11 @@ public:
     const Eigen::VectorXd& net_force() const { return net_force_; }
     /// describe() of every effect active in the current stage, in evaluation order.
     std::vector<std::string> pipeline() const;
+    /// Visits every effect of the pipeline (active or not), e.g. to set initial aux values.
+    template <class F>
+    void for_each_effect(F&& visit) const {
+        for (const Slot& slot : slots_) visit(*slot.effect);
+    }
     /// Number of derivative evaluations so far (for tests and benchmarks).
     long long evaluations() const { return evaluations_; }
 

@@ -1,0 +1,35 @@
+# cmake --install: the core library and headers, the exported target FrictionLab::frictionlab with
+# its package config (so out-of-tree plugins can find_package(FrictionLab)), and share/ as
+# share/frictionlab. The CLI and the shipped plugins install themselves where they are defined.
+include(CMakePackageConfigHelpers)
+
+set(FRICTIONLAB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/FrictionLab)
+
+install(TARGETS frictionlab EXPORT FrictionLabTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/frictionlab
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  FILES_MATCHING PATTERN "*.hpp")
+install(EXPORT FrictionLabTargets
+  NAMESPACE FrictionLab::
+  DESTINATION ${FRICTIONLAB_CMAKE_DIR})
+
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/FrictionLabConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/FrictionLabConfig.cmake
+  INSTALL_DESTINATION ${FRICTIONLAB_CMAKE_DIR})
+# Before 1.0 a minor version may change the plugin ABI (plugin.hpp's framework_abi_version).
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/FrictionLabConfigVersion.cmake
+  VERSION ${PROJECT_VERSION}
+  COMPATIBILITY SameMinorVersion)
+install(FILES
+  ${PROJECT_BINARY_DIR}/FrictionLabConfig.cmake
+  ${PROJECT_BINARY_DIR}/FrictionLabConfigVersion.cmake
+  ${CMAKE_CURRENT_LIST_DIR}/FrictionLabPlugin.cmake
+  DESTINATION ${FRICTIONLAB_CMAKE_DIR})
+
+# Plugin template, plotting scripts, docs: whatever share/ holds.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/share/
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/frictionlab
+  USE_SOURCE_PERMISSIONS)

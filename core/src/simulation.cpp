@@ -1,0 +1,114 @@
+#include "frictionlab/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+#include "frictionlab/registry.hpp"
+
+namespace frictionlab {
+
+namespace {
+/// Where the first non-finite value of the state is, said in the physics' terms.
+std::string locate_non_finite(const System& sys) {
+    const StageView s = sys.state();
+    const std::pair<const char*, const Eigen::Map<const Eigen::ArrayXd>*> arrays[] = {
+        {"x", &s.x}, {"z", &s.z}, {"vx", &s.vx}, {"vz", &s.vz}};
+    for (const auto& [name, values] : arrays)
+        for (Index i = 0; i < values->size(); ++i)
+            if (!std::isfinite((*values)(i))) return fmt::format("{} of block {} is {}", name, i, (*values)(i));
+    for (Index i = 0; i < s.aux.size(); ++i)
+        if (!std::isfinite(s.aux(i))) return fmt::format("auxiliary variable {} is {}", i, s.aux(i));
+    return "a value is not finite";
+}
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
+    : scene_(scene), registry_(registry), log_(log) {
+    info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml};
+    bulk_ = registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk"));
+    record_plugin(scene.bulk, Kind::bulk_model);
+
+    struct Pending {
+        std::unique_ptr<Effect> effect;
+        std::vector<std::string> stages;
+    };
+    std::vector<Pending> effects;
+    for (auto& e : bulk_->effects(context("bulk"))) effects.push_back({std::move(e), {}});
+    // Loaders come before the friction law: it reads the normal force the base contact publishes.
+    for (const auto& l : scene.loaders) {
+        effects.push_back({registry.create<Loader>(l.type, l.values, context(l.path)), l.stages});
+        record_plugin(l, Kind::loader);
+    }
+    if (scene.friction) {
+        const auto& f = *scene.friction;
+        effects.push_back({registry.create<FrictionLaw>(f.type, f.values, context(f.path)), {}});
+        record_plugin(f, Kind::friction_law);
+    }
+    integrator_ = registry.create<Integrator>(scene.integrator.type, scene.integrator.values, context("integrator"));
+    record_plugin(scene.integrator, Kind::integrator);
+    for (const auto& o : scene.observers) record_plugin(o, Kind::observer);
+
+    system_ = std::make_unique<System>(bulk_->body(), aux_.count);
+    for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages));
+    Eigen::VectorXd& y = system_->initial_state();
+    Eigen::Ref<Eigen::ArrayXd> aux = y.tail(system_->layout().aux).array();
+    system_->for_each_effect([&](const Effect& e) { e.initialise_aux(aux); });
+}
+
+Simulation::~Simulation() = default;
+
+Context Simulation::context(const std::string& name) {
+    return Context{log_, scene_.seed, bulk_ ? &bulk_->body() : nullptr, &quantities_, &aux_, name};
+}
+
+void Simulation::record_plugin(const ComponentSpec& component, Kind kind) {
+    const TypeInfo* t = registry_.find(kind, component.type);
+    if (!t || t->library.empty()) return;
+    for (const auto& p : info_.plugins)
+        if (p.file == t->library) return;
+    for (const auto& p : registry_.plugins())
+        if (p.file == t->library) info_.plugins.push_back(p);
+}
+
+StageInfo Simulation::begin_stage(std::size_t index) {
+    const StageSpec& spec = scene_.stages.at(index);
+    StageInfo stage{spec.name, static_cast<int>(index), system_->time(), spec.duration, spec.friction_events};
+    system_->begin_stage(stage);
+    log_.info("stage {} '{}': {:.6g} s from t = {:.6g} s, friction events {}", stage.index + 1, stage.name,
+              stage.duration, stage.t_start, stage.friction_events ? "on" : "off");
+    for (const auto& e : system_->pipeline()) log_.info("  effect: {}", e);
+    return stage;
+}
+
+double Simulation::step(double max_dt) {
+    const double dt = integrator_->step(*system_, max_dt);
+    if (!system_->y().allFinite())
+        throw RunError(fmt::format("step {}, t = {:.9g} s: {}", system_->step_index(), system_->time(),
+                                   locate_non_finite(*system_)));
+    // A finite but exploding state (an unstable step) is caught long before it overflows.
+    if (system_->step_index() % runaway_check_interval == 0) check_bounded();
+    return dt;
+}
+
+void Simulation::check_bounded() const {
+    const StageView s = system_->state();
+    const Body& body = system_->body();
+    const double limit = runaway_factor * std::max(body.length, body.height);
+    Index node = 0;
+    const double dx = (s.x - body.x0).abs().max((s.z - body.z0).abs()).maxCoeff(&node);
+    if (dx > limit)
+        throw RunError(fmt::format("step {}, t = {:.9g} s: block {} has moved {:.3g} m from its reference position, "
+                                   "more than {} times the slider size: the run is unstable (time step too large?)",
+                                   system_->step_index(), system_->time(), node, dx, runaway_factor));
+}
+
+bool Simulation::reached(double t_end) const {
+    // Time is a sum of steps, so it may miss t_end by round-off; a millionth of a step is no step.
+    return t_end - system_->time() <= 1e-6 * integrator_->nominal_dt();
+}
+
+void Simulation::advance_to(double t_end) {
+    while (!reached(t_end)) step(t_end - system_->time());
+}
+
+}  // namespace frictionlab
