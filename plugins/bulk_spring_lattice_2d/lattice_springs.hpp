@@ -1,0 +1,41 @@
+#pragma once
+#include <string>
+
+#include "frictionlab/effect.hpp"
+#include "lattice_grid.hpp"
+
+namespace frictionlab {
+
+/// The central springs of the square lattice: straight bonds of stiffness K and rest length l_s,
+/// diagonal bonds of stiffness K/2 and rest length sqrt(2) l_s (Li2020 Sec. 2.1, Eq. 1).
+///
+/// Geometric (Li2020 Eq. 1): the force on node i from node j is
+///     F_ij = k (r - l) Delta / r,   Delta = x_j - x_i,  r = |Delta|,
+/// exact for large rotations. Small strain: the same law linearised about the reference
+/// configuration, F_ij = k (Delta_u . e) e, with e the reference unit vector of the bond and
+/// Delta_u the relative displacement. It is cheaper (no square root or division), exact for the
+/// elastic constants, but a rigid rotation by phi stretches every bond by l (cos phi - 1), so it is
+/// only for small rotations.
+///
+/// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
+class LatticeSprings final : public Effect {
+public:
+    enum class Law { geometric, small_strain };
+
+    LatticeSprings(const LatticeGrid& grid, double bond_stiffness, Law law);
+
+    std::string describe() const override;
+    void add_forces(const StageView& s, ForceView& f) override;
+
+private:
+    void add_family(const BondFamily& b, const LatticeGrid::ConstView& x, const LatticeGrid::ConstView& z,
+                    LatticeGrid::View& fx, LatticeGrid::View& fz);
+
+    LatticeGrid grid_;
+    std::array<BondFamily, 4> families_;
+    double stiffness_;
+    Law law_;
+    Eigen::ArrayXd dx_, dz_, tension_;  // scratch, one family at a time
+};
+
+}  // namespace frictionlab

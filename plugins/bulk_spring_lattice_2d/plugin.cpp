@@ -1,0 +1,9 @@
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+#include "spring_lattice_2d.hpp"
+
+namespace {
+void register_types(frictionlab::Registry& r) { r.add<frictionlab::SpringLattice2d>(); }
+}  // namespace
+
+FRICTIONLAB_PLUGIN("bulk_spring_lattice_2d", "0.1.0", register_types)

@@ -1,0 +1,136 @@
+#include "spring_lattice_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
+    ParamSpec<Params> s(
+        "Square spring-block lattice with diagonal springs (Li et al. 2020, Eqs. 1, 2, 6): straight "
+        "springs K = 3BE/4, diagonals K/2 (Poisson's ratio 1/3), equal masses M/N, dashpots "
+        "eta = sqrt(c K m) on every bond. doi:10.1007/s10409-020-00955-2");
+    s.add("length", &Params::length, "Slider length L along x, the sliding direction.").unit("m").greater_than(0);
+    s.add("height", &Params::height, "Slider height H along z, normal to the interface.").unit("m").greater_than(0);
+    s.add("width", &Params::width, "Slider width B along y (out of plane); enters K = 3BE/4.")
+        .unit("m")
+        .greater_than(0);
+    s.add("mass", &Params::mass, "Total mass M of the slider, shared equally by all nodes.").unit("kg").greater_than(0);
+    s.add("youngs_modulus", &Params::youngs_modulus, "Young's modulus E of the slider material.")
+        .unit("Pa")
+        .greater_than(0);
+    s.add("nx", &Params::nx, "Number of node columns along x.").unit("1").at_least(2);
+    s.add("nz", &Params::nz, "Number of node rows along z; L/(nx-1) must equal H/(nz-1).").unit("1").at_least(2);
+    s.add("damping_factor", &Params::damping_factor,
+          "Factor c in the bond dashpot eta = sqrt(c K m) (0.5 in Li2020, 0.1 in Tromborg 2014); 0 switches "
+          "bond damping off.")
+        .unit("1")
+        .at_least(0);
+    s.add("damping_mode", &Params::damping_mode,
+          "full_vector: eta (v_j - v_i) (Li2020 Eq. 2 as read in physics.md B.4); bond_projected: only the "
+          "component along the current bond, which leaves rigid rotation undamped.")
+        .one_of({"full_vector", "bond_projected"});
+    s.add("springs", &Params::springs,
+          "geometric: Li2020 Eq. 1, exact for large rotations; small_strain: linearised about the reference "
+          "configuration, cheaper, for small rotations only.")
+        .one_of({"geometric", "small_strain"});
+    s.rule("nz", spacing_mismatch);
+    return s;
+}
+
+std::string SpringLattice2d::spacing_mismatch(const Params& p) {
+    if (p.nx < 2 || p.nz < 2) return {};  // the per-key bounds report this
+    const double along_x = p.length / (p.nx - 1), along_z = p.height / (p.nz - 1);
+    if (std::abs(along_x - along_z) <= 1e-9 * std::max(along_x, along_z)) return {};
+    return fmt::format(
+        "the lattice cells must be square: length/(nx-1) = {:.6g} m but height/(nz-1) = {:.6g} m", along_x,
+        along_z);
+}
+
+namespace {
+// Scene validation has checked the choices; this guards Params built in code.
+template <class Enum>
+Enum choice(const std::string& key, const std::string& value,
+            std::initializer_list<std::pair<const char*, Enum>> options) {
+    for (const auto& [name, e] : options)
+        if (value == name) return e;
+    throw InputError(fmt::format("spring_lattice_2d: {} = '{}' is not one of the allowed values", key, value));
+}
+}  // namespace
+
+SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)
+    : law_(choice<LatticeSprings::Law>("springs", p.springs,
+                                       {{"geometric", LatticeSprings::Law::geometric},
+                                        {"small_strain", LatticeSprings::Law::small_strain}})),
+      damping_mode_(choice<BondDamping::Mode>("damping_mode", p.damping_mode,
+                                              {{"full_vector", BondDamping::Mode::full_vector},
+                                               {"bond_projected", BondDamping::Mode::bond_projected}})) {
+    if (std::string why = spacing_mismatch(p); !why.empty()) throw InputError(why);
+    grid_ = {p.nx, p.nz, p.length / (p.nx - 1)};
+    const Index n = grid_.size();
+    body_.x0.resize(n);
+    body_.z0.resize(n);
+    for (Index iz = 0; iz < grid_.nz; ++iz)
+        for (Index ix = 0; ix < grid_.nx; ++ix) {
+            body_.x0(grid_.node(ix, iz)) = ix * grid_.spacing;
+            body_.z0(grid_.node(ix, iz)) = iz * grid_.spacing;
+        }
+    body_.mass = Eigen::ArrayXd::Constant(n, p.mass / n);
+    body_.length = p.length;
+    body_.height = p.height;
+    body_.width = p.width;
+    body_.spacing = grid_.spacing;
+    body_.bond_stiffness = 0.75 * p.width * p.youngs_modulus;
+    eta_ = std::sqrt(p.damping_factor * body_.bond_stiffness * node_mass());
+    build_node_sets();
+    build_connectivity();
+    ctx.log.debug("{}: {}x{} lattice, l_s = {:.4g} m, m = {:.4g} kg, K = {:.4g} N/m, eta = {:.4g} N s/m", ctx.name,
+                  grid_.nx, grid_.nz, grid_.spacing, node_mass(), body_.bond_stiffness, eta_);
+}
+
+void SpringLattice2d::build_node_sets() {
+    auto row = [&](Index iz) {
+        NodeSet s;
+        for (Index ix = 0; ix < grid_.nx; ++ix) s.push_back(grid_.node(ix, iz));
+        return s;
+    };
+    auto column = [&](Index ix) {
+        NodeSet s;
+        for (Index iz = 0; iz < grid_.nz; ++iz) s.push_back(grid_.node(ix, iz));
+        return s;
+    };
+    NodeSet all(grid_.size());
+    for (Index i = 0; i < grid_.size(); ++i) all[i] = i;
+    body_.node_sets["all"] = std::move(all);
+    body_.node_sets["interface"] = row(0);
+    body_.node_sets["top"] = row(grid_.nz - 1);
+    body_.node_sets["trailing_edge"] = column(0);
+    body_.node_sets["leading_edge"] = column(grid_.nx - 1);
+}
+
+void SpringLattice2d::build_connectivity() {
+    for (const BondFamily& b : grid_.families())
+        for (Index c = 0; c < b.cols; ++c)
+            for (Index r = 0; r < b.rows; ++r)
+                body_.bonds.push_back(
+                    {grid_.node(b.from_row + r, b.from_col + c), grid_.node(b.to_row + r, b.to_col + c)});
+    for (Index iz = 0; iz + 1 < grid_.nz; ++iz)
+        for (Index ix = 0; ix + 1 < grid_.nx; ++ix)
+            body_.cells.push_back(
+                {grid_.node(ix, iz), grid_.node(ix + 1, iz), grid_.node(ix + 1, iz + 1), grid_.node(ix, iz + 1)});
+}
+
+std::vector<std::unique_ptr<Effect>> SpringLattice2d::effects(const Context&) {
+    std::vector<std::unique_ptr<Effect>> out;
+    out.push_back(std::make_unique<LatticeSprings>(grid_, body_.bond_stiffness, law_));
+    if (eta_ > 0) out.push_back(std::make_unique<BondDamping>(grid_, eta_, damping_mode_));
+    return out;
+}
+
+}  // namespace frictionlab

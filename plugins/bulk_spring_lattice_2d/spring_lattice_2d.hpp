@@ -1,0 +1,74 @@
+#pragma once
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+#include "bond_damping.hpp"
+#include "lattice_grid.hpp"
+#include "lattice_springs.hpp"
+
+namespace frictionlab {
+
+/// The elastic slider as a square lattice of N = nx nz point masses m = M/N (edge and corner
+/// nodes are not lightened, physics.md B.20) with spacing l_s = L/(nx-1) = H/(nz-1), joined by
+/// central springs to their 4 nearest neighbours (stiffness K = 3BE/4, rest length l_s) and to their
+/// 4 next-nearest neighbours (K/2, sqrt(2) l_s), plus a dashpot eta = sqrt(c K m) on every bond
+/// (Li2020 Eqs. 1, 2, 6). The springs give plane-stress constants C11 = 9E/8, C12 = C44 = 3E/8,
+/// i.e. Young's modulus E and Poisson's ratio exactly 1/3 (physics.md A.2); long-wave speeds
+/// c_L = sqrt(9E/8 rho), c_S = sqrt(3E/8 rho) with the lattice density rho = m/(l_s^2 B).
+///
+/// Two consequences of not halving boundary masses and springs: rho is M/(LHB) times
+/// (nx-1)(nz-1)/(nx nz) (0.867 for 41x9, so wave speeds are 7.4 % above those of M/(LHB):
+/// c_L = 1816 m/s, c_S = 1049 m/s), and under uniaxial stress sigma the end faces carry
+/// sigma B (H + 3 l_s/4), the full straight springs of the top and bottom rows acting like an extra
+/// quarter-spacing of material.
+///
+/// Node ix + nx*iz sits at (ix l_s, iz l_s); iz = 0 is the interface row. Boundary forces (load,
+/// driving spring, base contact) are separate loaders acting on the node sets named here.
+///
+/// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2;
+/// Tromborg, Scheibert, Amundsen, Thogersen, Malthe-Sorenssen, PRL 107, 074301 (2011).
+class SpringLattice2d final : public BulkModel {
+public:
+    struct Params {
+        double length = 0.1;           // L, m
+        double height = 0.02;          // H, m
+        double width = 0.005;          // B, m
+        double mass = 0.0118;          // M, kg
+        double youngs_modulus = 3e9;   // E, Pa
+        int nx = 41;
+        int nz = 9;
+        double damping_factor = 0.5;   // c in eta = sqrt(c K m)
+        std::string damping_mode = "full_vector";
+        std::string springs = "geometric";
+    };
+    static constexpr std::string_view type = "spring_lattice_2d";
+    static ParamSpec<Params> spec();
+    /// Why the lattice cells are not square, or "" if they are (L/(nx-1) = H/(nz-1) to 1e-9).
+    static std::string spacing_mismatch(const Params& p);
+
+    SpringLattice2d(const Params& p, const Context& ctx);
+
+    const Body& body() const override { return body_; }
+    std::vector<std::unique_ptr<Effect>> effects(const Context& ctx) override;
+
+    double node_mass() const { return body_.mass(0); }
+    /// eta = sqrt(c K m), N s/m; 0 when damping is off.
+    double damping_coefficient() const { return eta_; }
+    const LatticeGrid& grid() const { return grid_; }
+
+private:
+    void build_node_sets();
+    void build_connectivity();
+
+    LatticeSprings::Law law_;
+    BondDamping::Mode damping_mode_;
+    LatticeGrid grid_;
+    Body body_;
+    double eta_ = 0;
+};
+
+}  // namespace frictionlab

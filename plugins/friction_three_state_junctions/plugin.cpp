@@ -1,0 +1,12 @@
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+
+#include "three_state_junctions.hpp"
+
+namespace {
+
+void register_types(frictionlab::Registry& r) { r.add<frictionlab::ThreeStateJunctions>(); }
+
+}  // namespace
+
+FRICTIONLAB_PLUGIN("friction_three_state_junctions", "0.1.0", register_types)

@@ -1,0 +1,285 @@
+#include "three_state_junctions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+#include "frictionlab/random.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+using Params = ThreeStateJunctions::Params;
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+// Room for the ~100-120 junctions of a default block, so settling rarely and loading never allocates.
+constexpr Index initial_capacity = 256;
+// P_b / p within this of an integer counts as that integer: counts must not hinge on the last bit.
+constexpr double count_tolerance = 1e-9;
+constexpr std::uint64_t removal_slot = ~std::uint64_t{0};
+
+std::string angle_rule(const Params& p) {
+    const double m = p.mu_d * std::tan(p.initial_angle);
+    if (m < 1) return {};
+    return fmt::format("mu_d * tan(initial_angle) = {:.4g} must be below 1: the dislocated-junction force "
+                       "(Li et al. 2020, Eq. 11) divides by 1 - mu_d tan(phi0)", m);
+}
+
+std::string order_rule(const Params& p) {
+    if (p.mu_d <= p.mu_s) return {};
+    return fmt::format("mu_d = {:.4g} exceeds mu_s = {:.4g}: a sliding junction would carry more force than "
+                       "it takes to break a pinned one", p.mu_d, p.mu_s);
+}
+
+ThreeStateJunctions::Removal parse_removal(const std::string& s) {
+    if (s == "random") return ThreeStateJunctions::Removal::random;
+    if (s == "most_loaded_pinned") return ThreeStateJunctions::Removal::most_loaded_pinned;
+    if (s == "non_pinned_first") return ThreeStateJunctions::Removal::non_pinned_first;
+    throw InputError("three_state_junctions: unknown removal '" + s +
+                     "' (random, most_loaded_pinned, non_pinned_first)");
+}
+
+const Params& validated(const Params& p) {
+    for (const std::string& error : {angle_rule(p), order_rule(p)})
+        if (!error.empty()) throw InputError("three_state_junctions: " + error);
+    return p;
+}
+
+}  // namespace
+
+ParamSpec<Params> ThreeStateJunctions::spec() {
+    ParamSpec<Params> s(
+        "Three-state (pinned, sliding, dislocated) micro-contact friction of Li, Zhao, Xiong & Liu (2020), "
+        "doi:10.1007/s10409-020-00955-2: each interface block carries P_b/p junctions of normal load "
+        "p = pi rbar^2 H_d, which break at mu_s p, slide at mu_d p for a Gaussian time t_s, then ride a "
+        "decaying asperity angle for a Gaussian time t_d before re-pinning.");
+    s.add("hardness", &Params::hardness, "Hardness H_d of the asperities; sets the junction load p = pi rbar^2 H_d.")
+        .unit("Pa").greater_than(0);
+    s.add("contact_radius", &Params::contact_radius, "Mean micro-contact radius rbar (p = pi rbar^2 H_d, k_s = 8 G* rbar).")
+        .unit("m").greater_than(0);
+    s.add("youngs_modulus", &Params::youngs_modulus, "Young's modulus E of the asperities, for Mindlin's stiffness.")
+        .unit("Pa").greater_than(0);
+    s.add("poisson_ratio", &Params::poisson_ratio, "Poisson ratio nu of the asperities, for Mindlin's stiffness.")
+        .unit("1").greater_than(-1).at_most(0.5);
+    s.add("tangential_stiffness", &Params::tangential_stiffness,
+          "Tangential stiffness k_s of one junction; 0 = Mindlin, 8 G* rbar with G = E/(2(1+nu)), G* = G/(2(2-nu)).")
+        .unit("N/m").at_least(0);
+    s.add("mu_s", &Params::mu_s, "Static coefficient of one micro-contact: a pinned junction breaks when |f| > mu_s p.")
+        .unit("1").greater_than(0);
+    s.add("mu_d", &Params::mu_d, "Sliding coefficient of one micro-contact: a sliding junction carries mu_d p.")
+        .unit("1").at_least(0);
+    s.add("sliding_time_mean", &Params::sliding_time_mean, "Mean t_s of the sliding-state duration (Gaussian, t > 0).")
+        .unit("s").greater_than(0);
+    s.add("sliding_time_sd", &Params::sliding_time_sd, "Standard deviation of the sliding-state duration.")
+        .unit("s").at_least(0);
+    s.add("dislocated_time_mean", &Params::dislocated_time_mean,
+          "Mean t_d of the dislocated-state duration (Gaussian, t > 0).")
+        .unit("s").greater_than(0);
+    s.add("dislocated_time_sd", &Params::dislocated_time_sd, "Standard deviation of the dislocated-state duration.")
+        .unit("s").at_least(0);
+    s.add("initial_angle", &Params::initial_angle,
+          "Contact angle phi0 of a junction entering the dislocated state; tan(phi) decays linearly to 0 over t_d.")
+        .unit("rad").at_least(0).less_than(std::numbers::pi / 2);
+    s.add("removal", &Params::removal,
+          "Which junctions go when P_b falls: uniformly at random, the most loaded pinned ones first, or the "
+          "sliding and dislocated ones first (physics.md B.7).")
+        .one_of({"random", "most_loaded_pinned", "non_pinned_first"});
+    s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
+    s.rule("initial_angle", angle_rule);
+    s.rule("mu_d", order_rule);
+    return s;
+}
+
+double ThreeStateJunctions::junction_load(const Params& p) {
+    return std::numbers::pi * p.contact_radius * p.contact_radius * p.hardness;
+}
+
+double ThreeStateJunctions::junction_stiffness(const Params& p) {
+    if (p.tangential_stiffness > 0) return p.tangential_stiffness;
+    const double shear = p.youngs_modulus / (2 * (1 + p.poisson_ratio));
+    const double contact_shear = shear / (2 * (2 - p.poisson_ratio));
+    return 8 * contact_shear * p.contact_radius;
+}
+
+ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ctx)
+    : name_(ctx.name.empty() ? std::string(type) : ctx.name),
+      seed_(ctx.seed),
+      p_(junction_load(validated(params))),
+      k_s_(junction_stiffness(params)),
+      mu_d_p_(params.mu_d * p_),
+      threshold_(params.mu_s * p_),
+      tan_phi0_(std::tan(params.initial_angle)),
+      removal_(parse_removal(params.removal)),
+      sampler_(ctx.seed, {params.sliding_time_mean, params.sliding_time_sd},
+               {params.dislocated_time_mean, params.dislocated_time_sd}),
+      next_event_(infinity) {
+    if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
+    nodes_ = ctx.body->nodes(params.node_set);
+    const Index n = static_cast<Index>(nodes_.size());
+    Quantities& q = *ctx.quantities;
+    const std::string& set = params.node_set;
+    normal_force_ = &q.field("normal_force", set, n, "N", "Normal contact force P_b on each interface node.");
+    friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from its junctions, -sum_j f_j.");
+    pinned_count_ = &q.field("junctions_pinned", set, n, "1", "Number of pinned junctions of the block.");
+    sliding_count_ = &q.field("junctions_sliding", set, n, "1", "Number of sliding junctions of the block.");
+    dislocated_count_ = &q.field("junctions_dislocated", set, n, "1", "Number of dislocated junctions of the block.");
+    const BlockJunctions::Constants c{p_, k_s_, params.mu_d};
+    blocks_.reserve(nodes_.size());
+    for (Index node : nodes_) {
+        blocks_.emplace_back(c, initial_capacity, ctx.body->x0[node]);
+        x_start_.push_back(ctx.body->x0[node]);
+    }
+    removal_draws_.assign(nodes_.size(), 0);
+}
+
+std::string ThreeStateJunctions::describe() const {
+    return fmt::format("three-state junctions (p={:.3g} mN, k_s={:.3g} N/m)", p_ * 1e3, k_s_);
+}
+
+void ThreeStateJunctions::add_forces(const StageView& s, ForceView& f) {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const Index node = nodes_[i];
+        const BlockJunctions& b = blocks_[i];
+        const double force = -b.force(s.x[node], x_start_[i]);
+        f.fx[node] += force;
+        (*friction_force_)[static_cast<Index>(i)] = force;
+        (*pinned_count_)[static_cast<Index>(i)] = static_cast<double>(b.pinned());
+        (*sliding_count_)[static_cast<Index>(i)] = static_cast<double>(b.sliding());
+        (*dislocated_count_)[static_cast<Index>(i)] = static_cast<double>(b.dislocated());
+    }
+}
+
+void ThreeStateJunctions::begin_stage(const StageInfo& stage, const StageView& s) {
+    const bool had_events = events_;
+    events_ = stage.friction_events;
+    if (events_ && !had_events) check_settled(stage, s);
+}
+
+void ThreeStateJunctions::begin_step(const StageView& s) {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) x_start_[i] = s.x[nodes_[i]];
+}
+
+void ThreeStateJunctions::commit(const StageView& end, double /*dt*/) {
+    next_event_ = infinity;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        commit_block(static_cast<Index>(i), end.x[nodes_[i]], end.t);
+        next_event_ = std::min(next_event_, blocks_[i].next_deadline());
+    }
+}
+
+void ThreeStateJunctions::commit_block(Index i, double x, double t) {
+    const auto k = static_cast<std::size_t>(i);
+    BlockJunctions& b = blocks_[k];
+    b.advance(x - x_start_[k]);
+    x_start_[k] = x;
+    if (events_) break_pinned(b, i, x, t);
+    update_active(b, i, x, t);
+    follow_normal_force(b, i, x);
+    b.refresh_active();
+    b.refresh_pinned(x);
+}
+
+void ThreeStateJunctions::break_pinned(BlockJunctions& b, Index i, double x, double t) const {
+    if (!b.pinned_beyond(x, threshold_)) return;
+    // Downwards, so the pinned junction swapped into a vacated index has been judged already.
+    for (Index j = b.pinned() - 1; j >= 0; --j) {
+        const double f = b.junction_force(j, x, x);
+        if (std::abs(f) <= threshold_) continue;
+        Junction& r = b.record(j);
+        const double lifetime = sampler_.sliding(static_cast<std::uint64_t>(i), r.id, r.sliding_draws);
+        b.slide(j, f > 0 ? 1.0 : -1.0, t, lifetime);
+    }
+}
+
+void ThreeStateJunctions::update_active(BlockJunctions& b, Index i, double x, double t) const {
+    // Upwards, so the active junction swapped into a vacated index has been judged already. Each
+    // junction either changes state or has its angle updated, so one pass keeps B.17's order.
+    for (Index j = b.pinned(); j < b.size(); ++j) {
+        if (b.state(j) == JunctionState::sliding) {
+            if (events_ && t >= b.deadline(j)) end_sliding(b, i, j, x, t);
+        } else if (events_ && b.junction(j).sign * b.tangential(j) <= 0) {
+            b.pin(j, 0, x);  // C6: the contact separates and a new, unloaded one forms
+        } else if (events_ && t >= b.deadline(j)) {
+            end_dislocated(b, j, x);
+        } else {
+            decay_angle(b, j, t);
+        }
+    }
+}
+
+void ThreeStateJunctions::end_sliding(BlockJunctions& b, Index i, Index j, double x, double t) const {
+    Junction& r = b.record(j);
+    const double g = r.sign * b.tangential(j);
+    if (g <= 0) {
+        b.pin(j, 0, x);  // B.13: unloaded through zero while relaxing
+        return;
+    }
+    const double lifetime = sampler_.dislocated(static_cast<std::uint64_t>(i), r.id, r.dislocated_draws);
+    const double start = g >= mu_d_p_ ? b.dislocated_force(tan_phi0_).cap : g;  // C3, B.13
+    b.dislocate(j, r.sign, start, tan_phi0_, t, lifetime);
+}
+
+void ThreeStateJunctions::end_dislocated(BlockJunctions& b, Index j, double x) const {
+    // C5: phi has reached 0 in the regular case, so Eq. 11 gives s mu_d p; a relaxing one keeps its force.
+    b.pin(j, b.at_cap(j) ? b.junction(j).sign * mu_d_p_ : b.junction_force(j, x, x), x);
+}
+
+void ThreeStateJunctions::decay_angle(BlockJunctions& b, Index j, double t) const {
+    if (!b.at_cap(j)) return;  // relaxing: phi frozen (Eq. 15)
+    const Junction& r = b.junction(j);
+    // Eq. 13 only decreases, so a relaxation that froze phi resumes at or below the frozen value:
+    // B.11's min(frozen, Eq. 13) without an upward jump.
+    const double eq13 = std::max(0.0, (1 - (t - r.entry) / r.lifetime) * tan_phi0_);
+    if (eq13 < r.tan_phi) b.set_angle(j, eq13);
+}
+
+void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double x) {
+    const double ratio = std::max(0.0, (*normal_force_)[i] / p_);
+    const auto low = static_cast<Index>(std::floor(ratio + count_tolerance));
+    const auto high = static_cast<Index>(std::ceil(ratio - count_tolerance));
+    while (b.size() < low) b.add_pinned(x);
+    while (b.size() > high) b.remove(removal_choice(b, i, x));
+}
+
+Index ThreeStateJunctions::removal_choice(const BlockJunctions& b, Index i, double x) {
+    const Index n = b.size(), pinned = b.pinned();
+    switch (removal_) {
+        case Removal::random: break;
+        case Removal::most_loaded_pinned: {
+            if (pinned == 0) break;
+            Index best = 0;
+            for (Index j = 1; j < pinned; ++j)
+                if (std::abs(b.junction_force(j, x, x)) > std::abs(b.junction_force(best, x, x))) best = j;
+            return best;
+        }
+        case Removal::non_pinned_first:
+            return pinned < n ? random_index(i, pinned, n) : random_index(i, 0, n);
+    }
+    return random_index(i, 0, n);
+}
+
+Index ThreeStateJunctions::random_index(Index i, Index first, Index end) {
+    const random::Key key{seed_, static_cast<std::uint64_t>(i), removal_slot, random::Purpose::removal};
+    const double u = random::uniform(key, removal_draws_[static_cast<std::size_t>(i)]++);
+    const Index span = end - first;
+    return first + std::min(static_cast<Index>(u * static_cast<double>(span)), span - 1);
+}
+
+void ThreeStateJunctions::check_settled(const StageInfo& stage, const StageView& s) const {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const double x = s.x[nodes_[i]];
+        if (!blocks_[i].pinned_beyond(x, threshold_)) continue;
+        throw RunError(fmt::format(
+            "{}: at the start of stage '{}', block {} (node {}) has a pinned junction at |f| = {:.6g} mu_s p, "
+            "above the breaking threshold mu_s p = {:.6g} N; settling did not reach a state the junctions "
+            "can hold (physics.md B.18)",
+            name_, stage.name, i, nodes_[i], blocks_[i].max_pinned_force(x) / threshold_, threshold_));
+    }
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,135 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+#include "block_junctions.hpp"
+#include "lifetime_sampler.hpp"
+
+namespace frictionlab {
+
+/// Three-state micro-contact friction: X. Li, Z. Zhao, J. Xiong, C. Liu, "2D numerical model for
+/// studying frictional sliding", Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2, §2.3 and
+/// Fig. 4, with the resolutions of physics.md B.
+///
+/// Every interface block b carries N^b junctions (Eq. 8), each with the same normal load
+/// p = pi rbar^2 H_d (Eq. 7) and tangential stiffness k_s = 8 G* rbar (Mindlin; G = E/(2(1+nu)),
+/// G* = G/(2(2-nu))). A junction force f > 0 resists motion in +x; the block feels -sum_j f_j (Eqs. 6,
+/// 16). x is the block position, s = +-1 the direction a junction broke in, kept until it re-pins.
+///
+///     pinned      f = f0 + k_s (x - anchor)                                             (Eq. 10)
+///     sliding     f <- clamp(f + k_s dx, -mu_d p, mu_d p)           (Eqs. 9, 14 as one law, B.10)
+///     dislocated  f = s (g + f^n),  g <- min(cap(phi), g + k_s s dx)               (Eqs. 11, 15, B.11)
+///                 cap(phi) = mu_d p / (1 - mu_d tan phi),  f^n = p tan phi / (1 - mu_d tan phi)
+///                 tan phi(tau) = (1 - tau/t_d) tan phi0 while g = cap; frozen while g < cap  (Eq. 13)
+///     t_s, t_d    Gaussian truncated to t > 0 by rejection                           (Eq. 12, B.14)
+///
+/// State table (physics.md B; our reading of Fig. 4; judged at the end of each step):
+///
+///     from -> to                      when                              force on entry
+///     pinned -> sliding (C1)          |f| > mu_s p (strict)             s mu_d p, s = sign f; draw t_s
+///     sliding regular <-> relax (C2)  block reverses (the clamp)        continuous
+///     sliding -> dislocated (C3)      t >= entry + t_s and s f > 0      regular: s f^d(phi0)
+///                                                                         = s (mu_d + tan phi0) p / (1 - mu_d tan phi0);
+///                                                                       relaxing: s (s f + f^n(phi0)); draw t_d
+///     sliding -> pinned (B.13)        t >= entry + t_s and s f <= 0     f0 = 0
+///     dislocated relax (C4)           g < cap: phi frozen, f^n kept     continuous
+///     dislocated -> pinned (C5)       t >= entry + t_d                  f0 = s mu_d p (regular: phi = 0)
+///                                                                       or the current force (relaxing)
+///     dislocated -> pinned (C6)       g <= 0 (separation)               f0 = 0
+///     count change (B.7)              N^b outside [floor, ceil](P_b/p)  new junctions pinned, f0 = 0
+///
+/// Step structure (B.17): states, anchors, clocks and counts are frozen within a step; every stage
+/// force is a function of the stage position only, with dx measured from the step start. commit()
+/// applies, per block: the incremental force update, the transitions (breaking, then the clocks and
+/// separation), the angle decay, and the count change to the end-of-step normal force P_b (read from
+/// the quantity "normal_force", which the base contact writes in its own, earlier, commit). While a
+/// stage has friction_events false (settling, B.18) no junction changes state; counts still follow
+/// P_b, so junctions are created, pinned and unloaded, as the load grows. When events are switched
+/// on, a pinned junction above mu_s p is a RunError.
+///
+/// Readings where physics.md is silent (none contradicts it, so none needs an option):
+/// - entering a state at a commit starts its clock at that commit's time, not at the deadline that
+///   triggered it; an adaptive stepper lands on next_event_time(), where the two coincide;
+/// - within a step a dislocated junction's g may pass below 0 (Eq. 15 continued linearly), so the
+///   stage force stays continuous; separation is judged at the commit;
+/// - a separated (C6) or unloaded re-pinned junction is anchored at the end-of-step position;
+/// - the angle keeps decaying in stages without friction events (it is not a state change);
+/// - removal: "random" picks uniformly by storage index with a block-level key (slot 2^64 - 1,
+///   counter = the block's removal count); "most_loaded_pinned" takes the pinned junction of largest
+///   |f|, or a random one when none is pinned; "non_pinned_first" takes a random sliding or dislocated
+///   junction, or a random pinned one when there is none;
+/// - lifetimes are drawn truncated at 0, not at dt (LifetimeSampler explains why).
+class ThreeStateJunctions final : public FrictionLaw {
+public:
+    struct Params {
+        double hardness = 300e6;
+        double contact_radius = 10e-6;
+        double youngs_modulus = 3e9;
+        double poisson_ratio = 0.33;
+        double tangential_stiffness = 0;
+        double mu_s = 0.7;
+        double mu_d = 0.35;
+        double sliding_time_mean = 2e-4;
+        double sliding_time_sd = 6e-5;
+        double dislocated_time_mean = 1e-3;
+        double dislocated_time_sd = 3e-4;
+        double initial_angle = 0.0349066;
+        std::string removal = "random";
+        std::string node_set = "interface";
+    };
+    enum class Removal { random, most_loaded_pinned, non_pinned_first };
+
+    static constexpr std::string_view type = "three_state_junctions";
+    static ParamSpec<Params> spec();
+    /// p = pi rbar^2 H_d (Eq. 7), N.
+    static double junction_load(const Params&);
+    /// k_s: the given tangential_stiffness, or Mindlin's 8 G* rbar when it is 0, N/m.
+    static double junction_stiffness(const Params&);
+
+    ThreeStateJunctions(const Params&, const Context&);
+
+    std::string describe() const override;
+    void add_forces(const StageView& s, ForceView& f) override;
+    void begin_stage(const StageInfo&, const StageView&) override;
+    void begin_step(const StageView&) override;
+    void commit(const StageView& end, double dt) override;
+    double next_event_time() const override { return next_event_; }
+
+    Index blocks() const { return static_cast<Index>(blocks_.size()); }
+    const BlockJunctions& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }
+    double junction_load() const { return p_; }
+    double junction_stiffness() const { return k_s_; }
+
+private:
+    void commit_block(Index i, double x, double t);
+    void break_pinned(BlockJunctions& b, Index i, double x, double t) const;
+    void update_active(BlockJunctions& b, Index i, double x, double t) const;
+    void end_sliding(BlockJunctions& b, Index i, Index j, double x, double t) const;
+    void end_dislocated(BlockJunctions& b, Index j, double x) const;
+    void decay_angle(BlockJunctions& b, Index j, double t) const;
+    void follow_normal_force(BlockJunctions& b, Index i, double x);
+    Index removal_choice(const BlockJunctions& b, Index i, double x);
+    Index random_index(Index i, Index first, Index end);
+    void check_settled(const StageInfo&, const StageView&) const;
+
+    std::string name_;
+    std::uint64_t seed_;
+    double p_, k_s_, mu_d_p_, threshold_, tan_phi0_;
+    Removal removal_;
+    LifetimeSampler sampler_;
+    NodeSet nodes_;
+    std::vector<BlockJunctions> blocks_;
+    std::vector<double> x_start_;
+    std::vector<std::uint64_t> removal_draws_;
+    const Eigen::ArrayXd* normal_force_;
+    Eigen::ArrayXd *friction_force_, *pinned_count_, *sliding_count_, *dislocated_count_;
+    bool events_ = true;
+    double next_event_;
+};
+
+}  // namespace frictionlab

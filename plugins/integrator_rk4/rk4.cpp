@@ -1,0 +1,37 @@
+#include "rk4.hpp"
+
+#include <algorithm>
+
+#include "frictionlab/system.hpp"
+
+namespace frictionlab {
+
+ParamSpec<Rk4::Params> Rk4::spec() {
+    ParamSpec<Params> s("Classical 4th-order Runge-Kutta, fixed step; discrete state frozen within a step.");
+    s.add("dt", &Params::dt, "Time step.").unit("s").greater_than(0);
+    return s;
+}
+
+Rk4::Rk4(const Params& p, const Context&) : dt_(p.dt) {}
+
+double Rk4::step(System& system, double max_dt) {
+    const double h = std::min(dt_, max_dt);
+    const double t = system.time();
+    const Eigen::VectorXd& y = system.y();
+    if (k1_.size() != y.size())
+        for (auto* v : {&k1_, &k2_, &k3_, &k4_, &stage_}) v->resize(y.size());
+
+    system.begin_step();
+    system.derivative(t, y, k1_);
+    stage_ = y + (0.5 * h) * k1_;
+    system.derivative(t + 0.5 * h, stage_, k2_);
+    stage_ = y + (0.5 * h) * k2_;
+    system.derivative(t + 0.5 * h, stage_, k3_);
+    stage_ = y + h * k3_;
+    system.derivative(t + h, stage_, k4_);
+    stage_ = y + (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+    system.accept(t + h, stage_);
+    return h;
+}
+
+}  // namespace frictionlab

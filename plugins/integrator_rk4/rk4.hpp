@@ -1,0 +1,31 @@
+#pragma once
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+namespace frictionlab {
+
+/// Classical fourth-order Runge–Kutta with a fixed step (Li et al. 2020 §3.1, dt = 2e-7 s).
+///
+///     k1 = f(t, y),  k2 = f(t + h/2, y + h/2 k1),  k3 = f(t + h/2, y + h/2 k2),  k4 = f(t + h, y + h k3)
+///     y(t + h) = y + h/6 (k1 + 2 k2 + 2 k3 + k4)
+///
+/// Discrete state is frozen over the four stages and committed once after the step (physics.md B.17),
+/// so every stage sees a force law that is a smooth function of the stage state.
+class Rk4 final : public Integrator {
+public:
+    struct Params {
+        double dt = 2e-7;
+    };
+    static constexpr std::string_view type = "rk4";
+    static ParamSpec<Params> spec();
+
+    Rk4(const Params& p, const Context&);
+    double step(System& system, double max_dt) override;
+    double nominal_dt() const override { return dt_; }
+
+private:
+    double dt_;
+    Eigen::VectorXd k1_, k2_, k3_, k4_, stage_;  // sized at the first step, reused after
+};
+
+}  // namespace frictionlab

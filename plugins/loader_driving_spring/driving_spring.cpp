@@ -1,0 +1,105 @@
+#include "driving_spring.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
+    ParamSpec<Params> s(
+        "Loading spring K_S whose far end moves at V, pulling the trailing edge at height h (Li et al. 2020, "
+        "Eq. 4). doi:10.1007/s10409-020-00955-2");
+    s.add("stiffness", &Params::stiffness, "Stiffness K_S of the loading spring.").unit("N/m").greater_than(0);
+    s.add("velocity", &Params::velocity, "Speed V of the spring's far end, from the start of loading.").unit("m/s");
+    s.add("height", &Params::height, "Height h of the driving point above the lowest node of the node set.")
+        .unit("m")
+        .at_least(0);
+    s.add("attachment", &Params::attachment,
+          "node: h must be the height of a node; interpolated: the driving point is interpolated linearly "
+          "between the two nearest nodes and the force shared with the same weights.")
+        .one_of({"node", "interpolated"});
+    s.add("node_set", &Params::node_set, "Node set the driving point lies on (a column of nodes).");
+    return s;
+}
+
+namespace {
+struct NodeHeights {
+    std::vector<Index> nodes;     // sorted by height
+    std::vector<double> heights;  // above the lowest node, m
+};
+
+NodeHeights sorted_heights(const Body& body, const NodeSet& set) {
+    NodeHeights h{set, {}};
+    std::sort(h.nodes.begin(), h.nodes.end(), [&](Index a, Index b) { return body.z0(a) < body.z0(b); });
+    for (Index n : h.nodes) h.heights.push_back(body.z0(n) - body.z0(h.nodes.front()));
+    return h;
+}
+
+std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, const Body& body) {
+    if (p.attachment != "node" && p.attachment != "interpolated")
+        throw InputError(fmt::format("driving_spring: attachment = '{}' is not node or interpolated", p.attachment));
+    const NodeSet& set = body.nodes(p.node_set);
+    if (set.empty()) throw InputError("driving_spring: node set '" + p.node_set + "' is empty");
+    const NodeHeights n = sorted_heights(body, set);
+    const double tolerance = 1e-9 * (body.spacing > 0 ? body.spacing : std::max(n.heights.back(), 1.0));
+    if (p.height < -tolerance || p.height > n.heights.back() + tolerance)
+        throw InputError(fmt::format("driving_spring: height = {:g} m is outside node set '{}' (0 to {:g} m)",
+                                     p.height, p.node_set, n.heights.back()));
+    const auto above = std::lower_bound(n.heights.begin(), n.heights.end(), p.height - tolerance);
+    const std::size_t k = std::min<std::size_t>(above - n.heights.begin(), n.heights.size() - 1);
+    if (std::abs(n.heights[k] - p.height) <= tolerance) return {{n.nodes[k], 1.0}};
+    if (p.attachment == "node")
+        throw InputError(fmt::format(
+            "driving_spring: height = {:g} m is not the height of a node of '{}'; the nearest node heights are "
+            "{:g} m and {:g} m (or use attachment: interpolated)",
+            p.height, p.node_set, n.heights[k - 1], n.heights[k]));
+    const double w = (p.height - n.heights[k - 1]) / (n.heights[k] - n.heights[k - 1]);
+    return {{n.nodes[k - 1], 1.0 - w}, {n.nodes[k], w}};
+}
+}  // namespace
+
+DrivingSpring::DrivingSpring(const Params& p, const Context& ctx)
+    : params_(p),
+      attachment_(attach(p, *ctx.body)),
+      force_(ctx.quantities->scalar("driving_force", "N", "Force F_S of the loading spring on the slider (+x).")),
+      displacement_(ctx.quantities->scalar("driving_displacement", "m",
+                                           "Displacement x_h - x_h0 of the driving point since loading began.")),
+      driver_(ctx.quantities->scalar("driver_position", "m",
+                                     "Displacement V (t - t0) of the spring's far end since loading began.")) {
+    x_h0_ = driving_point_x(ctx.body->x0);
+}
+
+template <class Positions>
+double DrivingSpring::driving_point_x(const Positions& x) const {
+    double xh = 0;
+    for (const Attachment& a : attachment_) xh += a.weight * x(a.node);
+    return xh;
+}
+
+std::string DrivingSpring::describe() const {
+    return fmt::format("driving spring K_S={:g} N/m, V={:g} m/s at h={:g} m ({})", params_.stiffness,
+                       params_.velocity, params_.height,
+                       attachment_.size() == 1 ? fmt::format("node {}", attachment_[0].node)
+                                               : fmt::format("between nodes {} and {}", attachment_[0].node,
+                                                             attachment_[1].node));
+}
+
+void DrivingSpring::begin_stage(const StageInfo& stage, const StageView& s) {
+    if (started_) return;
+    started_ = true;
+    t0_ = stage.t_start;
+    x_h0_ = driving_point_x(s.x);
+}
+
+void DrivingSpring::add_forces(const StageView& s, ForceView& f) {
+    driver_ = params_.velocity * (s.t - t0_);
+    displacement_ = driving_point_x(s.x) - x_h0_;
+    force_ = params_.stiffness * (driver_ - displacement_);
+    for (const Attachment& a : attachment_) f.fx(a.node) += a.weight * force_;
+}
+
+}  // namespace frictionlab

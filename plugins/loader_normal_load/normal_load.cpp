@@ -1,0 +1,85 @@
+#include "normal_load.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+ParamSpec<NormalLoad::Params> NormalLoad::spec() {
+    ParamSpec<Params> s(
+        "Normal load on the top surface, linear in x with non-uniformity theta (Li et al. 2020, Eq. 3, "
+        "normalised to sum to F_N). doi:10.1007/s10409-020-00955-2");
+    s.add("total_force", &Params::total_force, "Total normal load F_N = F_ZA + F_ZB, pushing the slider down.")
+        .unit("N")
+        .at_least(0);
+    s.add("theta", &Params::theta,
+          "Non-uniformity of the load: the trailing edge gets (1 - theta) F_N/N_x, the leading edge (1 + theta) "
+          "F_N/N_x; 0 is uniform.")
+        .unit("1")
+        .at_least(-1)
+        .at_most(1);
+    s.add("formula", &Params::formula,
+          "normalised: sums to F_N (physics.md B.1); paper_literal: Eq. 3 as printed, which sums to "
+          "F_N (1 + theta/N_x).")
+        .one_of({"normalised", "paper_literal"});
+    s.add("ramp_time", &Params::ramp_time,
+          "Time over which the load grows linearly from 0, from the start of the first stage the loader is "
+          "active in; 0 applies it at once.")
+        .unit("s")
+        .at_least(0);
+    s.add("node_set", &Params::node_set, "Node set that carries the load, ordered by x.");
+    return s;
+}
+
+namespace {
+Eigen::ArrayXd load_weights(const NormalLoad::Params& p, Index n) {
+    Eigen::ArrayXd w(n);
+    for (Index k = 0; k < n; ++k) {
+        const double i = k + 1.0;
+        const double shape = p.formula == "paper_literal" ? (2 * i - n) / n
+                             : n > 1                      ? (2 * i - n - 1) / (n - 1.0)
+                                                          : 0.0;
+        w(k) = p.total_force / n * (1 + p.theta * shape);
+    }
+    return w;
+}
+}  // namespace
+
+NormalLoad::NormalLoad(const Params& p, const Context& ctx)
+    : params_(p),
+      nodes_(ctx.body->nodes(p.node_set)),
+      applied_(ctx.quantities->scalar("normal_load", "N", "Total normal load applied on the top surface now.")) {
+    if (p.formula != "normalised" && p.formula != "paper_literal")
+        throw InputError(fmt::format("normal_load: formula = '{}' is not normalised or paper_literal", p.formula));
+    if (nodes_.empty()) throw InputError("normal_load: node set '" + p.node_set + "' is empty");
+    weights_ = load_weights(p, static_cast<Index>(nodes_.size()));
+    full_total_ = weights_.sum();
+}
+
+std::string NormalLoad::describe() const {
+    return fmt::format("normal load {:g} N on '{}' (theta={:g}, {}{})", params_.total_force, params_.node_set,
+                       params_.theta, params_.formula,
+                       params_.ramp_time > 0 ? fmt::format(", ramp {:g} s", params_.ramp_time) : "");
+}
+
+void NormalLoad::begin_stage(const StageInfo& stage, const StageView&) {
+    if (started_) return;
+    started_ = true;
+    ramp_start_ = stage.t_start;
+}
+
+double NormalLoad::ramp(double t) const {
+    if (params_.ramp_time <= 0) return 1.0;
+    return std::clamp((t - ramp_start_) / params_.ramp_time, 0.0, 1.0);
+}
+
+void NormalLoad::add_forces(const StageView& s, ForceView& f) {
+    const double r = ramp(s.t);
+    for (std::size_t k = 0; k < nodes_.size(); ++k) f.fz(nodes_[k]) -= r * weights_(k);
+    applied_ = r * full_total_;
+}
+
+}  // namespace frictionlab

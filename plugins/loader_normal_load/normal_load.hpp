@@ -1,0 +1,53 @@
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+namespace frictionlab {
+
+/// Vertical load on the top surface, pushing down (-z), linear along x (Li2020 Eq. 3):
+///     normalised (physics.md B.1):  W_i = (F_N/N_x) [1 + theta (2i - N_x - 1)/(N_x - 1)]
+///     paper_literal (Eq. 3 as printed): W_i = (F_N/N_x) [1 + theta (2i - N_x)/N_x]
+/// for i = 1..N_x over the node set ordered by x. The normalised form sums to F_N exactly and puts
+/// (1 - theta) F_N/N_x on the trailing edge and (1 + theta) F_N/N_x on the leading edge; the
+/// literal one sums to F_N (1 + theta/N_x). theta > 0 loads the trailing (driven) edge less.
+/// With ramp_time > 0 the load grows linearly from 0 over that time, starting at the first stage
+/// in which the loader is active (the gradual loading of physics.md B.18).
+///
+/// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
+class NormalLoad final : public Loader {
+public:
+    struct Params {
+        double total_force = 400;  // F_N, N
+        double theta = 0;
+        std::string formula = "normalised";
+        double ramp_time = 0;  // s
+        std::string node_set = "top";
+    };
+    static constexpr std::string_view type = "normal_load";
+    static ParamSpec<Params> spec();
+
+    NormalLoad(const Params& p, const Context& ctx);
+
+    std::string describe() const override;
+    void add_forces(const StageView& s, ForceView& f) override;
+    void begin_stage(const StageInfo& stage, const StageView& s) override;
+
+    /// The full (un-ramped) load W_i on each node of the set, N, in set order.
+    const Eigen::ArrayXd& weights() const { return weights_; }
+    /// Fraction of the full load applied at time t: min(1, (t - t_start)/ramp_time).
+    double ramp(double t) const;
+
+private:
+    Params params_;
+    NodeSet nodes_;
+    Eigen::ArrayXd weights_;
+    double full_total_ = 0;  // sum of W_i: F_N, or F_N (1 + theta/N_x) for the literal formula
+    double ramp_start_ = 0;
+    bool started_ = false;
+    double& applied_;  // published scalar "normal_load"
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,57 @@
+#include "rigid_base_contact.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+ParamSpec<RigidBaseContact::Params> RigidBaseContact::spec() {
+    ParamSpec<Params> s(
+        "Compression-only springs K_b = ratio * K between the interface nodes and a rigid base (Li et al. "
+        "2020, Eq. 5). doi:10.1007/s10409-020-00955-2");
+    s.add("stiffness_ratio", &Params::stiffness_ratio,
+          "Contact stiffness K_b per node relative to the bulk's bond stiffness K (Li2020: 1/2).")
+        .unit("1")
+        .greater_than(0);
+    s.add("node_set", &Params::node_set, "Node set in contact with the base.");
+    return s;
+}
+
+namespace {
+double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body) {
+    if (!(body.bond_stiffness > 0))
+        throw InputError("rigid_base_contact: the bulk model gives no bond stiffness K, so K_b = stiffness_ratio * K "
+                         "is undefined");
+    return p.stiffness_ratio * body.bond_stiffness;
+}
+}  // namespace
+
+RigidBaseContact::RigidBaseContact(const Params& p, const Context& ctx)
+    : params_(p),
+      nodes_(ctx.body->nodes(p.node_set)),
+      z0_(ctx.body->z0(nodes_)),
+      stiffness_(contact_stiffness_of(p, *ctx.body)),
+      normal_force_(ctx.quantities->field("normal_force", p.node_set, static_cast<Index>(nodes_.size()), "N",
+                                          "Normal force P_b of the rigid base on each interface node (+z).")) {}
+
+std::string RigidBaseContact::describe() const {
+    return fmt::format("rigid base contact K_b={:.4g} N/m on '{}' ({} nodes)", stiffness_, params_.node_set,
+                       nodes_.size());
+}
+
+void RigidBaseContact::update_normal_force(const StageView& s) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k)
+        normal_force_(k) = stiffness_ * std::max(0.0, z0_(k) - s.z(nodes_[k]));
+}
+
+void RigidBaseContact::add_forces(const StageView& s, ForceView& f) {
+    update_normal_force(s);
+    for (std::size_t k = 0; k < nodes_.size(); ++k) f.fz(nodes_[k]) += normal_force_(k);
+}
+
+void RigidBaseContact::commit(const StageView& end, double) { update_normal_force(end); }
+
+}  // namespace frictionlab

@@ -1,0 +1,47 @@
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+namespace frictionlab {
+
+/// Normal contact of the interface nodes with a rigid base (Li2020 Eq. 5, physics.md B.5):
+///     P_b = -K_b (z_i - z0_i)  if z_i <= z0_i,   else 0,
+/// acting in +z, with K_b = stiffness_ratio * K (K the bulk's bond stiffness; Li2020 and
+/// Tromborg 2014 use K/2, the foundation stiffness of the same material). No damping, no
+/// adhesion. P_b is published as the field "normal_force" over the node set; it is refreshed from
+/// the end-of-step state in commit(), where the friction law (evaluated after the loaders) reads
+/// it to judge its own transitions.
+///
+/// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
+class RigidBaseContact final : public Loader {
+public:
+    struct Params {
+        double stiffness_ratio = 0.5;  // K_b / K
+        std::string node_set = "interface";
+    };
+    static constexpr std::string_view type = "rigid_base_contact";
+    static ParamSpec<Params> spec();
+
+    RigidBaseContact(const Params& p, const Context& ctx);
+
+    std::string describe() const override;
+    void add_forces(const StageView& s, ForceView& f) override;
+    void commit(const StageView& end, double dt) override;
+
+    double contact_stiffness() const { return stiffness_; }
+
+private:
+    /// Writes P_b of every node of the set at state s into the published field.
+    void update_normal_force(const StageView& s);
+
+    Params params_;
+    NodeSet nodes_;
+    Eigen::ArrayXd z0_;  // reference heights of the set's nodes, m
+    double stiffness_;   // K_b, N/m
+    Eigen::ArrayXd& normal_force_;
+};
+
+}  // namespace frictionlab
