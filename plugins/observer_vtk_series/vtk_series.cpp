@@ -1,0 +1,298 @@
+#include "vtk_series.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <utility>
+
+#include <fmt/format.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkStringArray.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include "frictionlab/errors.hpp"
+#include "frictionlab/system.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The point arrays this observer computes; a published field of the same name would be ambiguous.
+constexpr std::string_view own_arrays[] = {"displacement", "velocity", "net_force", "role"};
+
+std::string prefix_problem(const VtkSeries::Params& p) {
+    if (p.prefix.empty()) return "prefix must not be empty";
+    // It becomes a folder, file names and an XML attribute of the .pvd.
+    if (p.prefix.find_first_of("/\\<>&\"'") != std::string::npos)
+        return "prefix must be a plain file name (no / \\ < > & or quotes)";
+    return "";
+}
+
+template <class Array>
+Array* add_array(vtkFieldData* data, const std::string& name, int components, vtkIdType tuples) {
+    auto a = vtkSmartPointer<Array>::New();
+    a->SetName(name.c_str());
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(tuples);
+    data->AddArray(a);
+    return a;  // data holds a reference
+}
+
+void add_strings(vtkFieldData* data, const std::string& name, const std::vector<std::string>& values) {
+    auto* a = add_array<vtkStringArray>(data, name, 1, static_cast<vtkIdType>(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), values[i]);
+}
+
+// SetValue() leaves the array's modification time alone, and the writer would then put the cached
+// range of an earlier snapshot in the file's header.
+template <class Array, class T>
+void set_single(Array* array, const T& value) {
+    array->SetValue(0, value);
+    array->Modified();
+}
+
+/// (a, b, 0) per node: the model's x-z plane as VTK's x-y plane.
+template <class A, class B>
+void set_plane_vectors(vtkDoubleArray* out, const A& a, const B& b) {
+    double* p = out->GetPointer(0);
+    for (Index i = 0; i < a.size(); ++i) {
+        p[3 * i] = a[i];
+        p[3 * i + 1] = b[i];
+        p[3 * i + 2] = 0;
+    }
+    out->Modified();
+}
+
+/// Readers never see a half-written file: `write` fills a temporary one, which then replaces `file`.
+void replace_atomically(const std::filesystem::path& file, const std::function<bool(const std::filesystem::path&)>& write) {
+    const auto tmp = std::filesystem::path(file).concat(".tmp");
+    if (!write(tmp)) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw RunError("vtk_series: cannot write " + tmp.string());
+    }
+    std::filesystem::rename(tmp, file);
+}
+
+template <std::size_t N>
+void insert_cells(vtkUnstructuredGrid& grid, int type, const std::vector<std::array<Index, N>>& cells) {
+    grid.Allocate(static_cast<vtkIdType>(cells.size()));
+    vtkIdType ids[N];
+    for (const auto& c : cells) {
+        std::copy(c.begin(), c.end(), ids);
+        grid.InsertNextCell(type, static_cast<vtkIdType>(N), ids);
+    }
+}
+
+}  // namespace
+
+ParamSpec<VtkSeries::Params> VtkSeries::spec() {
+    ParamSpec<Params> s("Lattice snapshots for ParaView: a .vtu file per observation (deformed nodes with displacement, "
+                        "velocity, net force, node-set roles and every published field) and a .pvd collection "
+                        "with their simulated times, valid after every snapshot.");
+    s.add("prefix", &Params::prefix,
+          "Name of the collection <prefix>.pvd and of the folder <prefix>/ of its .vtu files, in the run's output "
+          "directory.");
+    s.add("cells", &Params::cells,
+          "Draw the lattice as its quad cells or as its springs (line cells); a body without quads uses its springs.")
+        .one_of({"quads", "bonds"});
+    s.add("compress", &Params::compress, "ZLib-compress the binary data of the .vtu files.");
+    s.rule("prefix", prefix_problem);
+    return s;
+}
+
+VtkSeries::VtkSeries(const Params& p, const Context&) : params_(p) {}
+
+VtkSeries::~VtkSeries() = default;
+
+std::filesystem::path VtkSeries::collection_file(const std::filesystem::path& output_directory) const {
+    return output_directory / (params_.prefix + ".pvd");
+}
+
+void VtkSeries::begin(const RunView& view) {
+    const Body& body = view.body;
+    grid_ = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(body.size());
+    grid_->SetPoints(points);
+    points_ = vtkDoubleArray::SafeDownCast(points->GetData());
+    build_cells(body);
+
+    displacement_ = add_point_array("displacement", 3, "m");
+    velocity_ = add_point_array("velocity", 3, "m/s");
+    net_force_ = add_point_array("net_force", 3, "N");
+    add_role(body);
+    add_fields(view);
+    add_pinned_fraction();
+    add_field_data(view);
+
+    writer_ = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    writer_->SetInputData(grid_);
+    writer_->SetDataModeToAppended();
+    writer_->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
+    if (params_.compress) writer_->SetCompressorTypeToZLib();
+    else writer_->SetCompressorTypeToNone();
+
+    std::filesystem::create_directories(view.output_directory / params_.prefix);
+    view.log.info("vtk_series: {} ({} points, {} cells, {} point arrays)", collection_file(view.output_directory).string(),
+                  grid_->GetNumberOfPoints(), grid_->GetNumberOfCells(), grid_->GetPointData()->GetNumberOfArrays());
+}
+
+void VtkSeries::build_cells(const Body& body) {
+    if (params_.cells == "quads" && !body.cells.empty()) return insert_cells(*grid_, VTK_QUAD, body.cells);
+    if (!body.bonds.empty()) return insert_cells(*grid_, VTK_LINE, body.bonds);
+    // A lone block has neither: vertices keep it visible.
+    std::vector<std::array<Index, 1>> vertices(static_cast<std::size_t>(body.size()));
+    for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = {static_cast<Index>(i)};
+    insert_cells(*grid_, VTK_VERTEX, vertices);
+}
+
+vtkDoubleArray* VtkSeries::add_point_array(const std::string& name, int components, const std::string& unit) {
+    units_.push_back(name + ": " + (unit.empty() ? "-" : unit));
+    return add_array<vtkDoubleArray>(grid_->GetPointData(), name, components, grid_->GetNumberOfPoints());
+}
+
+void VtkSeries::add_role(const Body& body) {
+    units_.push_back("role: -");
+    auto* role = add_array<vtkIntArray>(grid_->GetPointData(), "role", 1, grid_->GetNumberOfPoints());
+    role->FillValue(0);
+    const std::pair<const char*, int> bits[] = {{"top", Role::top},
+                                                {"interface", Role::interface},
+                                                {"trailing_edge", Role::trailing_edge},
+                                                {"leading_edge", Role::leading_edge}};
+    for (const auto& [set, bit] : bits) {
+        const auto it = body.node_sets.find(set);
+        if (it == body.node_sets.end()) continue;
+        for (Index node : it->second) role->SetValue(node, role->GetValue(node) | bit);
+    }
+}
+
+void VtkSeries::add_fields(const RunView& view) {
+    for (const auto& [name, field] : view.quantities.fields()) {
+        if (std::find(std::begin(own_arrays), std::end(own_arrays), name) != std::end(own_arrays))
+            throw RunError(fmt::format("vtk_series: a published field is named '{}', like an array this observer "
+                                       "computes; rename the field",
+                                       name));
+        const NodeSet& nodes = view.body.nodes(field.node_set);
+        if (static_cast<Index>(nodes.size()) != field.values.size())
+            throw RunError(fmt::format("vtk_series: field '{}' has {} values but its node set '{}' has {} nodes", name,
+                                       field.values.size(), field.node_set, nodes.size()));
+        vtkDoubleArray* array = add_point_array(name, 1, field.unit);
+        array->FillValue(nan);  // off the node set, once: updates only touch the set's nodes
+        fields_.push_back({&field.values, &nodes, array});
+    }
+}
+
+void VtkSeries::add_pinned_fraction() {
+    vtkPointData* data = grid_->GetPointData();
+    const auto find = [&](const char* name) { return vtkDoubleArray::SafeDownCast(data->GetArray(name)); };
+    junctions_ = {find("junctions_pinned"), find("junctions_sliding"), find("junctions_dislocated"), nullptr};
+    // A friction law that publishes its own pinned_fraction is shown as published.
+    if (junctions_.pinned && junctions_.sliding && junctions_.dislocated && !data->HasArray("pinned_fraction"))
+        junctions_.fraction = add_point_array("pinned_fraction", 1, "1");
+}
+
+void VtkSeries::add_field_data(const RunView& view) {
+    vtkFieldData* data = grid_->GetFieldData();
+    when_.time = add_array<vtkDoubleArray>(data, "TIME", 1, 1);
+    when_.time_value = add_array<vtkDoubleArray>(data, "TimeValue", 1, 1);
+    when_.step = add_array<vtkTypeInt64Array>(data, "STEP", 1, 1);
+    when_.stage = add_array<vtkStringArray>(data, "stage", 1, 1);
+    when_.stage_index = add_array<vtkIntArray>(data, "stage_index", 1, 1);
+    for (const auto& [name, scalar] : view.quantities.scalars())
+        scalars_.emplace_back(&scalar.value, add_array<vtkDoubleArray>(data, name, 1, 1));
+
+    const RunInfo& info = view.info;
+    std::vector<std::string> plugins;
+    for (const auto& p : info.plugins) plugins.push_back(p.name + " " + p.version);
+    add_strings(data, "framework_version", {info.framework_version});
+    add_strings(data, "scene_hash", {info.scene_hash});
+    add_strings(data, "seed", {std::to_string(info.seed)});  // a string: a double cannot hold every 64-bit seed
+    add_strings(data, "scene_file", {info.scene_file.string()});
+    add_strings(data, "plugins", plugins);
+    add_strings(data, "units", units_);
+}
+
+void VtkSeries::observe(const RunView& view) {
+    if (!grid_) throw RunError("vtk_series: observe() before begin()");
+    if (view.step == last_step_) return;
+    update(view);
+    write_snapshot(view);
+    last_step_ = view.step;
+}
+
+void VtkSeries::update(const RunView& view) {
+    const StageView& s = view.state;
+    const Body& body = view.body;
+    const Eigen::VectorXd& f = view.system.net_force();
+    set_plane_vectors(points_, s.x, s.z);
+    grid_->GetPoints()->Modified();
+    set_plane_vectors(displacement_, s.x - body.x0, s.z - body.z0);
+    set_plane_vectors(velocity_, s.vx, s.vz);
+    set_plane_vectors(net_force_, f.head(body.size()), f.tail(body.size()));
+    for (const NodeField& field : fields_) {
+        for (std::size_t k = 0; k < field.nodes->size(); ++k)
+            field.array->SetValue((*field.nodes)[k], (*field.values)[static_cast<Index>(k)]);
+        field.array->Modified();
+    }
+    update_pinned_fraction();
+    for (const auto& [value, array] : scalars_) set_single(array, *value);
+    set_single(when_.time, s.t);
+    set_single(when_.time_value, s.t);
+    set_single(when_.step, view.step);
+    set_single(when_.stage, view.stage.name);
+    set_single(when_.stage_index, view.stage.index);
+}
+
+void VtkSeries::update_pinned_fraction() {
+    if (!junctions_.fraction) return;
+    for (vtkIdType i = 0; i < junctions_.fraction->GetNumberOfTuples(); ++i) {
+        const double pinned = junctions_.pinned->GetValue(i);
+        const double total = pinned + junctions_.sliding->GetValue(i) + junctions_.dislocated->GetValue(i);
+        // NaN off the interface propagates; a block without junctions has no fraction either.
+        junctions_.fraction->SetValue(i, total > 0 ? pinned / total : nan);
+    }
+    junctions_.fraction->Modified();
+}
+
+void VtkSeries::write_snapshot(const RunView& view) {
+    const std::string name = fmt::format("{0}/{0}_{1:06d}.vtu", params_.prefix, snapshots_);
+    replace_atomically(view.output_directory / name, [&](const std::filesystem::path& tmp) {
+        writer_->SetFileName(tmp.c_str());
+        return writer_->Write() == 1;
+    });
+    // Shortest text that reads back as the same double.
+    datasets_ += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", view.state.t, name);
+    ++snapshots_;
+    write_collection(view.output_directory);
+}
+
+void VtkSeries::write_collection(const std::filesystem::path& output_directory) const {
+    replace_atomically(collection_file(output_directory), [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::trunc);
+        out << "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+               "  <Collection>\n"
+            << datasets_ << "  </Collection>\n</VTKFile>\n";
+        out.close();
+        return !out.fail();
+    });
+}
+
+void VtkSeries::end(const RunView& view) {
+    if (!grid_) return;  // the run failed before it began observing
+    view.log.info("vtk_series: {} snapshots in {}", snapshots_, collection_file(view.output_directory).string());
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,127 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <vtkSmartPointer.h>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+#include "frictionlab/run.hpp"
+
+class vtkDoubleArray;
+class vtkIntArray;
+class vtkStringArray;
+class vtkTypeInt64Array;
+class vtkUnstructuredGrid;
+class vtkXMLUnstructuredGridWriter;
+
+namespace frictionlab {
+
+/// A time series of the lattice for ParaView: one VTK unstructured grid per observation and a
+/// collection that lists them with their simulated times. In the run's output directory:
+///
+///     <prefix>.pvd                          the collection; open this one
+///     <prefix>/<prefix>_000000.vtu, ...     one file per snapshot, numbered from 0
+///
+/// Every file is written under a temporary name and renamed, and the .pvd is rewritten after each
+/// snapshot, so a run that stops anywhere (failure, kill) leaves a series that opens. The .vtu files
+/// are binary appended, ZLib-compressed unless `compress: false`. A state that was just written
+/// (the run observes again at stage ends and at the end) is not written twice.
+///
+/// Geometry: one point per node at its deformed position. The model plane x-z is drawn as VTK's x-y,
+/// point = (x, z, 0), so ParaView's default 2D view shows the slider upright, base at the bottom.
+/// Cells are the body's quads (VTK_QUAD) or, with `cells: bonds` or for a body without quads (a
+/// chain), its springs as lines (VTK_LINE). Connectivity is built once in begin(); a snapshot only
+/// updates point coordinates and array values.
+///
+/// Point data, SI units; vectors are (x, z, 0) like the points:
+///
+///     displacement     3   m     (x - x0, z - z0)
+///     velocity         3   m/s   (vx, vz)
+///     net_force        3   N     the sum of every effect's force at the observed state
+///     role             1   -     bitmask of node sets: 1 top, 2 interface, 4 trailing edge, 8 leading edge
+///     <field>          1   unit of the field: every field an effect publishes (glossary), e.g.
+///                              normal_force, friction_force, junctions_pinned/sliding/dislocated
+///     pinned_fraction  1   1     N_p / (N_p + N_s + N_d), when the three junction counts are published
+///
+/// A field is NaN on the nodes outside its node set, and pinned_fraction also on blocks without any
+/// junction: an interior block has no normal force rather than a zero one, and ParaView's colour
+/// ranges and filters skip NaN (it draws them in the NaN colour).
+///
+/// Field data: TIME (s), TimeValue (the same; VTK's readers take a file's time from this name when
+/// the .vtu files are opened without the .pvd), STEP, stage, stage_index, every published scalar
+/// (e.g. driving_force in N), and the run record: framework_version, scene_hash, seed, scene_file,
+/// plugins ("name version" each) and units ("array: unit" for each point array).
+///
+/// In ParaView: File > Open <prefix>.pvd, Apply, colour by an array; the time controls step through
+/// the snapshots at their simulated times. In Python: vtk.vtkXMLUnstructuredGridReader per file.
+class VtkSeries final : public Observer {
+public:
+    struct Params {
+        std::string prefix = "lattice";
+        std::string cells = "quads";
+        bool compress = true;
+    };
+    static constexpr std::string_view type = "vtk_series";
+    static ParamSpec<Params> spec();
+
+    /// Bits of the "role" point array.
+    struct Role {
+        static constexpr int top = 1, interface = 2, trailing_edge = 4, leading_edge = 8;
+    };
+
+    VtkSeries(const Params& p, const Context&);
+    ~VtkSeries() override;
+    void begin(const RunView& view) override;
+    void observe(const RunView& view) override;
+    void end(const RunView& view) override;
+
+    /// The collection file, in the output directory.
+    std::filesystem::path collection_file(const std::filesystem::path& output_directory) const;
+
+private:
+    /// A published field, drawn on the nodes of its set.
+    struct NodeField {
+        const Eigen::ArrayXd* values;
+        const NodeSet* nodes;
+        vtkDoubleArray* array;
+    };
+    struct JunctionCounts {
+        vtkDoubleArray *pinned = nullptr, *sliding = nullptr, *dislocated = nullptr, *fraction = nullptr;
+    };
+    /// Field data that says when a snapshot is.
+    struct When {
+        vtkDoubleArray *time = nullptr, *time_value = nullptr;
+        vtkTypeInt64Array* step = nullptr;
+        vtkStringArray* stage = nullptr;
+        vtkIntArray* stage_index = nullptr;
+    };
+
+    void build_cells(const Body& body);
+    vtkDoubleArray* add_point_array(const std::string& name, int components, const std::string& unit);
+    void add_role(const Body& body);
+    void add_fields(const RunView& view);
+    void add_pinned_fraction();
+    void add_field_data(const RunView& view);
+    void update(const RunView& view);
+    void update_pinned_fraction();
+    void write_snapshot(const RunView& view);
+    void write_collection(const std::filesystem::path& output_directory) const;
+
+    Params params_;
+    vtkSmartPointer<vtkUnstructuredGrid> grid_;
+    vtkSmartPointer<vtkXMLUnstructuredGridWriter> writer_;
+    // Owned by grid_; kept to update in place.
+    vtkDoubleArray *points_ = nullptr, *displacement_ = nullptr, *velocity_ = nullptr, *net_force_ = nullptr;
+    std::vector<NodeField> fields_;
+    JunctionCounts junctions_;
+    When when_;
+    std::vector<std::pair<const double*, vtkDoubleArray*>> scalars_;
+    std::vector<std::string> units_;
+    std::string datasets_;  // the collection's <DataSet> lines so far
+    int snapshots_ = 0;
+    long long last_step_ = -1;
+};
+
+}  // namespace frictionlab
