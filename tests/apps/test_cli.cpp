@@ -1,0 +1,126 @@
+// The frictionlab command as a user meets it: exit codes, messages, outputs and their metadata.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int code;
+    std::string output;  // stdout and stderr together
+};
+
+Result frictionlab(const std::string& args, const fs::path& cwd) {
+    const std::string cmd = "cd '" + cwd.string() + "' && '" FRICTIONLAB_CLI "' " + args + " 2>&1";
+    Result r{-1, {}};
+    FILE* pipe = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
+    const int status = pclose(pipe);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string read(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "cli_work" /
+               ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    std::string scene(const std::string& name) const { return std::string(TEST_SCENES) + "/" + name; }
+    fs::path dir_;
+};
+
+TEST_F(Cli, VersionAndHelpExitZero) {
+    auto v = frictionlab("--version", dir_);
+    EXPECT_EQ(v.code, 0);
+    EXPECT_NE(v.output.find("frictionlab "), std::string::npos);
+    for (const char* sub : {"run", "check", "list", "doc", "example"})
+        EXPECT_EQ(frictionlab(std::string(sub) + " --help", dir_).code, 0) << sub;
+}
+
+TEST_F(Cli, UnknownSubcommandOrOptionIsBadInput) {
+    EXPECT_EQ(frictionlab("frobnicate", dir_).code, 2);
+    EXPECT_EQ(frictionlab("run --no-such-option x.yaml", dir_).code, 2);
+}
+
+TEST_F(Cli, ListNamesEveryKindWithItsLibrary) {
+    auto r = frictionlab("list", dir_);
+    ASSERT_EQ(r.code, 0) << r.output;
+    for (const char* entry : {"bulk_model/spring_lattice_2d", "loader/normal_load", "loader/driving_spring",
+                              "loader/rigid_base_contact", "integrator/rk4", "observer/loading_curve"})
+        EXPECT_NE(r.output.find(entry), std::string::npos) << entry;
+    EXPECT_NE(r.output.find("integrator_rk4.so"), std::string::npos);
+}
+
+TEST_F(Cli, ExampleOfEveryTypeIsItselfValid) {
+    auto r = frictionlab("doc --format json", dir_);
+    ASSERT_EQ(r.code, 0);
+    EXPECT_EQ(r.output.front(), '[');
+    auto e = frictionlab("example integrator/rk4", dir_);
+    EXPECT_EQ(e.code, 0);
+    EXPECT_NE(e.output.find("dt:"), std::string::npos);
+    EXPECT_EQ(frictionlab("example integrator/nope", dir_).code, 2);
+    EXPECT_EQ(frictionlab("doc nokind", dir_).code, 2);
+}
+
+TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
+    auto r = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
+    ASSERT_EQ(r.code, 0) << r.output;
+    const std::string meta = read(dir_ / "tiny_out" / "run.yaml");
+    for (const char* key : {"status: completed", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
+        EXPECT_NE(meta.find(key), std::string::npos) << key << "\n" << meta;
+    EXPECT_TRUE(fs::exists(dir_ / "tiny_out" / "run.json"));
+    const std::string curve = read(dir_ / "tiny_out" / "loading_curve.csv");
+    EXPECT_NE(curve.find("# frictionlab"), std::string::npos);
+    EXPECT_NE(curve.find("driving_force"), std::string::npos);
+
+    auto again = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
+    EXPECT_EQ(again.code, 2);
+    EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
+    EXPECT_EQ(frictionlab("run -q --force " + scene("tiny_lattice.yaml"), dir_).code, 0);
+}
+
+TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
+    EXPECT_EQ(frictionlab("check " + scene("tiny_lattice.yaml") + " --set integrator.dt=1e-7", dir_).code, 0);
+    auto bad = frictionlab("check " + scene("tiny_lattice.yaml") + " --set integrator.dt=-1", dir_);
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_NE(bad.output.find("integrator.dt"), std::string::npos) << bad.output;
+}
+
+TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
+    auto r = frictionlab("run -q " + scene("unstable.yaml"), dir_);
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("block"), std::string::npos) << r.output;  // says where it went wrong
+    EXPECT_NE(r.output.find("step"), std::string::npos) << r.output;
+    const std::string meta = read(dir_ / "unstable_out" / "run.yaml");
+    EXPECT_NE(meta.find("status: failed"), std::string::npos) << meta;
+    // The table holds whole rows only: every data line has the header's number of fields.
+    std::ifstream csv(dir_ / "unstable_out" / "loading_curve.csv");
+    std::string line, header;
+    std::size_t rows = 0;
+    while (std::getline(csv, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        if (header.empty()) { header = line; continue; }
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), std::count(header.begin(), header.end(), ','));
+        ++rows;
+    }
+    EXPECT_GT(rows, 1u);
+}
+
+}  // namespace

@@ -1,0 +1,28 @@
+# cmake -DBUILD_DIR=<build> -DPREFIX=<dir> -D{BIN,LIB,INCLUDE,DATA}DIR=<dir> -DPLUGIN_SUBDIR=<dir> -P install.cmake
+# A fresh install of the build into PREFIX, and the files an out-of-tree plugin needs from it.
+file(REMOVE_RECURSE ${PREFIX})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "cmake --install failed (${result})")
+endif()
+foreach(file
+    ${LIBDIR}/cmake/FrictionLab/FrictionLabConfig.cmake
+    ${LIBDIR}/cmake/FrictionLab/FrictionLabConfigVersion.cmake
+    ${LIBDIR}/cmake/FrictionLab/FrictionLabTargets.cmake
+    ${LIBDIR}/cmake/FrictionLab/FrictionLabPlugin.cmake
+    ${INCLUDEDIR}/frictionlab/plugin.hpp
+    ${INCLUDEDIR}/frictionlab/registry.hpp
+    ${INCLUDEDIR}/frictionlab/plugin_search.hpp
+    ${DATADIR}/frictionlab/plugin_template/CMakeLists.txt
+    ${DATADIR}/frictionlab/plugin_template/max_speed_csv.cpp
+    ${DATADIR}/frictionlab/plugin_template/README.md
+    ${BINDIR}/frictionlab)
+  if(NOT EXISTS ${PREFIX}/${file})
+    message(FATAL_ERROR "not installed: ${file}")
+  endif()
+endforeach()
+file(GLOB libraries ${PREFIX}/${LIBDIR}/libfrictionlab.so*)
+file(GLOB plugins ${PREFIX}/${PLUGIN_SUBDIR}/*.so)
+if(NOT libraries OR NOT plugins)
+  message(FATAL_ERROR "not installed: ${LIBDIR}/libfrictionlab.so or the plugins in ${PLUGIN_SUBDIR}")
+endif()

@@ -1,0 +1,80 @@
+// check_template <observer_max_speed_csv.so> <output directory>
+// Loads the plugin built from share/plugin_template through the installed library, runs its
+// observer on a two-node state whose largest speed is known (|(3, 4)| = 5 m/s) and checks the table.
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <spdlog/logger.h>
+
+#include <frictionlab/quantities.hpp>
+#include <frictionlab/registry.hpp>
+#include <frictionlab/run.hpp>
+#include <frictionlab/system.hpp>
+
+namespace fl = frictionlab;
+
+namespace {
+int fail(const std::string& why) {
+    std::cerr << "check_template: " << why << '\n';
+    return 1;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 3) return fail("usage: check_template <plugin.so> <output directory>");
+    const std::filesystem::path plugin = argv[1], output = argv[2];
+    try {
+        fl::Registry registry;
+        const fl::PluginRecord record = registry.load(plugin);
+        if (record.name != "observer_max_speed_csv" || record.version != "0.1.0")
+            return fail("unexpected plugin " + record.name + " " + record.version);
+        const fl::TypeInfo* info = registry.find(fl::Kind::observer, "max_speed_csv");
+        if (!info) return fail("the plugin did not register observer type 'max_speed_csv'");
+        if (info->params.size() != 1 || info->params[0].key != "file_name")
+            return fail("observer 'max_speed_csv' should declare one key, file_name");
+
+        spdlog::logger log("check_template");  // no sinks: quiet
+        fl::Body body;
+        body.x0 = Eigen::ArrayXd::LinSpaced(2, 0.0, 1.0);
+        body.z0 = Eigen::ArrayXd::Zero(2);
+        body.mass = Eigen::ArrayXd::Ones(2);
+        fl::Quantities quantities;
+        fl::System system(body, 0);
+        Eigen::VectorXd& y = system.initial_state();
+        y.segment(4, 2) << 3.0, 0.5;  // vx
+        y.segment(6, 2) << 4.0, 0.5;  // vz
+        const fl::StageInfo stage{"load", 0, 0.0, 1.0, true};
+        const fl::RunInfo run_info;
+        fl::Context ctx{log, 0, &body, &quantities, nullptr, "observers[0]"};
+        {
+            auto observer = registry.create<fl::Observer>("max_speed_csv",
+                                                          {{"file_name", std::string("speed.csv")}}, ctx);
+            const fl::RunView view{system, body, system.state(), quantities, stage, 7, output, run_info, log};
+            observer->begin(view);
+            observer->observe(view);
+            observer->end(view);
+        }
+
+        std::ifstream in(output / "speed.csv");
+        if (!in) return fail("no table written to " + (output / "speed.csv").string());
+        std::string header, row, extra;
+        std::getline(in, header);
+        std::getline(in, row);
+        if (header != "time,step,max_speed") return fail("unexpected header '" + header + "'");
+        std::istringstream fields(row);
+        double t = -1, speed = -1;
+        long long step = -1;
+        char c1 = 0, c2 = 0;
+        fields >> t >> c1 >> step >> c2 >> speed;
+        if (!fields || c1 != ',' || c2 != ',' || t != 0.0 || step != 7 || std::abs(speed - 5.0) > 1e-12)
+            return fail("unexpected row '" + row + "', expected 0,7,5");
+        if (std::getline(in, extra)) return fail("more rows than observations");
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    std::cout << "check_template: " << plugin.string() << " loads and writes its table\n";
+    return 0;
+}

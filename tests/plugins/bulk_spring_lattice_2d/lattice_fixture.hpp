@@ -1,0 +1,65 @@
+#pragma once
+// A lattice with its effects and a way to evaluate one effect at a given state.
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "frictionlab/state.hpp"
+#include "plugin_test_support.hpp"
+#include "spring_lattice_2d.hpp"
+
+namespace frictionlab {
+
+struct LatticeFixture {
+    explicit LatticeFixture(const SpringLattice2d::Params& p = {})
+        : lattice(p, services.context()), effects(lattice.effects(services.context(&lattice.body()))) {}
+
+    const Body& body() const { return lattice.body(); }
+    Index nodes() const { return body().size(); }
+    StateLayout layout() const { return {nodes(), 0}; }
+    Index node(Index ix, Index iz) const { return lattice.grid().node(ix, iz); }
+
+    /// [x | z | vx | vz] at the reference positions, at rest.
+    Eigen::VectorXd reference_state() const {
+        Eigen::VectorXd y = Eigen::VectorXd::Zero(layout().size());
+        y.segment(0, nodes()) = body().x0.matrix();
+        y.segment(nodes(), nodes()) = body().z0.matrix();
+        return y;
+    }
+
+    /// Positions displaced by the field (ux, uz) = u(x0 - xc, z0 - zc) about the centre.
+    template <class Displacement>
+    Eigen::VectorXd displaced(Displacement u) const {
+        Eigen::VectorXd y = reference_state();
+        const double xc = body().length / 2, zc = body().height / 2;
+        for (Index i = 0; i < nodes(); ++i) {
+            const auto [ux, uz] = u(body().x0(i) - xc, body().z0(i) - zc);
+            y(i) += ux;
+            y(nodes() + i) += uz;
+        }
+        return y;
+    }
+
+    /// [fx | fz] of one effect at state y.
+    Eigen::VectorXd forces(Effect& e, const Eigen::VectorXd& y) const {
+        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout().size());
+        ForceView f = forces_of(dy, layout());
+        e.add_forces(view_of(y, layout(), 0.0), f);
+        return dy.segment(2 * nodes(), 2 * nodes());
+    }
+
+    Effect& springs() { return *effects.at(0); }
+    Effect& damping() { return *effects.at(1); }
+
+    test_support::Services services;
+    SpringLattice2d lattice;
+    std::vector<std::unique_ptr<Effect>> effects;
+};
+
+inline SpringLattice2d::Params with_springs(const std::string& law) {
+    SpringLattice2d::Params p;
+    p.springs = law;
+    return p;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,158 @@
+// Exact consequences of the lattice springs (physics.md C.1): elastic constants, invariance under
+// rigid motions, and the vectorised bond families against a plain per-bond loop.
+#include <limits>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "lattice_fixture.hpp"
+
+namespace frictionlab {
+namespace {
+
+constexpr Index nx = 41, nz = 9;
+
+/// Force error from rounding the absolute positions (|x| <= extent): a few ulps per coordinate,
+/// times the stiffest spring, times the 8 bonds of a node.
+double position_roundoff_force(double stiffness, double extent) {
+    return 8 * stiffness * 4 * std::numeric_limits<double>::epsilon() * extent;
+}
+
+struct NodeForce {
+    double x, z;
+};
+
+NodeForce at(const Eigen::VectorXd& f, Index nodes, Index i) { return {f(i), f(nodes + i)}; }
+
+/// Uniaxial stress along x: eps_xx = eps, eps_zz = -eps/3. With nu = 1/3 and E the lattice's own
+/// constants this is exactly the free-surface (sigma_zz = 0) state, so all nodes are in balance
+/// except the two end columns, which carry sigma B l_s each, sigma = E eps (corner nodes: the
+/// straight spring and one diagonal only, 7/8 of it along x and -+1/8 along z).
+void expect_uniaxial_response(const std::string& law, double eps, double tolerance) {
+    LatticeFixture f(with_springs(law));
+    const double E = 3e9, B = f.body().width, l = f.body().spacing, sigma = E * eps, unit = sigma * B * l;
+    const Eigen::VectorXd F =
+        f.forces(f.springs(), f.displaced([&](double x, double z) { return std::pair{eps * x, -eps / 3 * z}; }));
+    double leading_total = 0;
+    for (Index iz = 0; iz < nz; ++iz)
+        for (Index ix = 0; ix < nx; ++ix) {
+            const NodeForce n = at(F, f.nodes(), f.node(ix, iz));
+            const bool end = ix == 0 || ix == nx - 1, corner = end && (iz == 0 || iz == nz - 1);
+            const double side = ix == 0 ? 1.0 : -1.0, up = iz == 0 ? -1.0 : 1.0;
+            const NodeForce expected = !end ? NodeForce{0, 0} : corner ? NodeForce{side * 7 / 8 * unit, up / 8 * unit}
+                                                                       : NodeForce{side * unit, 0};
+            EXPECT_NEAR(n.x, expected.x, tolerance * unit) << law << " node (" << ix << ", " << iz << ")";
+            EXPECT_NEAR(n.z, expected.z, tolerance * unit) << law << " node (" << ix << ", " << iz << ")";
+            if (ix == nx - 1) leading_total += n.x;
+        }
+    // The end face carries sigma B (H + 3 l_s/4), not sigma B H: edge rows keep full straight
+    // springs (masses and springs are not halved at the boundary, physics.md B.20), so the strip
+    // acts like a continuum a quarter-spacing thicker than H.
+    EXPECT_NEAR(-leading_total, sigma * B * (f.body().height + 0.75 * l), tolerance * sigma * B * f.body().height);
+}
+
+TEST(LatticeSprings, SmallStrainGivesExactlyYoungsModulusAndPoissonOneThird) {
+    // Linear law: a large eps keeps the stretch (l_s eps) far above position round-off, so the
+    // comparison is to 1e-12.
+    expect_uniaxial_response("small_strain", 0.1, 1e-12);
+}
+
+TEST(LatticeSprings, GeometricMatchesElasticConstantsInTheLinearRegime) {
+    // Geometric nonlinearity is O(eps) relative = 1e-6 on a diagonal's x-force, a quarter of the
+    // edge force; position round-off is ~ulp(0.1)/(l_s eps) = 6e-9.
+    expect_uniaxial_response("geometric", 1e-6, 1e-6);
+}
+
+Eigen::VectorXd rigidly_moved(const LatticeFixture& f, double phi, double ax, double az) {
+    const double c = std::cos(phi), s = std::sin(phi);
+    return f.displaced([&](double x, double z) { return std::pair{c * x - s * z - x + ax, s * x + c * z - z + az}; });
+}
+
+TEST(LatticeSprings, RigidTranslationGivesNoForce) {
+    for (const std::string law : {"geometric", "small_strain"}) {
+        LatticeFixture f(with_springs(law));
+        const Eigen::VectorXd F = f.forces(f.springs(), rigidly_moved(f, 0, 0.013, -0.007));
+        EXPECT_LE(F.cwiseAbs().maxCoeff(), position_roundoff_force(f.body().bond_stiffness, 0.12)) << law;
+    }
+}
+
+TEST(LatticeSprings, GeometricRotationGivesNoForce) {
+    LatticeFixture f(with_springs("geometric"));
+    for (double phi : {1e-3, 0.3}) {
+        const Eigen::VectorXd F = f.forces(f.springs(), rigidly_moved(f, phi, 0.002, 0.001));
+        EXPECT_LE(F.cwiseAbs().maxCoeff(), position_roundoff_force(f.body().bond_stiffness, 0.12)) << phi;
+    }
+}
+
+TEST(LatticeSprings, SmallStrainRotationActsAsIsotropicCompression) {
+    // The linearised law sees a rotation by phi as a stretch (Delta_u . e) = l (cos phi - 1) of
+    // every bond, i.e. the isotropic strain cos(phi) - 1: a second-order force on boundary nodes.
+    // This is why small_strain is only for small rotations.
+    LatticeFixture f(with_springs("small_strain"));
+    const double phi = 1e-2, eps = std::cos(phi) - 1;
+    const Eigen::VectorXd rotated = f.forces(f.springs(), rigidly_moved(f, phi, 0, 0));
+    const Eigen::VectorXd isotropic =
+        f.forces(f.springs(), f.displaced([&](double x, double z) { return std::pair{eps * x, eps * z}; }));
+    const double K = f.body().bond_stiffness, l = f.body().spacing;
+    EXPECT_LE((rotated - isotropic).cwiseAbs().maxCoeff(), position_roundoff_force(K, 0.12));
+    // A mid-height node of the leading edge: straight spring K l eps plus two diagonals K l eps/2
+    // each along x; compression pushes it outward (+x).
+    const NodeForce n = at(rotated, f.nodes(), f.node(nx - 1, nz / 2));
+    EXPECT_NEAR(n.x, -2 * K * l * eps, 1e-8 * 2 * K * l * std::abs(eps));
+    EXPECT_GT(n.x, 0);
+}
+
+/// The forces of Li2020 Eq. 1 (or its linearisation), bond by bond from the body's bond list.
+Eigen::VectorXd per_bond_reference(const LatticeFixture& f, const Eigen::VectorXd& y, bool geometric) {
+    const Body& b = f.body();
+    const Index n = f.nodes();
+    Eigen::VectorXd F = Eigen::VectorXd::Zero(2 * n);
+    for (const auto& [i, j] : b.bonds) {
+        const Eigen::Vector2d ref(b.x0(j) - b.x0(i), b.z0(j) - b.z0(i));
+        const Eigen::Vector2d d(y(j) - y(i), y(n + j) - y(n + i));
+        const double l = ref.norm(), k = l > 1.2 * b.spacing ? b.bond_stiffness / 2 : b.bond_stiffness;
+        const Eigen::Vector2d e = ref / l;
+        const Eigen::Vector2d Fij = geometric ? Eigen::Vector2d(k * (d.norm() - l) * d / d.norm())
+                                              : Eigen::Vector2d(k * (d - ref).dot(e) * e);
+        F(i) += Fij.x();
+        F(n + i) += Fij.y();
+        F(j) -= Fij.x();
+        F(n + j) -= Fij.y();
+    }
+    return F;
+}
+
+Eigen::VectorXd randomly_deformed(const LatticeFixture& f, double amplitude, unsigned seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-amplitude, amplitude);
+    Eigen::VectorXd y = f.reference_state();
+    for (Index i = 0; i < 2 * f.nodes(); ++i) y(i) += u(rng);
+    return y;
+}
+
+TEST(LatticeSprings, BondFamiliesEqualThePerBondLoop) {
+    for (const std::string law : {"geometric", "small_strain"}) {
+        LatticeFixture f(with_springs(law));
+        const Eigen::VectorXd y = randomly_deformed(f, 0.1 * f.body().spacing, 7);
+        const Eigen::VectorXd F = f.forces(f.springs(), y), ref = per_bond_reference(f, y, law == "geometric");
+        EXPECT_LE((F - ref).cwiseAbs().maxCoeff(), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
+        // Newton's third law: internal forces sum to zero.
+        EXPECT_LE(std::abs(F.head(f.nodes()).sum()), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
+        EXPECT_LE(std::abs(F.tail(f.nodes()).sum()), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
+    }
+}
+
+TEST(LatticeSprings, BondFamiliesEqualThePerBondLoopOnAnotherShape) {
+    SpringLattice2d::Params p;
+    p.nx = 7;
+    p.nz = 4;
+    p.length = 0.06;
+    p.height = 0.03;
+    LatticeFixture f(p);
+    const Eigen::VectorXd y = randomly_deformed(f, 0.2 * f.body().spacing, 11);
+    const Eigen::VectorXd F = f.forces(f.springs(), y), ref = per_bond_reference(f, y, true);
+    EXPECT_LE((F - ref).cwiseAbs().maxCoeff(), 1e-12 * ref.cwiseAbs().maxCoeff());
+}
+
+}  // namespace
+}  // namespace frictionlab

@@ -1,0 +1,109 @@
+#pragma once
+// Drives a ThreeStateJunctions law as an integrator would, on a hand-made body whose interface
+// nodes all start at x = 0 (so that dyadic displacements give exact forces). The test writes the
+// normal force and chooses each end-of-step position.
+#include <memory>
+#include <vector>
+
+#include <spdlog/logger.h>
+
+#include "frictionlab/body.hpp"
+#include "frictionlab/context.hpp"
+#include "frictionlab/quantities.hpp"
+#include "frictionlab/stage.hpp"
+#include "frictionlab/state.hpp"
+
+#include "three_state_junctions.hpp"
+
+namespace frictionlab::testing {
+
+/// Exact-arithmetic parameters: k_s = 2^10 N/m, deterministic lifetimes t_s = 2^-12 s,
+/// t_d = 2^-10 s, so positions, forces and deadlines are exact binary fractions where they can be.
+inline ThreeStateJunctions::Params exact_params() {
+    ThreeStateJunctions::Params p;
+    p.tangential_stiffness = 1024;
+    p.sliding_time_mean = 0x1p-12;
+    p.sliding_time_sd = 0;
+    p.dislocated_time_mean = 0x1p-10;
+    p.dislocated_time_sd = 0;
+    return p;
+}
+
+inline constexpr double exact_dt = 0x1p-16;
+
+struct Rig {
+    explicit Rig(const ThreeStateJunctions::Params& params, Index blocks = 3, std::uint64_t seed = 1,
+                 double x0 = 0)
+        : log("three_state_junctions_test") {
+        body.x0 = Eigen::ArrayXd::Constant(blocks, x0);
+        body.z0 = Eigen::ArrayXd::LinSpaced(blocks, 0, 1);
+        body.mass = Eigen::ArrayXd::Ones(blocks);
+        NodeSet interface;
+        for (Index i = 0; i < blocks; ++i) interface.push_back(i);
+        body.node_sets["interface"] = interface;
+        normal = &quantities.field("normal_force", "interface", blocks, "N", "test");
+        layout = {blocks, 0};
+        y = Eigen::VectorXd::Zero(layout.size());
+        y.head(blocks) = body.x0.matrix();
+        Context ctx{log, seed, &body, &quantities, nullptr, "friction"};
+        law = std::make_unique<ThreeStateJunctions>(params, ctx);
+        p = law->junction_load();
+        k = law->junction_stiffness();
+    }
+
+    StageView view() const { return view_of(y, layout, t); }
+    double x(Index i) const { return y[i]; }
+    const BlockJunctions& block(Index i) const { return law->block(i); }
+
+    void stage(bool friction_events) {
+        StageInfo info{friction_events ? "load" : "settle", stage_index++, t, 1.0, friction_events};
+        law->begin_stage(info, view());
+    }
+
+    /// One accepted step to positions x (one per block) and normal forces P.
+    void step(const std::vector<double>& xs, double dt = exact_dt) {
+        law->begin_step(view());
+        for (std::size_t i = 0; i < xs.size(); ++i) y[static_cast<Index>(i)] = xs[i];
+        t += dt;
+        law->commit(view(), dt);
+    }
+    /// One accepted step that moves block i only.
+    void move(Index i, double xi, double dt = exact_dt) {
+        std::vector<double> xs(y.data(), y.data() + layout.nodes);
+        xs[static_cast<std::size_t>(i)] = xi;
+        step(xs, dt);
+    }
+    void hold(int steps, double dt = exact_dt) {
+        for (int n = 0; n < steps; ++n) move(0, x(0), dt);
+    }
+
+    /// x-force on block i from the law at the current state.
+    double force(Index i) { return forces()[static_cast<std::size_t>(i)]; }
+    std::vector<double> forces() {
+        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
+        ForceView f = forces_of(dy, layout);
+        law->add_forces(view(), f);
+        return {f.fx.data(), f.fx.data() + layout.nodes};
+    }
+    /// x-force on block i at a stage position, without accepting a step.
+    double stage_force(Index i, double xi) {
+        const double saved = y[i];
+        y[i] = xi;
+        const double f = force(i);
+        y[i] = saved;
+        return f;
+    }
+
+    spdlog::logger log;
+    Body body;
+    Quantities quantities;
+    Eigen::ArrayXd* normal = nullptr;
+    StateLayout layout;
+    Eigen::VectorXd y;
+    double t = 0;
+    int stage_index = 0;
+    std::unique_ptr<ThreeStateJunctions> law;
+    double p = 0, k = 0;
+};
+
+}  // namespace frictionlab::testing

@@ -1,0 +1,128 @@
+// Loading spring of Li2020 Eq. 4 with the time and displacement origins of physics.md B.3.
+#include <gtest/gtest.h>
+
+#include "driving_spring.hpp"
+#include "frictionlab/errors.hpp"
+#include "plugin_test_support.hpp"
+#include "spring_lattice_2d.hpp"
+
+namespace frictionlab {
+namespace {
+
+constexpr Index nx = 41;
+
+struct SpringOnLattice {
+    explicit SpringOnLattice(const DrivingSpring::Params& p = {})
+        : lattice(SpringLattice2d::Params{}, services.context()),
+          layout{lattice.body().size(), 0},
+          spring(p, services.context(&lattice.body())) {
+        y = Eigen::VectorXd::Zero(layout.size());
+        y.head(layout.nodes) = lattice.body().x0.matrix();
+        y.segment(layout.nodes, layout.nodes) = lattice.body().z0.matrix();
+    }
+
+    void begin_stage(double t_start) {
+        spring.begin_stage(StageInfo{"load", 1, t_start, 1.0, true}, view_of(y, layout, t_start));
+    }
+    /// fx on every node at time t and the current positions.
+    Eigen::VectorXd fx(double t) {
+        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
+        ForceView f = forces_of(dy, layout);
+        spring.add_forces(view_of(y, layout, t), f);
+        EXPECT_EQ(dy.segment(3 * layout.nodes, layout.nodes).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
+        return dy.segment(2 * layout.nodes, layout.nodes);
+    }
+    double scalar(const char* name) const { return services.quantities.find_scalar(name)->value; }
+
+    test_support::Services services;
+    SpringLattice2d lattice;
+    StateLayout layout;
+    DrivingSpring spring;
+    Eigen::VectorXd y;
+};
+
+DrivingSpring::Params at_height(double h, const std::string& attachment = "node") {
+    DrivingSpring::Params p;
+    p.height = h;
+    p.attachment = attachment;
+    return p;
+}
+
+TEST(DrivingSpring, AttachesToTheTrailingEdgeNodeAtHeightH) {
+    SpringOnLattice s;  // h = 5 mm: row 2 of the trailing edge (physics.md A.2)
+    ASSERT_EQ(s.spring.attachment().size(), 1u);
+    EXPECT_EQ(s.spring.attachment()[0].node, 2 * nx);
+    EXPECT_EQ(s.spring.attachment()[0].weight, 1.0);
+}
+
+TEST(DrivingSpring, ForceStartsAtZeroAndGrowsAsKsVtForAFixedNode) {
+    SpringOnLattice s;
+    const Index node = 2 * nx;
+    s.y(node) += 3e-6;  // the node has moved during settling: that is the displacement origin
+    s.begin_stage(0.3);
+    EXPECT_EQ(s.fx(0.3).cwiseAbs().maxCoeff(), 0.0);
+    const double Ks = 0.8e6, V = 1e-4;
+    for (double elapsed : {1e-3, 0.25, 2.0}) {
+        const Eigen::VectorXd f = s.fx(0.3 + elapsed);
+        EXPECT_NEAR(f(node), Ks * V * elapsed, 1e-12 * Ks * V * elapsed) << elapsed;
+        EXPECT_NEAR(f.sum(), f(node), 0.0);
+        EXPECT_NEAR(s.scalar("driving_force"), f(node), 0.0);
+        EXPECT_NEAR(s.scalar("driver_position"), V * elapsed, 1e-15);
+        EXPECT_EQ(s.scalar("driving_displacement"), 0.0);
+    }
+}
+
+TEST(DrivingSpring, ForceFollowsTheDrivingPointDisplacement) {
+    SpringOnLattice s;
+    s.begin_stage(0.0);
+    const Index node = 2 * nx;
+    s.y(node) += 2e-6;
+    const Eigen::VectorXd f = s.fx(0.05);  // V t = 5 um
+    EXPECT_NEAR(f(node), 0.8e6 * (5e-6 - 2e-6), 1e-9);
+    EXPECT_NEAR(s.scalar("driving_displacement"), 2e-6, 1e-17);
+}
+
+TEST(DrivingSpring, InterpolatedAttachmentSharesDisplacementAndForce) {
+    SpringOnLattice s(at_height(0.004, "interpolated"));  // between rows 1 (2.5 mm) and 2 (5 mm)
+    const auto& a = s.spring.attachment();
+    ASSERT_EQ(a.size(), 2u);
+    EXPECT_EQ(a[0].node, 1 * nx);
+    EXPECT_EQ(a[1].node, 2 * nx);
+    EXPECT_NEAR(a[0].weight, 0.4, 1e-12);
+    EXPECT_NEAR(a[1].weight, 0.6, 1e-12);
+    s.begin_stage(0.0);
+    s.y(nx) += 1e-6;
+    s.y(2 * nx) += 2e-6;
+    const Eigen::VectorXd f = s.fx(0.1);
+    const double xh = 0.4 * 1e-6 + 0.6 * 2e-6, F = 0.8e6 * (1e-5 - xh);
+    EXPECT_NEAR(s.scalar("driving_displacement"), xh, 1e-17);
+    EXPECT_NEAR(s.scalar("driving_force"), F, 1e-9);
+    EXPECT_NEAR(f(nx), 0.4 * F, 1e-9);
+    EXPECT_NEAR(f(2 * nx), 0.6 * F, 1e-9);
+    EXPECT_NEAR(f.sum(), F, 1e-9);
+}
+
+TEST(DrivingSpring, InterpolatedAtANodeHeightUsesThatNode) {
+    SpringOnLattice s(at_height(0.0025, "interpolated"));
+    ASSERT_EQ(s.spring.attachment().size(), 1u);
+    EXPECT_EQ(s.spring.attachment()[0].node, nx);
+}
+
+TEST(DrivingSpring, NodeAttachmentRejectsAHeightBetweenNodes) {
+    test_support::Services services;
+    SpringLattice2d lattice(SpringLattice2d::Params{}, services.context());
+    try {
+        DrivingSpring(at_height(0.004), services.context(&lattice.body()));
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        for (const char* part : {"height", "0.004", "0.0025", "0.005", "interpolated"})
+            EXPECT_NE(what.find(part), std::string::npos) << part << " missing in: " << what;
+    }
+    EXPECT_THROW(DrivingSpring(at_height(0.03, "interpolated"), services.context(&lattice.body())), InputError);
+    // Within 1e-9 l_s of a node counts as the node.
+    EXPECT_NO_THROW(DrivingSpring(at_height(0.005 + 1e-13), services.context(&lattice.body())));
+}
+
+}  // namespace
+}  // namespace frictionlab

@@ -1,0 +1,99 @@
+// Compression-only base contact of Li2020 Eq. 5 (physics.md B.5).
+#include <gtest/gtest.h>
+
+#include "frictionlab/errors.hpp"
+#include "plugin_test_support.hpp"
+#include "rigid_base_contact.hpp"
+#include "spring_lattice_2d.hpp"
+
+namespace frictionlab {
+namespace {
+
+struct ContactOnLattice {
+    explicit ContactOnLattice(const RigidBaseContact::Params& p = {})
+        : lattice(SpringLattice2d::Params{}, services.context()),
+          layout{lattice.body().size(), 0},
+          contact(p, services.context(&lattice.body())) {
+        y = Eigen::VectorXd::Zero(layout.size());
+        y.head(layout.nodes) = lattice.body().x0.matrix();
+        y.segment(layout.nodes, layout.nodes) = lattice.body().z0.matrix();
+    }
+    Eigen::VectorXd forces() {
+        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
+        ForceView f = forces_of(dy, layout);
+        contact.add_forces(view_of(y, layout, 0.0), f);
+        return dy.segment(2 * layout.nodes, 2 * layout.nodes);
+    }
+    const Quantities::Field& normal_force() const { return *services.quantities.find_field("normal_force"); }
+
+    test_support::Services services;
+    SpringLattice2d lattice;
+    StateLayout layout;
+    RigidBaseContact contact;
+    Eigen::VectorXd y;
+};
+
+TEST(RigidBaseContact, StiffnessIsHalfTheBondStiffnessByDefault) {
+    ContactOnLattice s;
+    EXPECT_DOUBLE_EQ(s.contact.contact_stiffness(), 0.5 * 1.125e7);
+    RigidBaseContact::Params p;
+    p.stiffness_ratio = 0.2;
+    ContactOnLattice other(p);
+    EXPECT_DOUBLE_EQ(other.contact.contact_stiffness(), 0.2 * 1.125e7);
+}
+
+TEST(RigidBaseContact, PushesPenetratingNodesUpAndLeavesSeparatedOnesFree) {
+    ContactOnLattice s;
+    const Index n = s.layout.nodes, pressed = 7, lifted = 8, row_above = 41 + 7;
+    const double Kb = 0.5 * 1.125e7;
+    s.y(n + pressed) -= 1.7e-6;
+    s.y(n + lifted) += 1e-6;
+    s.y(n + row_above) -= 1e-6;  // not in the node set
+    s.y(pressed) += 1e-3;        // sliding sideways changes nothing
+    const Eigen::VectorXd F = s.forces();
+    EXPECT_DOUBLE_EQ(F(n + pressed), Kb * 1.7e-6);
+    EXPECT_EQ(F(n + lifted), 0.0);
+    EXPECT_EQ(F(n + row_above), 0.0);
+    EXPECT_EQ(F.head(n).cwiseAbs().maxCoeff(), 0.0);  // no friction, no damping
+    EXPECT_DOUBLE_EQ(F.tail(n).sum(), Kb * 1.7e-6);
+}
+
+TEST(RigidBaseContact, PublishesNormalForceOverTheInterface) {
+    ContactOnLattice s;
+    const Quantities::Field& P = s.normal_force();
+    EXPECT_EQ(P.node_set, "interface");
+    EXPECT_EQ(P.unit, "N");
+    ASSERT_EQ(P.values.size(), 41);
+    const Index n = s.layout.nodes;
+    s.y(n + 3) -= 2e-6;
+    s.forces();
+    EXPECT_DOUBLE_EQ(P.values(3), 0.5 * 1.125e7 * 2e-6);
+    EXPECT_EQ(P.values.sum(), P.values(3));
+}
+
+TEST(RigidBaseContact, CommitRecomputesFromTheEndState) {
+    ContactOnLattice s;
+    const Index n = s.layout.nodes;
+    s.y(n + 3) -= 2e-6;
+    s.forces();  // a stage state
+    Eigen::VectorXd end = s.y;
+    end(n + 3) = 0.5e-6;  // lifted off by the end of the step
+    end(n + 5) = -1e-6;
+    s.contact.commit(view_of(end, s.layout, 2e-7), 2e-7);
+    const Quantities::Field& P = s.normal_force();
+    EXPECT_EQ(P.values(3), 0.0);
+    EXPECT_DOUBLE_EQ(P.values(5), 0.5 * 1.125e7 * 1e-6);
+}
+
+TEST(RigidBaseContact, NeedsTheBulkBondStiffness) {
+    test_support::Services services;
+    Body chain;
+    chain.x0 = Eigen::ArrayXd::LinSpaced(3, 0, 0.02);
+    chain.z0 = Eigen::ArrayXd::Zero(3);
+    chain.mass = Eigen::ArrayXd::Constant(3, 1e-3);
+    chain.node_sets["interface"] = {0, 1, 2};
+    EXPECT_THROW(RigidBaseContact({}, services.context(&chain)), InputError);
+}
+
+}  // namespace
+}  // namespace frictionlab

@@ -1,0 +1,50 @@
+#pragma once
+// What plugin unit tests need besides the plugin: the run services a constructor expects (owned
+// by the test, nothing global) and a classical RK4 step over System that obeys the
+// freeze-and-commit rule. The integrator plugins are tested on their own; this one is only a
+// fixed reference for physics tests.
+#include <memory>
+#include <string>
+
+#include <spdlog/logger.h>
+
+#include "frictionlab/context.hpp"
+#include "frictionlab/system.hpp"
+
+namespace frictionlab::test_support {
+
+struct Services {
+    std::shared_ptr<spdlog::logger> log = std::make_shared<spdlog::logger>("test");  // no sinks: silent
+    Quantities quantities;
+    AuxAllocator aux;
+
+    Context context(const Body* body = nullptr) { return Context{*log, 0, body, &quantities, &aux, "test"}; }
+};
+
+class Rk4 {
+public:
+    explicit Rk4(System& system)
+        : system_(system), k1_(system.y().size()), k2_(k1_.size()), k3_(k1_.size()), k4_(k1_.size()),
+          stage_(k1_.size()) {}
+
+    void step(double dt) {
+        const Eigen::VectorXd& y = system_.y();
+        const double t = system_.time();
+        system_.begin_step();
+        system_.derivative(t, y, k1_);
+        stage_ = y + 0.5 * dt * k1_;
+        system_.derivative(t + 0.5 * dt, stage_, k2_);
+        stage_ = y + 0.5 * dt * k2_;
+        system_.derivative(t + 0.5 * dt, stage_, k3_);
+        stage_ = y + dt * k3_;
+        system_.derivative(t + dt, stage_, k4_);
+        stage_ = y + dt / 6 * (k1_ + 2 * k2_ + 2 * k3_ + k4_);
+        system_.accept(t + dt, stage_);
+    }
+
+private:
+    System& system_;
+    Eigen::VectorXd k1_, k2_, k3_, k4_, stage_;
+};
+
+}  // namespace frictionlab::test_support
