@@ -1,0 +1,77 @@
+// Cost of one force evaluation of the spring lattice, the bulk of every RK4 stage. Counters give
+// the time per evaluation per node ("per_node"), which should stay flat as the lattice grows.
+#include <random>
+
+#include <benchmark/benchmark.h>
+#include <spdlog/logger.h>
+
+#include "spring_lattice_2d.hpp"
+
+namespace frictionlab {
+namespace {
+
+struct Bench {
+    Bench(int nx, int nz, const std::string& springs, const std::string& damping_mode) {
+        SpringLattice2d::Params p;
+        p.nx = nx;
+        p.nz = nz;
+        p.height = p.length / (nx - 1) * (nz - 1);
+        p.springs = springs;
+        p.damping_mode = damping_mode;
+        lattice = std::make_unique<SpringLattice2d>(p, Context{log, 0, nullptr, &quantities, &aux, "bench"});
+        effects = lattice->effects(Context{log, 0, &lattice->body(), &quantities, &aux, "bench"});
+        const Index n = lattice->body().size();
+        layout = {n, 0};
+        y = Eigen::VectorXd::Zero(layout.size());
+        dy = y;
+        std::mt19937_64 rng(1);
+        std::uniform_real_distribution<double> u(-1e-6, 1e-6);
+        for (Index i = 0; i < n; ++i) {
+            y(i) = lattice->body().x0(i) + u(rng);
+            y(n + i) = lattice->body().z0(i) + u(rng);
+            y(2 * n + i) = u(rng);
+            y(3 * n + i) = u(rng);
+        }
+    }
+
+    spdlog::logger log{"bench"};
+    Quantities quantities;
+    AuxAllocator aux;
+    std::unique_ptr<SpringLattice2d> lattice;
+    std::vector<std::unique_ptr<Effect>> effects;
+    StateLayout layout;
+    Eigen::VectorXd y, dy;
+};
+
+void run(benchmark::State& state, const std::string& springs, const std::string& damping_mode,
+         std::size_t first_effect, std::size_t last_effect) {
+    Bench b(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), springs, damping_mode);
+    const StageView s = view_of(b.y, b.layout, 0.0);
+    for (auto _ : state) {
+        b.dy.setZero();
+        ForceView f = forces_of(b.dy, b.layout);
+        for (std::size_t e = first_effect; e <= last_effect; ++e) b.effects[e]->add_forces(s, f);
+        benchmark::DoNotOptimize(b.dy.data());
+        benchmark::ClobberMemory();
+    }
+    state.counters["per_node"] = benchmark::Counter(static_cast<double>(b.layout.nodes),
+                                                    benchmark::Counter::kIsIterationInvariantRate |
+                                                        benchmark::Counter::kInvert);
+}
+
+void springs_and_damping(benchmark::State& s) { run(s, "geometric", "full_vector", 0, 1); }
+void springs_geometric(benchmark::State& s) { run(s, "geometric", "full_vector", 0, 0); }
+void springs_small_strain(benchmark::State& s) { run(s, "small_strain", "full_vector", 0, 0); }
+void damping_full_vector(benchmark::State& s) { run(s, "geometric", "full_vector", 1, 1); }
+void damping_bond_projected(benchmark::State& s) { run(s, "geometric", "bond_projected", 1, 1); }
+
+void lattice_sizes(benchmark::internal::Benchmark* b) { b->Args({41, 9})->Args({81, 17}); }
+
+BENCHMARK(springs_and_damping)->Apply(lattice_sizes);
+BENCHMARK(springs_geometric)->Apply(lattice_sizes);
+BENCHMARK(springs_small_strain)->Apply(lattice_sizes);
+BENCHMARK(damping_full_vector)->Apply(lattice_sizes);
+BENCHMARK(damping_bond_projected)->Apply(lattice_sizes);
+
+}  // namespace
+}  // namespace frictionlab
