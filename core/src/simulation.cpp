@@ -31,17 +31,18 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     struct Pending {
         std::unique_ptr<Effect> effect;
         std::vector<std::string> stages;
+        std::string label;
     };
     std::vector<Pending> effects;
-    for (auto& e : bulk_->effects(context("bulk"))) effects.push_back({std::move(e), {}});
+    for (auto& e : bulk_->effects(context("bulk"))) effects.push_back({std::move(e), {}, {}});
     // Loaders come before the friction law: it reads the normal force the base contact publishes.
     for (const auto& l : scene.loaders) {
-        effects.push_back({registry.create<Loader>(l.type, l.values, context(l.path)), l.stages});
+        effects.push_back({registry.create<Loader>(l.type, l.values, context(l.path)), l.stages, l.type});
         record_plugin(l, Kind::loader);
     }
     if (scene.friction) {
         const auto& f = *scene.friction;
-        effects.push_back({registry.create<FrictionLaw>(f.type, f.values, context(f.path)), {}});
+        effects.push_back({registry.create<FrictionLaw>(f.type, f.values, context(f.path)), {}, f.type});
         record_plugin(f, Kind::friction_law);
     }
     integrator_ = registry.create<Integrator>(scene.integrator.type, scene.integrator.values, context("integrator"));
@@ -49,7 +50,7 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     for (const auto& o : scene.observers) record_plugin(o, Kind::observer);
 
     system_ = std::make_unique<System>(bulk_->body(), aux_.count);
-    for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages));
+    for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages), std::move(e.label));
     Eigen::VectorXd& y = system_->initial_state();
     Eigen::Ref<Eigen::ArrayXd> aux = y.tail(system_->layout().aux).array();
     system_->for_each_effect([&](const Effect& e) { e.initialise_aux(aux); });

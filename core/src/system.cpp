@@ -14,24 +14,52 @@ System::System(const Body& body, Index aux_size)
     net_force_ = Eigen::VectorXd::Zero(2 * n);
 }
 
-void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in) {
+void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in, std::string label) {
+    if (label.empty()) label = effect->key();
+    if (label.empty()) label = "effect_" + std::to_string(slots_.size());
+    const std::string base = label;
+    for (int n = 2; std::find(labels_.begin(), labels_.end(), label) != labels_.end(); ++n)
+        label = base + "_" + std::to_string(n);
+    labels_.push_back(std::move(label));
     slots_.push_back({std::move(effect), std::move(active_in), true});
     active_.push_back(slots_.back().effect.get());
+    active_slot_.push_back(slots_.size() - 1);
+    if (work_accounting()) work_.push_back(0), pending_work_.push_back(0);
 }
 
-void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+void System::enable_work_accounting() {
+    work_.assign(slots_.size(), 0.0);
+    pending_work_.assign(slots_.size(), 0.0);
+    effect_force_ = Eigen::VectorXd::Zero(layout_.size());
+}
+
+void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
     const Index n = layout_.nodes;
     dy.head(2 * n) = y.segment(2 * n, 2 * n);
     dy.tail(layout_.size() - 2 * n).setZero();
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_of(dy, layout_);
-    for (Effect* e : active_) e->add_forces(s, f);
+    if (work_accounting() && work_weight != 0) {
+        // Each effect alone into a scratch vector, to know its power at this stage.
+        const auto velocity = y.segment(2 * n, 2 * n);
+        for (std::size_t k = 0; k < active_.size(); ++k) {
+            effect_force_.tail(layout_.size() - 2 * n).setZero();
+            ForceView fe = forces_of(effect_force_, layout_);
+            active_[k]->add_forces(s, fe);
+            const auto force = effect_force_.segment(2 * n, 2 * n);
+            pending_work_[active_slot_[k]] += work_weight * force.dot(velocity);
+            dy.tail(layout_.size() - 2 * n) += effect_force_.tail(layout_.size() - 2 * n);
+        }
+    } else {
+        for (Effect* e : active_) e->add_forces(s, f);
+    }
     f.fx *= inverse_mass_;
     f.fz *= inverse_mass_;
     ++evaluations_;
 }
 
 void System::begin_step() {
+    std::fill(pending_work_.begin(), pending_work_.end(), 0.0);
     const StageView s = state();
     for (Effect* e : active_) e->begin_step(s);
 }
@@ -41,6 +69,7 @@ void System::accept(double t, const Eigen::VectorXd& y) {
     y_ = y;
     t_ = t;
     ++steps_;
+    for (std::size_t k = 0; k < work_.size(); ++k) work_[k] += pending_work_[k];
     const StageView s = state();
     for (Effect* e : active_) e->commit(s, dt);
 }
@@ -53,10 +82,12 @@ double System::next_event_time() const {
 
 void System::begin_stage(const StageInfo& stage) {
     active_.clear();
-    for (Slot& slot : slots_) {
+    active_slot_.clear();
+    for (std::size_t k = 0; k < slots_.size(); ++k) {
+        Slot& slot = slots_[k];
         slot.active = slot.active_in.empty() ||
                       std::find(slot.active_in.begin(), slot.active_in.end(), stage.name) != slot.active_in.end();
-        if (slot.active) active_.push_back(slot.effect.get());
+        if (slot.active) active_.push_back(slot.effect.get()), active_slot_.push_back(k);
     }
     const StageView s = state();
     for (Effect* e : active_) e->begin_stage(stage, s);

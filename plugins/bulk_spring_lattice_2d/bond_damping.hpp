@@ -22,6 +22,7 @@ public:
     BondDamping(const LatticeGrid& grid, double eta, Mode mode);
 
     std::string describe() const override;
+    std::string key() const override { return "bond_damping"; }
     void add_forces(const StageView& s, ForceView& f) override;
 
 private:

@@ -43,4 +43,17 @@ void LatticeSprings::add_family(const BondFamily& b, const LatticeGrid::ConstVie
     }
 }
 
+double LatticeSprings::potential_energy(const StageView& s) const {
+    const auto x = grid_.view(s.x), z = grid_.view(s.z);
+    double energy = 0;
+    for (const BondFamily& b : families_) {
+        const double k = stiffness_ * b.relative_stiffness, l = b.rest_length;
+        const auto dx = bond_difference(x, b), dz = bond_difference(z, b);
+        // 1/2 k stretch^2, with the stretch of the same law the forces use.
+        if (law_ == Law::geometric) energy += 0.5 * k * ((dx.square() + dz.square()).sqrt() - l).square().sum();
+        else energy += 0.5 * k * (dx * b.ex + dz * b.ez - l).square().sum();
+    }
+    return energy;
+}
+
 }  // namespace frictionlab

@@ -25,7 +25,9 @@ public:
     LatticeSprings(const LatticeGrid& grid, double bond_stiffness, Law law);
 
     std::string describe() const override;
+    std::string key() const override { return "lattice_springs"; }
     void add_forces(const StageView& s, ForceView& f) override;
+    double potential_energy(const StageView& s) const override;
 
 private:
     void add_family(const BondFamily& b, const LatticeGrid::ConstView& x, const LatticeGrid::ConstView& z,

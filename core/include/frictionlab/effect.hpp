@@ -20,6 +20,9 @@ public:
 
     /// Short name for the pipeline log, e.g. "bulk springs (41x9, geometric)".
     virtual std::string describe() const = 0;
+    /// A snake_case name for output columns (e.g. "lattice_springs"). Effects a scene names as
+    /// components need none: they are labelled by their scene `type`.
+    virtual std::string key() const { return {}; }
 
     /// Adds this effect's forces at one state (whole arrays; no allocation, no I/O).
     virtual void add_forces(const StageView& s, ForceView& f) = 0;
@@ -32,6 +35,10 @@ public:
     virtual void commit(const StageView& /*end*/, double /*dt*/) {}
     /// Simulated time of the next scheduled discrete event, for adaptive steppers.
     virtual double next_event_time() const { return std::numeric_limits<double>::infinity(); }
+    /// Elastic energy this effect stores at a state (J): springs, contact, junctions, a loading
+    /// spring. Energy bookkeeping compares it with the work the effect does (System work accounting);
+    /// effects that store none (dashpots, prescribed forces) keep the default.
+    virtual double potential_energy(const StageView&) const { return 0; }
     /// Sets initial values of this effect's aux variables (if it allocated any).
     virtual void initialise_aux(Eigen::Ref<Eigen::ArrayXd> /*aux*/) const {}
 };

@@ -17,8 +17,11 @@ public:
     System(const Body& body, Index aux_size);
 
     /// Adds an effect to the pipeline, active in the named stages only (empty: in every stage).
-    /// Effects are evaluated in the order added.
-    void add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in = {});
+    /// Effects are evaluated in the order added. `label` names it in outputs (default: its key(),
+    /// else "effect_<n>"); a label already taken gets a suffix "_2", "_3", ...
+    void add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in = {}, std::string label = {});
+    /// The output label of every effect, in the order of for_each_effect().
+    const std::vector<std::string>& labels() const { return labels_; }
 
     const Body& body() const { return body_; }
     const StateLayout& layout() const { return layout_; }
@@ -30,7 +33,10 @@ public:
     Eigen::VectorXd& initial_state() { return y_; }
 
     /// dy/dt at (t, y): [v | F/m | aux rates]. Pure in (t, y) given the frozen discrete state.
-    void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
+    /// `work_weight` is this evaluation's weight in the integrator's quadrature of the step (RK4:
+    /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
+    /// to its work with that weight, so the work is integrated to the integrator's own order.
+    void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
     void begin_step();
     /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);
@@ -49,6 +55,13 @@ public:
     void for_each_effect(F&& visit) const {
         for (const Slot& slot : slots_) visit(*slot.effect);
     }
+    /// Work accounting (energy bookkeeping) costs one extra pass over the forces per effect and
+    /// evaluation, so it is off unless an observer asks for it.
+    void enable_work_accounting();
+    bool work_accounting() const { return !work_.empty(); }
+    /// Work (J) each effect of the pipeline has done on the nodes since accounting began, in the
+    /// order of for_each_effect(); empty without accounting.
+    const std::vector<double>& work() const { return work_; }
     /// Number of derivative evaluations so far (for tests and benchmarks).
     long long evaluations() const { return evaluations_; }
 
@@ -62,8 +75,12 @@ private:
     StateLayout layout_;
     Eigen::ArrayXd inverse_mass_;
     std::vector<Slot> slots_;
+    std::vector<std::string> labels_;
     std::vector<Effect*> active_;  // the current stage's pipeline, evaluation order
     Eigen::VectorXd y_, scratch_, net_force_;
+    std::vector<double> work_, pending_work_;  // per slot; pending = this step's, until accepted
+    std::vector<std::size_t> active_slot_;     // slot index of each active effect
+    Eigen::VectorXd effect_force_;              // one effect's [fx | fz | aux rate], accounting only
     double t_ = 0;
     long long steps_ = 0, evaluations_ = 0;
 };

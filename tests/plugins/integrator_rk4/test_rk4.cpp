@@ -16,6 +16,7 @@ class Spring final : public Effect {
 public:
     explicit Spring(double k) : k_(k) {}
     std::string describe() const override { return "test spring"; }
+    double potential_energy(const StageView& s) const override { return 0.5 * k_ * s.x(0) * s.x(0); }
     void add_forces(const StageView& s, ForceView& f) override {
         f.fx(0) -= k_ * s.x(0);
         ++evaluations;
@@ -90,6 +91,44 @@ TEST(Rk4, ShortensTheLastStepToLandOnTheStageEnd) {
     EXPECT_DOUBLE_EQ(rk4.step(system, 4e-4), 4e-4);
     EXPECT_DOUBLE_EQ(system.time(), 4e-4);
     EXPECT_DOUBLE_EQ(rk4.step(system, 1.0), 1e-3);
+}
+
+/// Work-energy bookkeeping: the spring's work, integrated with RK4's own stage weights, equals the
+/// change of kinetic energy and minus the change of its potential energy, to RK4's 4th order.
+double energy_residual(double dt) {
+    spdlog::logger log("test");
+    const double k = 4.0, m = 1.0;
+    Body body = one_node(m);
+    System system(body, 0);
+    auto spring = std::make_unique<Spring>(k);
+    const Spring* probe = spring.get();
+    system.add_effect(std::move(spring));
+    system.enable_work_accounting();
+    system.initial_state()(0) = 1.0;
+    const double potential0 = probe->potential_energy(system.state());
+    Rk4 rk4({dt}, test_context(log));
+    while (1.3 - system.time() > 1e-12) rk4.step(system, 1.3 - system.time());
+    const double kinetic = 0.5 * m * system.y()(2) * system.y()(2);
+    const double work = system.work().at(0);
+    EXPECT_NEAR(work, kinetic, 1e-3);  // the work-energy theorem, to the step's accuracy
+    return std::abs(work + (probe->potential_energy(system.state()) - potential0));
+}
+
+TEST(Rk4, WorkAccountingClosesTheEnergyBalanceAtFourthOrder) {
+    const double coarse = energy_residual(1e-2), fine = energy_residual(5e-3);
+    EXPECT_LT(fine, 1e-8);
+    EXPECT_GT(coarse / fine, 12.0);  // 2^4 = 16 for a 4th-order quadrature
+}
+
+TEST(Rk4, WorkAccountingIsOffUnlessAsked) {
+    spdlog::logger log("test");
+    Body body = one_node(1.0);
+    System system(body, 0);
+    system.add_effect(std::make_unique<Spring>(1.0));
+    Rk4 rk4({1e-3}, test_context(log));
+    rk4.step(system, 1.0);
+    EXPECT_FALSE(system.work_accounting());
+    EXPECT_TRUE(system.work().empty());
 }
 
 }  // namespace
