@@ -1,0 +1,102 @@
+// The Li et al. (2020) model assembled from scenes: the at-rest state after settling (physics.md
+// C.2), determinism, and that a scene simulates only the effects it names.
+#include <cmath>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "scene_fixture.hpp"
+
+namespace frictionlab {
+namespace {
+
+using testing::SceneFixture;
+
+std::string scene(const std::string& name) { return std::string(MODEL_SCENES) + "/" + name; }
+
+/// After 50 000 settling steps under a uniform 400 N load the slider is at rest on the base, the
+/// normal profile is symmetric and carries F_N, and the friction profile is antisymmetric,
+/// resisting the Poisson expansion (Li2020 Fig. 5).
+class AtRest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        fixture_ = new SceneFixture(scene("settle_400N.yaml"));
+        fixture_->run_all_stages();
+        fixture_->sim().system().refresh();
+    }
+    static void TearDownTestSuite() { delete fixture_; }
+    static SceneFixture* fixture_;
+};
+SceneFixture* AtRest::fixture_ = nullptr;
+
+TEST_F(AtRest, NormalForcesCarryTheWholeLoadSymmetrically) {
+    const Eigen::ArrayXd& p = fixture_->field("normal_force");
+    const double total = 400.0, mean = total / p.size();
+    EXPECT_NEAR(p.sum(), total, 1e-6 * total);
+    EXPECT_LE((p - p.reverse()).abs().maxCoeff(), 1e-6 * mean);
+    // Weakly non-uniform, heaviest at the edges: physics.md A.3's rest-state solve has 121 junctions
+    // on an edge block against 104 on average (1.16, each count rounded to one junction).
+    EXPECT_NEAR(p(0) / mean, 121.0 / 104.0, 0.015);
+    EXPECT_GT(p.minCoeff() / mean, 0.95);
+    for (Index i = 0; i + 1 < p.size() / 4; ++i) EXPECT_GT(p(i), p(i + 1)) << "block " << i;
+}
+
+TEST_F(AtRest, FrictionIsAntisymmetricAndResistsThePoissonExpansion) {
+    const Eigen::ArrayXd& f = fixture_->field("friction_force");
+    const Index n = f.size();
+    EXPECT_LE(std::abs(f.sum()), 1e-6 * 400.0);
+    EXPECT_LE((f + f.reverse()).abs().maxCoeff(), 1e-6 * f.abs().maxCoeff());
+    for (Index i = 0; i < n / 2; ++i) EXPECT_GT(f(i), 0.0) << "block " << i << " of the trailing half";
+    EXPECT_NEAR(f(n / 2), 0.0, 1e-6 * f.abs().maxCoeff());  // mid-length
+    Index largest = 0;
+    f.abs().maxCoeff(&largest);
+    EXPECT_TRUE(largest == 0 || largest == n - 1) << "largest |f| at block " << largest;
+}
+
+TEST_F(AtRest, NoJunctionIsAboveThresholdAndNothingMoves) {
+    const StageView s = fixture_->sim().system().state();
+    EXPECT_LT((s.vx.square() + s.vz.square()).sqrt().maxCoeff(), 1e-6);
+    // Every junction still pinned, and about F_N / p of them in all (p = 94.2 mN).
+    const double pinned = fixture_->field("junctions_pinned").sum();
+    EXPECT_EQ(fixture_->field("junctions_sliding").sum(), 0.0);
+    EXPECT_EQ(fixture_->field("junctions_dislocated").sum(), 0.0);
+    const double p = M_PI * 1e-5 * 1e-5 * 3e8;
+    EXPECT_NEAR(pinned, 400.0 / p, 41.0);  // each block rounds P_b / p within one junction
+    // Starting a stage with friction events on runs the law's threshold check (B.18 step 4).
+    EXPECT_NO_THROW(fixture_->sim().system().begin_stage(StageInfo{"load", 1, s.t, 1.0, true}));
+}
+
+/// The same scene and seed give bit-identical states; another seed draws other lifetimes.
+TEST(Determinism, SameSeedSameBitsOtherSeedOtherHistory) {
+    const auto final_state = [](const std::vector<std::string>& overrides) {
+        SceneFixture f(scene("fast_loading.yaml"), overrides);
+        f.run_all_stages();
+        EXPECT_GT(f.field("junctions_sliding").sum() + f.field("junctions_dislocated").sum(), 0.0)
+            << "the scene must break junctions for this test to mean anything";
+        return Eigen::VectorXd(f.sim().system().y());
+    };
+    const Eigen::VectorXd a = final_state({}), b = final_state({});
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), sizeof(double) * a.size()));
+    const Eigen::VectorXd c = final_state({"seed=4"});
+    EXPECT_GT((a - c).cwiseAbs().maxCoeff(), 0.0);
+}
+
+/// A scene without friction and without damping assembles neither: the pipeline holds exactly the
+/// springs and the loaders it names, no junction quantity exists, and with no observer each RK4 step
+/// costs exactly its four force evaluations.
+TEST(OnlyWhatTheSceneNames, NoFrictionNoDampingMeansNoSuchWork) {
+    SceneFixture f(scene("bare_lattice.yaml"));
+    f.run_all_stages();
+    const auto pipeline = f.sim().system().pipeline();
+    ASSERT_EQ(pipeline.size(), 3u);
+    EXPECT_EQ(pipeline[0].rfind("lattice springs", 0), 0u) << pipeline[0];
+    EXPECT_EQ(pipeline[1].rfind("rigid base contact", 0), 0u) << pipeline[1];
+    EXPECT_EQ(pipeline[2].rfind("normal load", 0), 0u) << pipeline[2];
+    EXPECT_EQ(f.sim().quantities().find_field("junctions_pinned"), nullptr);
+    EXPECT_EQ(f.sim().quantities().find_field("friction_force"), nullptr);
+    EXPECT_EQ(f.sim().system().evaluations(), 4 * f.sim().system().step_index());
+    EXPECT_EQ(f.sim().system().step_index(), 1000);
+}
+
+}  // namespace
+}  // namespace frictionlab
