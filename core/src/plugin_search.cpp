@@ -13,21 +13,40 @@
 
 namespace frictionlab {
 
-std::optional<std::filesystem::path> shipped_plugin_directory(const std::filesystem::path& executable) {
+namespace {
+/// `subdir` of the prefix the executable is installed in (or built in: the trees mirror each other),
+/// if that directory exists.
+std::optional<std::filesystem::path> under_prefix(const std::filesystem::path& executable,
+                                                  const std::filesystem::path& subdir) {
     // Up from the executable's directory by as many levels as BINDIR has, to the prefix.
     auto prefix = executable.parent_path();
     for (const auto& part : std::filesystem::path(FRICTIONLAB_BINDIR))
         if (!part.empty() && part != ".") prefix = prefix.parent_path();
-    auto dir = (prefix / FRICTIONLAB_PLUGIN_SUBDIR).lexically_normal();
+    auto dir = (prefix / subdir).lexically_normal();
     if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) return std::nullopt;
     return dir;
 }
 
-std::optional<std::filesystem::path> shipped_plugin_directory() {
+std::optional<std::filesystem::path> running_executable() {
     std::error_code ec;
     const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
     if (ec) return std::nullopt;
-    return shipped_plugin_directory(exe);
+    return exe;
+}
+}  // namespace
+
+std::optional<std::filesystem::path> shipped_plugin_directory(const std::filesystem::path& executable) {
+    return under_prefix(executable, FRICTIONLAB_PLUGIN_SUBDIR);
+}
+
+std::optional<std::filesystem::path> shipped_plugin_directory() {
+    const auto exe = running_executable();
+    return exe ? shipped_plugin_directory(*exe) : std::nullopt;
+}
+
+std::optional<std::filesystem::path> shipped_data_directory() {
+    const auto exe = running_executable();
+    return exe ? under_prefix(*exe, "share/frictionlab") : std::nullopt;
 }
 
 std::vector<std::filesystem::path> plugin_directories(const std::vector<std::filesystem::path>& command_line,

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -53,14 +54,17 @@ struct ObserverSlot {
     double every = 0;
     long long every_steps = 0;
     double next_time = 0;
+    long long last_step = -1;  // an observer sees each step at most once (stage ends, run end)
 
     bool due(double t, long long step, double tolerance) const {
         if (every_steps > 0) return step % every_steps == 0;
         return t >= next_time - tolerance;
     }
-    void advance(double t) {
+    /// Schedules the next observation after one at t; `tolerance` must be the one due() used, or an
+    /// observation taken early by up to it would be repeated one step later.
+    void advance(double t, double tolerance) {
         if (every > 0)
-            while (next_time <= t + 1e-12 * every) next_time += every;
+            while (next_time <= t + tolerance) next_time += every;
     }
 };
 
@@ -169,6 +173,9 @@ public:
         for (const auto& o : scene.observers)
             observers_.push_back({registry.create<Observer>(o.type, o.values, sim_.context(o.path)), o.path, o.every,
                                   o.every_steps, 0});
+        if (std::any_of(observers_.begin(), observers_.end(),
+                        [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
+            sim_.system().enable_work_accounting();
     }
 
     RunSummary execute() {
@@ -208,10 +215,11 @@ private:
         const double tolerance = 0.5 * sim_.integrator().nominal_dt();
         bool refreshed = false;
         for (auto& o : observers_) {
-            if (!all && !o.due(sys.time(), sys.step_index(), tolerance)) continue;
+            if (o.last_step == sys.step_index() || (!all && !o.due(sys.time(), sys.step_index(), tolerance))) continue;
             if (!refreshed) sys.refresh(), refreshed = true;
             o.observer->observe(view(stage));
-            o.advance(sys.time());
+            o.advance(sys.time(), tolerance);
+            o.last_step = sys.step_index();
         }
     }
 

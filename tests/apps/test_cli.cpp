@@ -89,6 +89,9 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     const std::string curve = read(dir_ / "tiny_out" / "loading_curve.csv");
     EXPECT_NE(curve.find("# frictionlab"), std::string::npos);
     EXPECT_NE(curve.find("driving_force"), std::string::npos);
+    // every: 2e-5 s over 3e-4 s at dt = 2e-7: t = 0, 2e-5, ..., 3e-4, each observed exactly once.
+    const auto rows = std::count(curve.begin(), curve.end(), '\n') - 3;  // two comment lines, one header
+    EXPECT_EQ(rows, 16);
 
     auto again = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
     EXPECT_EQ(again.code, 2);

@@ -42,6 +42,10 @@ public:
     virtual void observe(const RunView&) = 0;
     /// Called once at the end, also when the run fails, so outputs stay valid.
     virtual void end(const RunView&) {}
+    /// Whether this observer reads System::work(): the run then switches work accounting on before
+    /// the first step (it costs a pass per effect and evaluation, so only an observer that needs it
+    /// may ask; the view an observer gets is read-only, so it cannot switch it on itself).
+    virtual bool needs_work_accounting() const { return false; }
 };
 
 /// Advances the system by one accepted step, obeying the freeze-and-commit rule.
