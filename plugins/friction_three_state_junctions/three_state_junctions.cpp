@@ -154,6 +154,20 @@ void ThreeStateJunctions::add_forces(const StageView& s, ForceView& f) {
     }
 }
 
+double ThreeStateJunctions::potential_energy(const StageView& s) const {
+    // Junction by junction (the aggregates give sum f_j, not sum f_j^2): observer cadence only.
+    double force_squared = 0;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const BlockJunctions& b = blocks_[i];
+        const double x = s.x[nodes_[i]];
+        for (Index j = 0; j < b.size(); ++j) {
+            const double f = b.junction_force(j, x, x_start_[i]);
+            force_squared += f * f;
+        }
+    }
+    return force_squared / (2 * k_s_);
+}
+
 void ThreeStateJunctions::begin_stage(const StageInfo& stage, const StageView& s) {
     const bool had_events = events_;
     events_ = stage.friction_events;

@@ -64,6 +64,17 @@ namespace frictionlab {
 ///   |f|, or a random one when none is pinned; "non_pinned_first" takes a random sliding or dislocated
 ///   junction, or a random pinned one when there is none;
 /// - lifetimes are drawn truncated at 0, not at dt (LifetimeSampler explains why).
+///
+/// Stored energy (potential_energy, for energy bookkeeping only): every junction's current force
+/// counts as the load of an elastic spring of stiffness k_s, E = sum_j f_j^2 / (2 k_s). Within a step
+/// a pinned junction, and a sliding or dislocated one off its bound (relaxing), has df_j/dx = k_s,
+/// so its force on the block is exactly -dE_j/dx: conservative. At its bound (mu_d p, or cap + f^n)
+/// f_j is constant, E_j does not change and all its work is dissipated. At commits forces jump
+/// without work, and the jump of E is dissipation by definition (D = -W - dE): breaking (C1,
+/// |f| > mu_s p to mu_d p), the angle decay, re-pinning unloaded (B.13, C6) and removing a loaded
+/// junction release energy; entering the dislocated state (C3: mu_d p to f^d(phi0) > mu_d p) stores
+/// energy nothing paid for, the model's own, so the friction dissipation is not monotone at C3.
+/// New junctions enter unloaded (f0 = 0) and store nothing.
 class ThreeStateJunctions final : public FrictionLaw {
 public:
     struct Params {
@@ -99,6 +110,7 @@ public:
     void begin_step(const StageView&) override;
     void commit(const StageView& end, double dt) override;
     double next_event_time() const override { return next_event_; }
+    double potential_energy(const StageView& s) const override;
 
     Index blocks() const { return static_cast<Index>(blocks_.size()); }
     const BlockJunctions& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }

@@ -102,4 +102,11 @@ void DrivingSpring::add_forces(const StageView& s, ForceView& f) {
     for (const Attachment& a : attachment_) f.fx(a.node) += a.weight * force_;
 }
 
+double DrivingSpring::potential_energy(const StageView& s) const {
+    if (!started_) return 0;  // not yet in the pipeline: no spring to store anything
+    // The stretch add_forces() turns into F_S = K_S * stretch, without publishing it.
+    const double stretch = params_.velocity * (s.t - t0_) - (driving_point_x(s.x) - x_h0_);
+    return 0.5 * params_.stiffness * stretch * stretch;
+}
+
 }  // namespace frictionlab

@@ -16,6 +16,10 @@ namespace frictionlab {
 /// with "interpolated" it lies between the two nearest nodes, x_h is their linear interpolation and
 /// F_S is shared with the same weights (so the work F_S dx_h is what the nodes receive).
 ///
+/// Stored energy: the loading spring's own, E = F_S^2 / (2 K_S) (0 before the loader's first
+/// stage). Its far end is moved by the driver, so the energy the driver puts in is the work on the
+/// nodes plus E's change: W + dE = int F_S V dt.
+///
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class DrivingSpring final : public Loader {
 public:
@@ -34,6 +38,7 @@ public:
     std::string describe() const override;
     void add_forces(const StageView& s, ForceView& f) override;
     void begin_stage(const StageInfo& stage, const StageView& s) override;
+    double potential_energy(const StageView& s) const override;
 
     struct Attachment {
         Index node;

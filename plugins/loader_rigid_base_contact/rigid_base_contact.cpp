@@ -54,4 +54,13 @@ void RigidBaseContact::add_forces(const StageView& s, ForceView& f) {
 
 void RigidBaseContact::commit(const StageView& end, double) { update_normal_force(end); }
 
+double RigidBaseContact::potential_energy(const StageView& s) const {
+    double penetration_squared = 0;
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const double d = std::max(0.0, z0_(k) - s.z(nodes_[k]));
+        penetration_squared += d * d;
+    }
+    return 0.5 * stiffness_ * penetration_squared;
+}
+
 }  // namespace frictionlab

@@ -15,6 +15,9 @@ namespace frictionlab {
 /// the end-of-step state in commit(), where the friction law (evaluated after the loaders) reads
 /// it to judge its own transitions.
 ///
+/// Stored energy: E = 1/2 K_b sum_i max(0, z0_i - z_i)^2, so P_b = -dE/dz_i; the base is rigid and
+/// does no work, so whatever the contact does to the nodes is E's change (up to time integration).
+///
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class RigidBaseContact final : public Loader {
 public:
@@ -30,6 +33,7 @@ public:
     std::string describe() const override;
     void add_forces(const StageView& s, ForceView& f) override;
     void commit(const StageView& end, double dt) override;
+    double potential_energy(const StageView& s) const override;
 
     double contact_stiffness() const { return stiffness_; }
 
