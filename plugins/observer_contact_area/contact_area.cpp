@@ -1,0 +1,137 @@
+#include "contact_area.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+const std::vector<std::string> block_columns{
+    "time", "step", "stage", "pinned", "sliding", "dislocated", "junctions", "pinned_reference", "normalised_pinned",
+    "pinned_fraction", "sliding_fraction", "dislocated_fraction", "slip", "slip_since_loading", "velocity",
+    "friction_force", "normal_force", "bond_force_left", "bond_force_right"};
+
+double ratio(double a, double b) { return b > 0 ? a / b : nan; }
+
+/// A published field over the interface, or null (with a warning) if absent or over other nodes.
+const Eigen::ArrayXd* interface_field(const RunView& view, std::string_view name, Index blocks) {
+    const Quantities::Field* f = view.quantities.find_field(name);
+    if (f && f->node_set == "interface" && f->values.size() == blocks) return &f->values;
+    view.log.warn("contact_area: no field '{}' over the interface; its column is NaN", name);
+    return nullptr;
+}
+
+}  // namespace
+
+ParamSpec<ContactArea::Params> ContactArea::spec() {
+    ParamSpec<Params> s("Real contact of the interface and the local dynamics of chosen blocks (Li et al. 2020 §3.3, "
+                        "Fig. 9, Eq. 17): normalised pinned count, junction fractions, slip, velocity, friction, "
+                        "normal and neighbour bond forces per block; junction totals of the whole interface.");
+    s.add("blocks", &Params::blocks,
+          "Interface blocks to follow, 0-based from the trailing edge (the paper's block 6 is 5).");
+    s.add("prefix", &Params::prefix,
+          "File names: <prefix>.csv for the whole interface, <prefix>_block_<i>.csv per block, in the output "
+          "directory.");
+    s.add("loading_stage", &Params::loading_stage,
+          "The slip_since_loading column counts from the first observation in the stage of this name.");
+    s.rule("blocks", [](const Params& p) -> std::string {
+        for (double b : p.blocks)
+            if (!(b >= 0) || b != std::floor(b)) return fmt::format("block indices are whole numbers >= 0, not {}", b);
+        return "";
+    });
+    s.rule("prefix", [](const Params& p) -> std::string {
+        if (p.prefix.empty() || p.prefix.find_first_of("/\\") != std::string::npos)
+            return "prefix must be a plain, non-empty file name";
+        return "";
+    });
+    return s;
+}
+
+ContactArea::ContactArea(const Params& p, const Context&) : params_(p) {}
+
+double ContactArea::bond_force_x(double k, double r0, double xi, double zi, double xj, double zj) {
+    const double dx = xj - xi, dz = zj - zi;
+    const double r = std::hypot(dx, dz);
+    return k * (r - r0) * dx / r;
+}
+
+ContactArea::Bond ContactArea::bond_between(const Body& body, Index node, Index neighbour) const {
+    for (const auto& [a, b] : body.bonds)
+        if ((a == node && b == neighbour) || (a == neighbour && b == node))
+            return {neighbour, std::hypot(body.x0(neighbour) - body.x0(node), body.z0(neighbour) - body.z0(node))};
+    return {};
+}
+
+void ContactArea::begin(const RunView& view) {
+    const Body& body = view.body;
+    interface_ = body.nodes("interface");
+    const auto n = static_cast<Index>(interface_.size());
+    counts_ = JunctionCounts::require(view.quantities, n, "contact_area");
+    friction_ = interface_field(view, "friction_force", n);
+    normal_ = interface_field(view, "normal_force", n);
+    if (const auto* s = view.quantities.find_scalar("junction_area")) junction_area_ = &s->value;
+    stiffness_ = body.bond_stiffness;
+    if (stiffness_ <= 0) view.log.warn("contact_area: the bulk model states no bond stiffness; bond forces are NaN");
+
+    for (double requested : params_.blocks) {
+        const auto i = static_cast<Index>(requested);
+        if (i >= n)
+            throw RunError(fmt::format("contact_area: block {} requested, but the interface has {} blocks (0 to {})", i,
+                                       n, n - 1));
+        Block b;
+        b.index = i;
+        b.node = interface_[i];
+        if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
+        if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
+        b.table = std::make_unique<CsvTable>(view.output_directory / fmt::format("{}_block_{}.csv", params_.prefix, i),
+                                             block_columns, view.info);
+        blocks_.push_back(std::move(b));
+    }
+    std::vector<std::string> columns{"time",      "step",    "stage",      "junctions",
+                                     "pinned",    "sliding", "dislocated", "pinned_fraction"};
+    if (junction_area_) columns.push_back("contact_area");
+    interface_table_ = std::make_unique<CsvTable>(view.output_directory / (params_.prefix + ".csv"), columns, view.info);
+    row_.reserve(block_columns.size());
+}
+
+double ContactArea::bond_force(const RunView& view, const Block& b, const Bond& bond) const {
+    if (bond.neighbour < 0 || stiffness_ <= 0) return nan;
+    const StageView& s = view.state;
+    return bond_force_x(stiffness_, bond.rest_length, s.x(b.node), s.z(b.node), s.x(bond.neighbour),
+                        s.z(bond.neighbour));
+}
+
+void ContactArea::observe(const RunView& view) {
+    // The run observes again at stage ends and at the end; the same state makes no second row.
+    if (!counts_ || view.step == last_step_) return;
+    last_step_ = view.step;
+    const Eigen::ArrayXd &pinned = *counts_->pinned, &sliding = *counts_->sliding, &dislocated = *counts_->dislocated;
+    const StageView& s = view.state;
+    const double t = s.t, step = static_cast<double>(view.step), stage = view.stage.index;
+
+    for (Block& b : blocks_) {
+        const Index i = b.index;
+        const double np = pinned(i), ns = sliding(i), nd = dislocated(i), total = np + ns + nd;
+        if (total > 0 && ns + nd == 0) b.pinned_reference = np;
+        const double u = s.x(b.node) - view.body.x0(b.node);
+        if (std::isnan(b.x_at_loading) && view.stage.name == params_.loading_stage) b.x_at_loading = s.x(b.node);
+        row_.assign({t, step, stage, np, ns, nd, total, b.pinned_reference, ratio(np, b.pinned_reference),
+                     ratio(np, total), ratio(ns, total), ratio(nd, total), u, s.x(b.node) - b.x_at_loading,
+                     s.vx(b.node), friction_ ? (*friction_)(i) : nan, normal_ ? (*normal_)(i) : nan,
+                     bond_force(view, b, b.left), bond_force(view, b, b.right)});
+        b.table->row(row_);
+    }
+
+    const double np = pinned.sum(), ns = sliding.sum(), nd = dislocated.sum(), total = np + ns + nd;
+    row_.assign({t, step, stage, total, np, ns, nd, ratio(np, total)});
+    if (junction_area_) row_.push_back(total * *junction_area_);
+    interface_table_->row(row_);
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,9 @@
+#include "contact_area.hpp"
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+
+namespace {
+void register_types(frictionlab::Registry& registry) { registry.add<frictionlab::ContactArea>(); }
+}  // namespace
+
+FRICTIONLAB_PLUGIN("observer_contact_area", "0.1.0", register_types)

@@ -1,0 +1,43 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "frictionlab/csv_table.hpp"
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+namespace frictionlab {
+
+/// The whole interface against time, one row per observation and one column per interface block
+/// (ordered by x): the data of a space-time map, the way experiments show rupture fronts (Rubinstein
+/// et al. 2004; Ben-David et al. 2010). Writes
+///   interface_velocity.csv         v_x of each block (m/s)
+///   interface_slip.csv             x - x0 of each block (m)
+///   interface_pinned_fraction.csv  N_p / (N_p + N_s + N_d) of each block (NaN without junctions),
+///                                  when the friction law publishes junction counts
+///   interface_shear_ratio.csv      friction_force / normal_force of each block, when both exist
+/// Rows cost a pass over the interface at the observer's cadence; nothing in between.
+class InterfaceHistory final : public Observer {
+public:
+    struct Params {
+        std::string node_set = "interface";
+    };
+    static constexpr std::string_view type = "interface_history";
+    static ParamSpec<Params> spec();
+
+    InterfaceHistory(const Params& p, const Context&);
+    void begin(const RunView& view) override;
+    void observe(const RunView& view) override;
+
+private:
+    struct Table {
+        std::unique_ptr<CsvTable> csv;
+        std::function<double(const RunView&, Index block)> value;
+    };
+    Params params_;
+    std::vector<Index> nodes_;
+    std::vector<Table> tables_;
+    std::vector<double> row_;
+};
+
+}  // namespace frictionlab

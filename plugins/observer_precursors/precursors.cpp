@@ -1,0 +1,178 @@
+#include "precursors.hpp"
+
+#include <fstream>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+#include "frictionlab/json.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+std::string plain_file_name_problem(const std::string& name) {
+    if (name.empty()) return "must not be empty";
+    if (name.find_first_of("/\\") != std::string::npos) return "must be a plain file name, in the output directory";
+    return "";
+}
+
+/// YAML 1.2 reads a JSON number; NaN (unknown yet) is written as null.
+std::string yaml_number(double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null"; }
+
+const std::vector<std::string> event_columns{
+    "event", "finished", "t_start", "t_end", "duration", "driving_force", "normal_load", "force_ratio",
+    "nucleation_block", "nucleation_x", "extent", "extent_over_length", "min_ruptured_x", "max_ruptured_x",
+    "ruptured_blocks", "global", "front_speed", "max_slip"};
+const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay"};
+
+}  // namespace
+
+ParamSpec<Precursors::Params> Precursors::spec() {
+    ParamSpec<Params> s("Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
+                        "physics.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
+                        "as CSV tables and a summary with the global static coefficient.");
+    s.add("criterion", &Params::criterion,
+          "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
+          "pinned, or it has none; needs the junction-count fields) or 'slip' (it slipped more than slip_threshold "
+          "within quiet_time).")
+        .one_of({"pinned_fraction", "slip"});
+    s.add("ruptured_fraction", &Params::ruptured_fraction,
+          "Criterion pinned_fraction: fraction of a block's junctions that must be sliding or dislocated.")
+        .unit("1")
+        .at_least(0)
+        .less_than(1);
+    s.add("slip_threshold", &Params::slip_threshold, "Criterion slip: slip that makes a block ruptured.")
+        .unit("m")
+        .greater_than(0);
+    s.add("quiet_time", &Params::quiet_time,
+          "An event ends once this long has passed without a ruptured block; ruptures closer in time are one event.")
+        .unit("s")
+        .greater_than(0);
+    s.add("stage", &Params::stage,
+          "Observe only during stages of this name (empty: every stage), so settling is not taken for rupture.");
+    s.add("events_file", &Params::events_file, "CSV file of the events, one row each, in the output directory.");
+    s.add("fronts_file", &Params::fronts_file,
+          "CSV file of the fronts: per event and block, when the block first ruptured.");
+    s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
+    s.rule("events_file", [](const Params& p) { return plain_file_name_problem(p.events_file); });
+    s.rule("fronts_file", [](const Params& p) { return plain_file_name_problem(p.fronts_file); });
+    s.rule("summary_file", [](const Params& p) { return plain_file_name_problem(p.summary_file); });
+    return s;
+}
+
+Precursors::Precursors(const Params& p, const Context&) : params_(p) {}
+
+void Precursors::begin(const RunView& view) {
+    const Body& body = view.body;
+    interface_ = body.nodes("interface");
+    const auto n = static_cast<Index>(interface_.size());
+    if (n == 0) throw RunError("precursors: the node set 'interface' is empty");
+
+    if (params_.criterion == "pinned_fraction")
+        counts_ = JunctionCounts::require(view.quantities, n, "precursors (criterion 'pinned_fraction')");
+    else
+        slip_criterion_.emplace(params_.slip_threshold, params_.quiet_time);
+
+    RuptureEventDetector::Interface geometry;
+    geometry.x.resize(n);
+    for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0(interface_[i]) - body.x0(interface_[0]);
+    geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
+    geometry.spacing = body.spacing;
+    detector_.emplace(std::move(geometry), params_.quiet_time);
+
+    const Quantities& q = view.quantities;
+    if (const auto* s = q.find_scalar("driving_force")) driving_force_ = &s->value;
+    else view.log.warn("precursors: no effect publishes 'driving_force'; F_S of the events is NaN");
+    if (const auto* s = q.find_scalar("normal_load")) normal_load_ = &s->value;
+    else view.log.warn("precursors: no effect publishes 'normal_load'; F_N of the events is NaN");
+
+    slip_.resize(n);
+    ruptured_.resize(n);
+    events_ = std::make_unique<CsvTable>(view.output_directory / params_.events_file, event_columns, view.info);
+    fronts_ = std::make_unique<CsvTable>(view.output_directory / params_.fronts_file, front_columns, view.info);
+    row_.reserve(event_columns.size());
+    write_summary(view, false);
+}
+
+void Precursors::observe(const RunView& view) {
+    if (!detector_ || (!params_.stage.empty() && view.stage.name != params_.stage)) return;
+    for (std::size_t i = 0; i < interface_.size(); ++i) {
+        const Index node = interface_[i];
+        slip_(static_cast<Index>(i)) = view.state.x(node) - view.body.x0(node);
+    }
+    if (counts_)
+        ruptured_by_pinned_fraction(*counts_->pinned, *counts_->sliding, *counts_->dislocated,
+                                    params_.ruptured_fraction, ruptured_);
+    else
+        slip_criterion_->apply(view.state.t, slip_, ruptured_);
+    const double f_s = driving_force_ ? *driving_force_ : nan;
+    const double f_n = normal_load_ ? *normal_load_ : nan;
+    if (auto ended = detector_->observe(view.state.t, ruptured_, slip_, f_s, f_n)) {
+        write(*ended);
+        write_summary(view, false);
+    }
+}
+
+void Precursors::end(const RunView& view) {
+    if (!detector_) return;  // the run failed before its first stage: nothing to write
+    if (auto open = detector_->close()) write(*open);
+    write_summary(view, true);
+}
+
+void Precursors::write(const RuptureEvent& e) {
+    row_.assign({double(e.index), e.finished ? 1.0 : 0.0, e.t_start, e.t_end, e.duration(), e.driving_force,
+                 e.normal_load, e.force_ratio(), double(e.nucleation), e.nucleation_x, e.extent, e.extent_over_length,
+                 e.min_x, e.max_x, double(e.ruptured_blocks), e.global ? 1.0 : 0.0, e.front_speed, e.max_slip});
+    events_->row(row_);
+    const Eigen::ArrayXd& x = detector_->interface().x;
+    for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
+        const double t = e.first_rupture[i];
+        if (std::isnan(t)) continue;
+        const double xi = x(static_cast<Index>(i));
+        fronts_->row({double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start});
+    }
+}
+
+std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& info, bool run_ended) {
+    std::string out;
+    auto line = [&](std::string_view key, const std::string& value) { out += fmt::format("{}: {}\n", key, value); };
+    out += "# Rupture events (physics.md B.19, B.20). Numbers in SI units; null: not (yet) observed.\n";
+    line("run_ended", run_ended ? "true" : "false");
+    line("events", std::to_string(s.events));
+    line("global_slip_seen", s.global_seen ? "true" : "false");
+    line("precursors_before_first_global_slip", std::to_string(s.precursors_before_global));
+    line("first_global_slip_time", yaml_number(s.global_time));
+    line("first_global_slip_driving_force", yaml_number(s.global_driving_force));
+    line("first_global_slip_normal_load", yaml_number(s.global_normal_load));
+    line("global_static_coefficient", yaml_number(s.global_seen ? s.global_static_coefficient() : nan));
+    line("peak_driving_force", yaml_number(s.peak_driving_force));
+    line("peak_driving_force_time", yaml_number(s.peak_time));
+    out += "run:\n";
+    out += fmt::format("  framework_version: {}\n", json_quote(info.framework_version));
+    out += fmt::format("  scene_file: {}\n", json_quote(info.scene_file.filename().string()));
+    out += fmt::format("  scene_hash: {}\n", json_quote(info.scene_hash));
+    out += fmt::format("  seed: {}\n", info.seed);
+    out += "  plugins:\n";
+    for (const auto& p : info.plugins)
+        out += fmt::format("    - {{name: {}, version: {}}}\n", json_quote(p.name), json_quote(p.version));
+    return out;
+}
+
+void Precursors::write_summary(const RunView& view, bool run_ended) const {
+    // A reader (or a run killed mid-write) never sees half a summary: write aside, then rename.
+    const auto file = view.output_directory / params_.summary_file;
+    const auto tmp = std::filesystem::path(file).concat(".tmp");
+    {
+        std::ofstream out(tmp, std::ios::trunc);
+        out << summary_text(detector_->summary(), view.info, run_ended);
+        out.flush();
+        if (!out) throw RunError("precursors: cannot write " + tmp.string());
+    }
+    std::filesystem::rename(tmp, file);
+}
+
+}  // namespace frictionlab

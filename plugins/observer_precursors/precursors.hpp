@@ -1,0 +1,83 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frictionlab/csv_table.hpp"
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+#include "frictionlab/junction_counts.hpp"
+#include "rupture_criterion.hpp"
+#include "rupture_event_detector.hpp"
+
+namespace frictionlab {
+
+/// Rupture events along the interface: the precursors of Li et al. (2020) Figs. 6-8 and the first
+/// global slip, detected as physics.md B.19 resolves the paper's undefined terms.
+/// Li, Zhao, Xiong & Liu, "A 2D model for frictional sliding", 2020, §3.1-3.2; cf. Rubinstein,
+/// Cohen & Fineberg, PRL 98, 226103 (2007), doi:10.1103/PhysRevLett.98.226103.
+///
+/// At each observation (cadence ≤ 10 µs, B.19) every interface block is judged ruptured or not:
+///
+///     pinned_fraction:  (N_s + N_d) > ruptured_fraction (N_p + N_s + N_d), or no junction at all
+///     slip:             u = x - x0 grew by more than slip_threshold within quiet_time
+///
+/// and RuptureEventDetector groups the ruptured blocks into events (start, end, nucleation block,
+/// extent l = min(L, x_max + l_s/2) with x_max the farthest ruptured block from the trailing edge,
+/// global when every block ruptured, mean front speed, largest slip). F_S and F_N are the published
+/// scalars driving_force and normal_load at the event's start (NaN if the scene has none).
+///
+/// Outputs, in the run's output directory (columns in share/docs/glossary.md):
+///
+///     precursors.csv             one row per event, written when the event ends; at the end of
+///                                the run an open event is written with finished = 0
+///     precursor_fronts.csv       per event and ruptured block: when it first ruptured
+///     precursors_summary.yaml    precursors before the first global slip, the global static
+///                                coefficient F_S/F_N at its start (B.20), the peak F_S, the number
+///                                of events, run metadata; rewritten atomically after each event
+///
+/// Only observations during stages named `stage` count (empty: all), so the settling ramp, when
+/// junctions are still being created, is not taken for a rupture.
+class Precursors final : public Observer {
+public:
+    struct Params {
+        std::string criterion = "pinned_fraction";
+        double ruptured_fraction = 0.5;
+        double slip_threshold = 0.5e-6;
+        double quiet_time = 2e-3;
+        std::string stage = "load";
+        std::string events_file = "precursors.csv";
+        std::string fronts_file = "precursor_fronts.csv";
+        std::string summary_file = "precursors_summary.yaml";
+    };
+    static constexpr std::string_view type = "precursors";
+    static ParamSpec<Params> spec();
+
+    Precursors(const Params& p, const Context&);
+    void begin(const RunView& view) override;
+    void observe(const RunView& view) override;
+    void end(const RunView& view) override;
+
+    /// The summary file's text: what the detector found so far and the run's record.
+    static std::string summary_text(const RuptureSummary& s, const RunInfo& info, bool run_ended);
+
+private:
+    void write(const RuptureEvent& e);
+    void write_summary(const RunView& view, bool run_ended) const;
+
+    Params params_;
+    std::optional<RuptureEventDetector> detector_;
+    std::optional<JunctionCounts> counts_;
+    std::optional<SlipRuptureCriterion> slip_criterion_;
+    std::vector<Index> interface_;
+    const double* driving_force_ = nullptr;
+    const double* normal_load_ = nullptr;
+    Eigen::ArrayXd slip_;
+    RuptureMask ruptured_;
+    std::unique_ptr<CsvTable> events_, fronts_;
+    std::vector<double> row_;
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,24 @@
+#include "rupture_criterion.hpp"
+
+namespace frictionlab {
+
+void ruptured_by_pinned_fraction(const Eigen::ArrayXd& pinned, const Eigen::ArrayXd& sliding,
+                                 const Eigen::ArrayXd& dislocated, double fraction, RuptureMask& out) {
+    const auto not_pinned = sliding + dislocated;
+    const auto total = pinned + not_pinned;
+    out = (total <= 0) || (not_pinned > fraction * total);
+}
+
+void SlipRuptureCriterion::apply(double t, const Eigen::ArrayXd& slip, RuptureMask& out) {
+    if (reference_.size() != slip.size()) {  // first observation: nothing has slipped yet
+        reference_ = slip;
+        since_ = Eigen::ArrayXd::Constant(slip.size(), t);
+    }
+    out = slip - reference_ > threshold_;
+    // Coefficient-wise, so reading and writing the same array in one expression is safe.
+    const auto rearm = out || (t - since_ >= window_);
+    reference_ = rearm.select(slip, reference_);
+    since_ = rearm.select(t, since_);
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,32 @@
+#pragma once
+// When is an interface block "ruptured" at an observation? The two criteria of physics.md B.19,
+// as pure functions of arrays, so they are tested without a run.
+#include <Eigen/Core>
+
+namespace frictionlab {
+
+/// One flag per interface block, in the order of the "interface" node set.
+using RuptureMask = Eigen::Array<bool, Eigen::Dynamic, 1>;
+
+/// B.19: a block is ruptured when more than `fraction` of its junctions are not pinned
+/// ((N_s + N_d) > fraction (N_p + N_s + N_d)), or when it has no junction at all.
+void ruptured_by_pinned_fraction(const Eigen::ArrayXd& pinned, const Eigen::ArrayXd& sliding,
+                                 const Eigen::ArrayXd& dislocated, double fraction, RuptureMask& out);
+
+/// B.19's alternative: a block is ruptured when it has slipped forward by more than `threshold`
+/// since its reference position. The reference is re-armed at the current position whenever the
+/// block is flagged, and also once it is `window` old, which forgets the slow creep of loading: a
+/// block is flagged for slip of more than `threshold` gained within at most `window` (the observer
+/// uses quiet_time). So a block that keeps slipping keeps being flagged and the event stays open,
+/// and one that stops lets it end. Slip is the x-displacement u = x - x0 of the block.
+class SlipRuptureCriterion {
+public:
+    SlipRuptureCriterion(double threshold, double window) : threshold_(threshold), window_(window) {}
+    void apply(double t, const Eigen::ArrayXd& slip, RuptureMask& out);
+
+private:
+    double threshold_, window_;
+    Eigen::ArrayXd reference_, since_;  // per block: slip and time at the last re-arm
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,108 @@
+#pragma once
+// Rupture events along the interface from a history of observations (physics.md B.19), independent
+// of a run so that it is tested on constructed histories.
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "frictionlab/state.hpp"
+#include "rupture_criterion.hpp"
+
+namespace frictionlab {
+
+/// One rupture event: a precursor (l < L) or a global slip (every block ruptured).
+struct RuptureEvent {
+    int index = 0;                 // 0-based, in order of start
+    bool finished = false;         // false: still open when the history ended (end of run)
+    double t_start = 0, t_end = 0; // first and last observation with a ruptured block, s
+    double driving_force = 0;      // F_S at the start (nucleation), N
+    double normal_load = 0;        // F_N at the start, N
+    int nucleation = 0;            // block first ruptured (index along the interface)
+    /// Per block: the time it first ruptured within the event, NaN if it did not.
+    std::vector<double> first_rupture;
+    double max_slip = 0;           // m, the largest slip of any block since the event started
+
+    // Measures, filled when the event is closed (RuptureEventDetector::measure).
+    int ruptured_blocks = 0;
+    bool global = false;           // every block ruptured during the event
+    double nucleation_x = 0;       // m, from the trailing edge
+    double min_x = 0, max_x = 0;   // m, nearest and farthest ruptured block from the trailing edge
+    double extent = 0;             // l = min(L, max_x + l_s/2), m
+    double extent_over_length = 0; // l/L
+    double front_speed = 0;        // m/s, see RuptureEventDetector; NaN if unresolved
+
+    double duration() const { return t_end - t_start; }
+    double force_ratio() const { return normal_load != 0 ? driving_force / normal_load : std::nan(""); }
+};
+
+/// What the history says so far (B.20).
+struct RuptureSummary {
+    int events = 0;                       // closed events
+    bool global_seen = false;
+    int precursors_before_global = 0;     // events that started before the first global one (all, if none yet)
+    double global_driving_force = std::nan("");  // F_S at the start of the first global event, N
+    double global_normal_load = std::nan("");    // F_N then, N
+    double global_time = std::nan("");           // its start, s
+    double peak_driving_force = std::nan("");    // largest F_S observed, N
+    double peak_time = std::nan("");             // when, s
+
+    double global_static_coefficient() const { return global_driving_force / global_normal_load; }
+};
+
+/// Groups ruptured blocks into events (B.19). An event starts at the first observation with a
+/// ruptured block and ends once `quiet_time` has passed since its last observation with one; a
+/// rupture sooner than that belongs to the same event, so two events are always more than
+/// `quiet_time` apart.
+///
+/// - Nucleation block: among the blocks ruptured at the first observation of the event, the one
+///   that slipped most since the previous observation (ties: the one nearest the trailing edge).
+/// - Extent: l = min(L, x_max + l_s/2), x_max the farthest block from the trailing edge ruptured
+///   during the event. Block 1 need not rupture (B.19: for θ > 0 precursors nucleate at blocks 2-3).
+/// - Slip of a block: its displacement now minus at the observation before the event started.
+/// - Front speed: the distance from the nucleation block to the farthest block ruptured in the event,
+///   divided by the delay between the event's start and that block's first rupture (of several at
+///   the same distance, the earliest). A mean speed, resolved to the observation interval; NaN when
+///   only the nucleation block ruptured or the front crossed within one observation.
+class RuptureEventDetector {
+public:
+    struct Interface {
+        Eigen::ArrayXd x;      // block positions from the trailing edge, increasing, m
+        double length = 0;     // L, m
+        double spacing = 0;    // l_s, m
+    };
+
+    RuptureEventDetector(Interface interface, double quiet_time);
+
+    /// Feeds one observation; `slip` is the blocks' x-displacement (any fixed origin). Returns the
+    /// event that this observation ends, if any. An observation no later than the previous one
+    /// (the run observes again at stage ends) is ignored.
+    std::optional<RuptureEvent> observe(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip,
+                                        double driving_force, double normal_load);
+    /// Closes the open event as unfinished (end of the history), if there is one.
+    std::optional<RuptureEvent> close();
+
+    const RuptureEvent* open_event() const { return open_ ? &*open_ : nullptr; }
+    const RuptureSummary& summary() const { return summary_; }
+    const Interface& interface() const { return interface_; }
+
+private:
+    void start(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip, double driving_force,
+               double normal_load);
+    RuptureEvent finish(bool finished);
+    void measure(RuptureEvent& e) const;
+
+    Interface interface_;
+    double quiet_time_;
+    std::optional<RuptureEvent> open_;
+    double last_t_ = -std::numeric_limits<double>::infinity();
+    double last_ruptured_t_ = 0;
+    Eigen::ArrayXd previous_slip_;  // at the previous observation
+    Eigen::ArrayXd base_slip_;      // at the observation before the open event started
+    int next_index_ = 0;
+    RuptureSummary summary_;
+};
+
+}  // namespace frictionlab

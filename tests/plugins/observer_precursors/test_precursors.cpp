@@ -1,0 +1,241 @@
+// The precursors observer on a hand-built run: junction counts and positions set by the test, the
+// files it writes read back (whole rows, unfinished events, summary), and its input errors.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <spdlog/logger.h>
+
+#include "frictionlab/errors.hpp"
+#include "frictionlab/system.hpp"
+#include "precursors.hpp"
+
+namespace frictionlab {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr Index n = 6;
+constexpr double ls = 2.5e-3, dt = 1e-5;
+
+/// A row of n interface blocks, l_s apart.
+Body chain() {
+    Body b;
+    b.x0 = Eigen::ArrayXd::LinSpaced(n, 0, (n - 1) * ls);
+    b.z0 = Eigen::ArrayXd::Zero(n);
+    b.mass = Eigen::ArrayXd::Ones(n);
+    b.length = (n - 1) * ls, b.height = 0, b.width = 5e-3, b.spacing = ls, b.bond_stiffness = 1e7;
+    for (Index i = 0; i < n; ++i) {
+        b.node_sets["all"].push_back(i);
+        b.node_sets["interface"].push_back(i);
+        if (i + 1 < n) b.bonds.push_back({i, i + 1});
+    }
+    return b;
+}
+
+struct CsvFile {
+    std::vector<std::string> columns;
+    std::vector<std::vector<double>> rows;
+    bool whole = true;  // every data line ends with a newline and has the header's number of fields
+};
+
+CsvFile read_csv(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    CsvFile csv;
+    csv.whole = text.empty() || text.back() == '\n';
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream fields(line);
+        std::string field;
+        std::vector<std::string> values;
+        while (std::getline(fields, field, ',')) values.push_back(field);
+        if (csv.columns.empty()) {
+            csv.columns = values;
+            continue;
+        }
+        csv.whole = csv.whole && values.size() == csv.columns.size();
+        std::vector<double> row;
+        for (const auto& v : values) row.push_back(std::stod(v));
+        csv.rows.push_back(row);
+    }
+    return csv;
+}
+
+double column(const CsvFile& csv, std::size_t row, const std::string& name) {
+    const auto it = std::find(csv.columns.begin(), csv.columns.end(), name);
+    EXPECT_NE(it, csv.columns.end()) << name;
+    return csv.rows.at(row).at(static_cast<std::size_t>(it - csv.columns.begin()));
+}
+
+std::string read_text(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class PrecursorsTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "observer_precursors" /
+               ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        info_.framework_version = "9.8.7-test";
+        info_.scene_file = "scene.yaml";
+        info_.scene_hash = "feedface";
+        info_.seed = 42;
+        info_.plugins = {{"observer_precursors", "0.1.0", "observer_precursors.so"}};
+        body_ = chain();
+        system_ = std::make_unique<System>(body_, 0);
+        driving_ = &quantities_.scalar("driving_force", "N", "test");
+        normal_ = &quantities_.scalar("normal_load", "N", "test");
+        *normal_ = 400;
+    }
+
+    void publish_junctions() {
+        pinned_ = &quantities_.field("junctions_pinned", "interface", n, "1", "test");
+        sliding_ = &quantities_.field("junctions_sliding", "interface", n, "1", "test");
+        dislocated_ = &quantities_.field("junctions_dislocated", "interface", n, "1", "test");
+        pinned_->setConstant(10);
+        sliding_->setZero();
+        dislocated_->setZero();
+    }
+
+    RunView view() {
+        return RunView{*system_, body_, system_->state(), quantities_, stage_, system_->step_index(), dir_, info_, log_};
+    }
+
+    /// Moves to time t with the given blocks sliding (all their junctions), and observes.
+    void observe_at(Precursors& observer, double t, std::initializer_list<Index> sliding) {
+        pinned_->setConstant(10);
+        sliding_->setZero();
+        for (Index b : sliding) (*pinned_)(b) = 0, (*sliding_)(b) = 10;
+        *driving_ = 80 * t;
+        Eigen::VectorXd y = system_->y();
+        for (Index b : sliding) y(b) += 1e-7;  // a little slip while ruptured
+        system_->accept(t, y);
+        observer.observe(view());
+    }
+
+    static Precursors make(Precursors::Params p = {}) {
+        static spdlog::logger quiet("test");
+        return Precursors(p, Context{quiet, 0, nullptr, nullptr, nullptr, "observers[0]"});
+    }
+
+    fs::path dir_;
+    RunInfo info_;
+    StageInfo stage_{"load", 1, 0.0, 1.0, true};
+    spdlog::logger log_{"test"};
+    Body body_;
+    Quantities quantities_;
+    std::unique_ptr<System> system_;
+    double *driving_ = nullptr, *normal_ = nullptr;
+    Eigen::ArrayXd *pinned_ = nullptr, *sliding_ = nullptr, *dislocated_ = nullptr;
+};
+
+TEST_F(PrecursorsTest, MissingJunctionCountsNameTheQuantityAndTheCriterion) {
+    Precursors observer = make();
+    try {
+        observer.begin(view());
+        FAIL() << "expected a RunError";
+    } catch (const RunError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("junctions_pinned"), std::string::npos) << message;
+        EXPECT_NE(message.find("pinned_fraction"), std::string::npos) << message;
+    }
+    Precursors::Params slip;
+    slip.criterion = "slip";
+    Precursors by_slip = make(slip);
+    EXPECT_NO_THROW(by_slip.begin(view())) << "the slip criterion needs no junction counts";
+}
+
+TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
+    publish_junctions();
+    Precursors observer = make();
+    observer.begin(view());
+    observe_at(observer, 1 * dt, {});
+    observe_at(observer, 2 * dt, {0, 1});
+    observe_at(observer, 3 * dt, {0, 1, 2});
+    observe_at(observer, 4 * dt, {2});
+    for (int k = 5; k <= 300; ++k) observe_at(observer, k * dt, {});  // 3 ms quiet: the event ends
+    observe_at(observer, 301 * dt, {3, 4});                          // a second event, open at the end
+
+    // As if the run were killed now: the finished event is on disk, whole.
+    CsvFile before_end = read_csv(dir_ / "precursors.csv");
+    EXPECT_TRUE(before_end.whole);
+    ASSERT_EQ(before_end.rows.size(), 1u);
+    EXPECT_EQ(column(before_end, 0, "finished"), 1);
+    EXPECT_NE(read_text(dir_ / "precursors_summary.yaml").find("events: 1\n"), std::string::npos);
+
+    observer.end(view());
+    CsvFile events = read_csv(dir_ / "precursors.csv");
+    EXPECT_TRUE(events.whole);
+    ASSERT_EQ(events.rows.size(), 2u);
+    EXPECT_DOUBLE_EQ(column(events, 0, "t_start"), 2 * dt);
+    EXPECT_DOUBLE_EQ(column(events, 0, "t_end"), 4 * dt);
+    EXPECT_DOUBLE_EQ(column(events, 0, "driving_force"), 80 * 2 * dt);
+    EXPECT_DOUBLE_EQ(column(events, 0, "force_ratio"), 80 * 2 * dt / 400);
+    EXPECT_DOUBLE_EQ(column(events, 0, "extent"), 2 * ls + ls / 2);
+    EXPECT_DOUBLE_EQ(column(events, 0, "ruptured_blocks"), 3);
+    EXPECT_DOUBLE_EQ(column(events, 0, "max_slip"), 2e-7) << "block 0 and 1 slipped 0.1 µm twice";
+    EXPECT_EQ(column(events, 1, "finished"), 0) << "open at the end of the run";
+    EXPECT_EQ(column(events, 1, "nucleation_block"), 3);
+    EXPECT_DOUBLE_EQ(column(events, 1, "extent"), 4 * ls + ls / 2);
+
+    CsvFile fronts = read_csv(dir_ / "precursor_fronts.csv");
+    EXPECT_TRUE(fronts.whole);
+    ASSERT_EQ(fronts.rows.size(), 5u);  // blocks 0, 1, 2 of event 0; 3, 4 of event 1
+    EXPECT_DOUBLE_EQ(column(fronts, 2, "block"), 2);
+    EXPECT_DOUBLE_EQ(column(fronts, 2, "time"), 3 * dt);
+    EXPECT_DOUBLE_EQ(column(fronts, 2, "delay"), dt);
+    EXPECT_DOUBLE_EQ(column(fronts, 2, "distance"), 2 * ls);
+
+    const std::string summary = read_text(dir_ / "precursors_summary.yaml");
+    for (const char* expected : {"run_ended: true\n", "events: 2\n", "global_slip_seen: false\n",
+                                 "precursors_before_first_global_slip: 2\n", "global_static_coefficient: null\n",
+                                 "scene_hash: \"feedface\"\n", "seed: 42\n", "name: \"observer_precursors\""})
+        EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
+    EXPECT_FALSE(fs::exists(dir_ / "precursors_summary.yaml.tmp"));
+}
+
+TEST_F(PrecursorsTest, AGlobalSlipGivesTheStaticCoefficient) {
+    publish_junctions();
+    Precursors observer = make();
+    observer.begin(view());
+    observe_at(observer, dt, {});
+    observe_at(observer, 2 * dt, {0, 1, 2, 3, 4, 5});
+    observer.end(view());
+    const std::string summary = read_text(dir_ / "precursors_summary.yaml");
+    EXPECT_NE(summary.find("global_slip_seen: true\n"), std::string::npos) << summary;
+    EXPECT_NE(summary.find(fmt::format("global_static_coefficient: {:.10g}\n", 80 * 2 * dt / 400)), std::string::npos)
+        << summary;
+}
+
+TEST_F(PrecursorsTest, OnlyTheNamedStageIsObserved) {
+    publish_junctions();
+    Precursors observer = make();
+    observer.begin(view());
+    stage_ = {"settle", 0, 0.0, 1.0, false};
+    pinned_->setZero();  // junctions not yet created: every block would count as ruptured
+    system_->accept(dt, system_->y());
+    observer.observe(view());
+    observer.end(view());
+    EXPECT_TRUE(read_csv(dir_ / "precursors.csv").rows.empty());
+}
+
+TEST_F(PrecursorsTest, EndWithoutBeginWritesNothing) {
+    Precursors observer = make();
+    observer.end(view());  // a run that failed before its first stage
+    EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+}  // namespace
+}  // namespace frictionlab

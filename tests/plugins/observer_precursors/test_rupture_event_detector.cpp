@@ -1,0 +1,219 @@
+// RuptureEventDetector on constructed histories (physics.md B.19, B.20): ruptures switched on and
+// off per block at chosen times, so every expected start, extent and front time is known exactly.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "rupture_event_detector.hpp"
+
+namespace frictionlab {
+namespace {
+
+constexpr Index blocks = 41;
+constexpr double ls = 2.5e-3, length = 0.1, dt = 1e-5, quiet = 2e-3;
+constexpr double normal_load = 400, loading_rate = 80;  // F_S = 80 N/s * t
+
+RuptureEventDetector::Interface interface41() {
+    RuptureEventDetector::Interface i;
+    i.x = Eigen::ArrayXd::LinSpaced(blocks, 0, length);
+    i.length = length;
+    i.spacing = ls;
+    return i;
+}
+
+double x(int block) { return block * ls; }
+
+/// A block ruptured over [on, off), slipping `slip` uniformly over that time.
+struct Rupture {
+    int block;
+    double on, off, slip = 1e-6;
+};
+
+/// Feeds observations every dt from t0 to t1 with the given ruptures; collects ended events.
+class History {
+public:
+    explicit History(std::vector<Rupture> ruptures) : ruptures_(std::move(ruptures)) {}
+
+    std::vector<RuptureEvent> run(RuptureEventDetector& d, double t0, double t1) {
+        std::vector<RuptureEvent> ended;
+        RuptureMask mask(blocks);
+        Eigen::ArrayXd slip(blocks);
+        for (long k = 0; t0 + k * dt <= t1 + 1e-12; ++k) {
+            const double t = t0 + k * dt;
+            mask.setConstant(false);
+            slip.setZero();
+            for (const Rupture& r : ruptures_) {
+                if (t >= r.on - 1e-12 && t < r.off - 1e-12) mask(r.block) = true;
+                slip(r.block) += r.slip * std::clamp((t - r.on) / (r.off - r.on), 0.0, 1.0);
+            }
+            if (auto e = d.observe(t, mask, slip, loading_rate * t, normal_load)) ended.push_back(*e);
+        }
+        return ended;
+    }
+
+private:
+    std::vector<Rupture> ruptures_;
+};
+
+/// Blocks first..last rupture one per observation from t0 on (a front from `first`), each for `hold`.
+std::vector<Rupture> front(int first, int last, double t0, double hold = 5e-4) {
+    std::vector<Rupture> r;
+    const int step = last >= first ? 1 : -1;
+    for (int b = first, k = 0;; b += step, ++k) {
+        r.push_back({b, t0 + k * dt, t0 + k * dt + hold});
+        if (b == last) break;
+    }
+    return r;
+}
+
+std::vector<Rupture> joined(std::vector<Rupture> a, const std::vector<Rupture>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+TEST(RuptureEventDetector, APrecursorFromTheTrailingEdge) {
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1;
+    auto events = History(front(0, 9, t0)).run(d, t0 - 1e-3, t0 + 0.01);
+    ASSERT_EQ(events.size(), 1u);
+    const RuptureEvent& e = events[0];
+    EXPECT_TRUE(e.finished);
+    EXPECT_EQ(e.index, 0);
+    EXPECT_NEAR(e.t_start, t0, 1e-12);
+    EXPECT_NEAR(e.t_end, t0 + 9 * dt + 5e-4 - dt, 1e-9) << "the last observation with a ruptured block";
+    EXPECT_EQ(e.nucleation, 0);
+    EXPECT_DOUBLE_EQ(e.driving_force, loading_rate * e.t_start);
+    EXPECT_DOUBLE_EQ(e.force_ratio(), loading_rate * e.t_start / normal_load);
+    EXPECT_EQ(e.ruptured_blocks, 10);
+    EXPECT_FALSE(e.global);
+    EXPECT_NEAR(e.extent_over_length, (x(9) + ls / 2) / length, 1e-12);
+    EXPECT_NEAR(e.min_x, 0, 1e-15);
+    for (int b = 0; b < blocks; ++b) {
+        if (b <= 9) EXPECT_NEAR(e.first_rupture[b], t0 + b * dt, 1e-12) << b;
+        else EXPECT_TRUE(std::isnan(e.first_rupture[b])) << b;
+    }
+    EXPECT_NEAR(e.front_speed, x(9) / (9 * dt), 1e-6) << "farthest distance over its delay";
+    EXPECT_NEAR(e.max_slip, 1e-6, 1e-15);
+    EXPECT_EQ(d.summary().events, 1);
+    EXPECT_FALSE(d.summary().global_seen);
+    EXPECT_EQ(d.summary().precursors_before_global, 1);
+}
+
+TEST(RuptureEventDetector, EventsFartherApartThanQuietTimeAreTwo) {
+    RuptureEventDetector d(interface41(), quiet);
+    const double a = 0.1, b = a + 9 * dt + 5e-4 + 3e-3;  // 3 ms with no ruptured block
+    auto events = History(joined(front(0, 9, a), front(0, 14, b))).run(d, a - 1e-3, b + 0.01);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_NEAR(events[0].t_start, a, 1e-12);
+    EXPECT_NEAR(events[1].t_start, b, 1e-12);
+    EXPECT_EQ(events[1].index, 1);
+    EXPECT_NEAR(events[0].extent_over_length, (x(9) + ls / 2) / length, 1e-12);
+    EXPECT_NEAR(events[1].extent_over_length, (x(14) + ls / 2) / length, 1e-12);
+}
+
+TEST(RuptureEventDetector, RupturesCloserThanQuietTimeAreOneEvent) {
+    RuptureEventDetector d(interface41(), quiet);
+    const double a = 0.1, b = a + 9 * dt + 5e-4 + 1e-3;  // 1 ms gap < quiet time
+    auto events = History(joined(front(0, 9, a), front(0, 14, b))).run(d, a - 1e-3, b + 0.01);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_NEAR(events[0].t_start, a, 1e-12);
+    EXPECT_NEAR(events[0].first_rupture[12], b + 12 * dt, 1e-12) << "blocks first ruptured in the later burst";
+    EXPECT_NEAR(events[0].extent_over_length, (x(14) + ls / 2) / length, 1e-12);
+}
+
+TEST(RuptureEventDetector, AGlobalSlipAfterTwoPrecursors) {
+    RuptureEventDetector d(interface41(), quiet);
+    const double a = 0.1, b = 0.2, c = 0.3;
+    auto events = History(joined(joined(front(0, 5, a), front(0, 20, b)), front(0, blocks - 1, c))).run(d, 0.09, 0.32);
+    ASSERT_EQ(events.size(), 3u);
+    EXPECT_FALSE(events[0].global);
+    EXPECT_FALSE(events[1].global);
+    EXPECT_TRUE(events[2].global);
+    EXPECT_DOUBLE_EQ(events[2].extent_over_length, 1.0) << "l = min(L, x_max + l_s/2) = L";
+    const RuptureSummary& s = d.summary();
+    EXPECT_EQ(s.events, 3);
+    EXPECT_TRUE(s.global_seen);
+    EXPECT_EQ(s.precursors_before_global, 2);
+    EXPECT_NEAR(s.global_time, c, 1e-12);
+    EXPECT_NEAR(s.global_static_coefficient(), loading_rate * c / normal_load, 1e-12);
+    EXPECT_NEAR(s.peak_driving_force, loading_rate * 0.32, 1e-9);
+}
+
+TEST(RuptureEventDetector, AnEventAfterTheFirstGlobalSlipIsNotCountedAsItsPrecursor) {
+    RuptureEventDetector d(interface41(), quiet);
+    auto events = History(joined(front(0, blocks - 1, 0.1), front(0, 3, 0.2))).run(d, 0.09, 0.21);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(d.summary().precursors_before_global, 0);
+    EXPECT_NEAR(d.summary().global_time, 0.1, 1e-12);
+}
+
+TEST(RuptureEventDetector, NucleationAwayFromTheTrailingEdgeStillGivesTheExtent) {
+    // θ > 0: the rupture starts at block 5 and spreads both ways, never reaching block 0 or 1.
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1;
+    auto events = History(joined(front(5, 15, t0), front(4, 2, t0 + dt))).run(d, t0 - 1e-3, t0 + 0.01);
+    ASSERT_EQ(events.size(), 1u);
+    const RuptureEvent& e = events[0];
+    EXPECT_EQ(e.nucleation, 5);
+    EXPECT_NEAR(e.nucleation_x, x(5), 1e-15);
+    EXPECT_NEAR(e.min_x, x(2), 1e-15);
+    EXPECT_NEAR(e.extent_over_length, (x(15) + ls / 2) / length, 1e-12);
+    EXPECT_EQ(e.ruptured_blocks, 14);
+    EXPECT_NEAR(e.front_speed, (x(15) - x(5)) / (10 * dt), 1e-6);
+}
+
+TEST(RuptureEventDetector, TheNucleationBlockIsTheOneThatSlippedMostAtTheStart) {
+    RuptureEventDetector d(interface41(), quiet);
+    RuptureMask mask = RuptureMask::Constant(blocks, false);
+    Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
+    d.observe(0.0, mask, slip, 0, normal_load);
+    mask(3) = mask(4) = mask(5) = true;
+    slip(3) = 1e-7, slip(4) = 3e-7, slip(5) = 2e-7;
+    d.observe(dt, mask, slip, 0, normal_load);
+    ASSERT_NE(d.open_event(), nullptr);
+    EXPECT_EQ(d.open_event()->nucleation, 4);
+}
+
+TEST(RuptureEventDetector, AnEventOpenAtTheEndIsClosedAsUnfinished) {
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1;
+    auto events = History(front(0, 7, t0, 1.0)).run(d, t0 - 1e-3, t0 + 1e-3);
+    EXPECT_TRUE(events.empty());
+    ASSERT_NE(d.open_event(), nullptr);
+    auto e = d.close();
+    ASSERT_TRUE(e);
+    EXPECT_FALSE(e->finished);
+    EXPECT_NEAR(e->extent_over_length, (x(7) + ls / 2) / length, 1e-12);
+    EXPECT_EQ(d.open_event(), nullptr);
+    EXPECT_FALSE(d.close()) << "nothing left to close";
+    EXPECT_EQ(d.summary().events, 1);
+}
+
+TEST(RuptureEventDetector, ARepeatedObservationIsIgnored) {
+    RuptureEventDetector d(interface41(), quiet);
+    RuptureMask none = RuptureMask::Constant(blocks, false), one = none;
+    one(2) = true;
+    const Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
+    d.observe(0.1, none, slip, 1, normal_load);
+    d.observe(0.1, one, slip, 1, normal_load);  // the same state observed again at a stage end
+    EXPECT_EQ(d.open_event(), nullptr);
+}
+
+TEST(RuptureEventDetector, SparseObservationsStillSeparateEvents) {
+    // Observations farther apart than quiet_time: a rupture at the next one is a new event.
+    RuptureEventDetector d(interface41(), quiet);
+    RuptureMask one = RuptureMask::Constant(blocks, false);
+    one(0) = true;
+    const Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
+    EXPECT_FALSE(d.observe(0.0, one, slip, 1, normal_load));
+    auto ended = d.observe(0.01, one, slip, 2, normal_load);
+    ASSERT_TRUE(ended);
+    EXPECT_EQ(ended->index, 0);
+    ASSERT_NE(d.open_event(), nullptr);
+    EXPECT_EQ(d.open_event()->index, 1);
+    EXPECT_DOUBLE_EQ(d.open_event()->driving_force, 2);
+}
+
+}  // namespace
+}  // namespace frictionlab
