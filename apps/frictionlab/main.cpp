@@ -1,7 +1,9 @@
 // frictionlab: run, check and document FrictionLab scenes.
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -96,6 +98,25 @@ std::vector<const fl::TypeInfo*> select_types(const fl::Registry& registry, cons
     throw fl::InputError("no " + kind_name + " type '" + type + "' (available: " + known + ")");
 }
 
+/// Replaces this process by the plotting script on Debian's Python (FRICTIONLAB_PYTHON overrides).
+int plot(const std::vector<std::string>& runs, const std::string& output) {
+    const auto share = fl::shipped_data_directory();
+    const auto script = share ? *share / "scripts" / "frictionlab_plot.py" : std::filesystem::path();
+    if (!share || !std::filesystem::exists(script))
+        throw fl::InputError("cannot find the plotting script share/frictionlab/scripts/frictionlab_plot.py next to "
+                             "this frictionlab");
+    const char* env = std::getenv("FRICTIONLAB_PYTHON");
+    const std::string python = env ? env : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    std::vector<std::string> args{python, script.string()};
+    args.insert(args.end(), runs.begin(), runs.end());
+    if (!output.empty()) args.insert(args.end(), {"--output", output});
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execvp(argv[0], argv.data());
+    throw fl::InputError("cannot run " + python + ": " + std::strerror(errno));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -136,6 +157,11 @@ int main(int argc, char** argv) {
     example->add_option("selector", selector, "KIND/TYPE, e.g. friction_law/three_state_junctions")->required();
     common.attach(*example);
 
+    std::vector<std::string> runs;
+    auto* plot_cmd = app.add_subcommand("plot", "Draw the figures of one or more run directories (PNG and SVG)");
+    plot_cmd->add_option("runs", runs, "Run output directories")->required()->check(CLI::ExistingDirectory);
+    plot_cmd->add_option("-o,--output", output, "Directory for the figure over all runs (default: first run's plots/)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -160,6 +186,7 @@ int main(int argc, char** argv) {
                       summary.steps / std::max(summary.wall_seconds, 1e-9), scene->output_directory.string());
             return fl::exit_code::ok;
         }
+        if (*plot_cmd) return plot(runs, output);
         fl::load_plugins(registry, common.directories({}));
         if (*list) {
             for (const auto* t : all_types(registry))
