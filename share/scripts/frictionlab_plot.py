@@ -7,7 +7,8 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
   loading_curve   F_S against time with the precursors marked, their l/L below (Li2020 Fig. 6)
   four_phase_<i>  pinned fraction, state fractions, slip, velocity and forces of interface block i
                   around the first event that reaches it (Li2020 Fig. 9; Ben-David et al. 2010)
-  spacetime       slip velocity and pinned fraction along the interface against time (rupture fronts)
+  spacetime       slip velocity and pinned fraction along the interface against time
+  fronts          rupture-front position against time since nucleation, one curve per event
   energy          the energy balance: input, stored, kinetic, dissipated, residual
 and, over all the runs given, precursor_lengths: l/L against F_S/F_N (Li2020 Figs. 7, 8).
 Each figure is a short function below: adapt them freely.
@@ -29,8 +30,12 @@ def table(run, name):
     path = os.path.join(run, name)
     if not os.path.exists(path):
         return None
-    data = np.genfromtxt(path, delimiter=",", names=True, comments="#", invalid_raise=False)
-    return data if data.size > 0 else None
+    with open(path) as f:  # the '#' lines above the header record version, scene hash, seed, plugins
+        lines = [line for line in f if not line.startswith("#")]
+    if len(lines) < 2:
+        return None
+    data = np.genfromtxt(lines, delimiter=",", names=True)
+    return np.atleast_1d(data)
 
 
 def save(fig, out_dir, name):
@@ -145,6 +150,26 @@ def spacetime(run, out_dir):
     save(fig, out_dir, "spacetime")
 
 
+def fronts(run, out_dir):
+    """Rupture-front position against time for every event (Rubinstein et al. 2004 style)."""
+    f, events = table(run, "precursor_fronts.csv"), table(run, "precursors.csv")
+    if f is None or events is None:
+        return
+    fig, ax = plt.subplots(figsize=(6, 4))
+    cmap = plt.get_cmap("viridis")
+    ids = np.unique(f["event"])
+    for k, event in enumerate(ids):
+        rows = f["event"] == event
+        order = np.argsort(f["delay"][rows])
+        is_global = events["global"][events["event"] == event].max() > 0.5
+        ax.plot(f["delay"][rows][order] * 1e3, f["x"][rows][order] * 1e3, ".-" if is_global else "o-", ms=3,
+                lw=0.8, color=cmap(k / max(len(ids) - 1, 1)), label=f"event {int(event)}" + (" (global)" if is_global else ""))
+    ax.set_xlabel("time since nucleation (ms)")
+    ax.set_ylabel("front position x (mm)")
+    ax.legend(frameon=False, fontsize=7)
+    save(fig, out_dir, "fronts")
+
+
 def energy(run, out_dir):
     e = table(run, "energy.csv")
     if e is None:
@@ -173,7 +198,7 @@ def main(argv):
             return 2
     for run in args.runs:
         out = os.path.join(run, "plots")
-        for figure in (loading_curve, four_phase, spacetime, energy):
+        for figure in (loading_curve, four_phase, spacetime, fronts, energy):
             figure(run, out)
     precursor_lengths(args.runs, args.output or os.path.join(args.runs[0], "plots"))
     return 0
