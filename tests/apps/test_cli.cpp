@@ -7,41 +7,18 @@
 
 #include <gtest/gtest.h>
 
+#include "cli.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int code;
-    std::string output;  // stdout and stderr together
-};
-
-Result frictionlab(const std::string& args, const fs::path& cwd) {
-    const std::string cmd = "cd '" + cwd.string() + "' && '" FRICTIONLAB_CLI "' " + args + " 2>&1";
-    Result r{-1, {}};
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
-    const int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string read(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using frictionlab::testing::frictionlab;
+using frictionlab::testing::read_text;
 
 class Cli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "cli_work" /
-               ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
+    void SetUp() override { dir_ = frictionlab::testing::work_directory(); }
     std::string scene(const std::string& name) const { return std::string(TEST_SCENES) + "/" + name; }
     fs::path dir_;
 };
@@ -82,11 +59,11 @@ TEST_F(Cli, ExampleOfEveryTypeIsItselfValid) {
 TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     auto r = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
     ASSERT_EQ(r.code, 0) << r.output;
-    const std::string meta = read(dir_ / "tiny_out" / "run.yaml");
+    const std::string meta = read_text(dir_ / "tiny_out" / "run.yaml");
     for (const char* key : {"status: completed", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
         EXPECT_NE(meta.find(key), std::string::npos) << key << "\n" << meta;
     EXPECT_TRUE(fs::exists(dir_ / "tiny_out" / "run.json"));
-    const std::string curve = read(dir_ / "tiny_out" / "loading_curve.csv");
+    const std::string curve = read_text(dir_ / "tiny_out" / "loading_curve.csv");
     EXPECT_NE(curve.find("# frictionlab"), std::string::npos);
     EXPECT_NE(curve.find("driving_force"), std::string::npos);
     // every: 2e-5 s over 3e-4 s at dt = 2e-7: t = 0, 2e-5, ..., 3e-4, each observed exactly once.
@@ -111,7 +88,7 @@ TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_NE(r.output.find("block"), std::string::npos) << r.output;  // says where it went wrong
     EXPECT_NE(r.output.find("step"), std::string::npos) << r.output;
-    const std::string meta = read(dir_ / "unstable_out" / "run.yaml");
+    const std::string meta = read_text(dir_ / "unstable_out" / "run.yaml");
     EXPECT_NE(meta.find("status: failed"), std::string::npos) << meta;
     // The table holds whole rows only: every data line has the header's number of fields.
     std::ifstream csv(dir_ / "unstable_out" / "loading_curve.csv");
@@ -127,7 +104,7 @@ TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
 }
 
 bool starts_with_bytes(const fs::path& file, const std::string& magic) {
-    const std::string text = read(file);
+    const std::string text = read_text(file);
     return text.size() > magic.size() && text.compare(0, magic.size(), magic) == 0;
 }
 
@@ -142,7 +119,7 @@ TEST_F(Cli, PlotDrawsEveryFigureAsPngAndSvg) {
         ASSERT_TRUE(fs::exists(png)) << png << "\n" << p.output;
         EXPECT_GT(fs::file_size(png), 1000u) << png;
         EXPECT_TRUE(starts_with_bytes(png, "\x89PNG\r\n\x1a\n")) << png;
-        const std::string text = read(svg);
+        const std::string text = read_text(svg);
         EXPECT_NE(text.find("<svg"), std::string::npos) << svg;
         EXPECT_NE(text.find("</svg>"), std::string::npos) << svg;
     }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "cli.hpp"
+#include "csv.hpp"
 #include "scene_fixture.hpp"
 
 namespace frictionlab {
@@ -96,6 +98,50 @@ TEST(OnlyWhatTheSceneNames, NoFrictionNoDampingMeansNoSuchWork) {
     EXPECT_EQ(f.sim().quantities().find_field("friction_force"), nullptr);
     EXPECT_EQ(f.sim().system().evaluations(), 4 * f.sim().system().step_index());
     EXPECT_EQ(f.sim().system().step_index(), 1000);
+}
+
+/// The baseline slider loaded at 20 mm/s through settling, one precursor and the first global slip
+/// (scenes/regression_fast_loading.yaml), run by the frictionlab command. Tolerances are physical,
+/// not bitwise: they hold through round-off changes (e.g. a faster force kernel) but not through a
+/// change of the physics. One test, so the scene runs once.
+TEST(FastLoadingRegression, LoadingCurveAndRuptureEvents) {
+    const auto dir = testing::work_directory();
+    const auto r = testing::frictionlab("run -q " + scene("regression_fast_loading.yaml"), dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    auto curve = testing::read_csv(dir / "regression_out" / "loading_curve.csv");
+    auto events = testing::read_csv(dir / "regression_out" / "precursors.csv");
+
+    // While the interface is stuck, F_S = K_S (V t - x_h) grows linearly. Not at the nominal K_S V
+    // (Li2020 §3.1, 80 N/s at the paper's rate) but at K_S V K_eff / (K_S + K_eff): the slider
+    // yields at the driving point like a point load on a 2D lattice, K_eff of the order of
+    // pi G B / ln(L / l_s) = pi (3E/8) B / ln 40 = 4.8e6 N/m; measured 0.888 K_S V (K_eff = 6.3e6 N/m).
+    // Microslip near the driven edge softens it from ~8.5 ms (F_S = 66 N), before the first event.
+    const auto slope = [&](double from, double to) {
+        const auto& t = curve["time"];
+        const auto& f = curve["driving_force"];
+        std::size_t a = 0, b = 0;
+        for (std::size_t i = 0; i < t.size(); ++i) a = t[i] <= from ? i : a, b = t[i] <= to ? i : b;
+        return (f[b] - f[a]) / (t[b] - t[a]);
+    };
+    const double nominal = 0.8e6 * 0.02, early = slope(0.0045, 0.0065), late = slope(0.0065, 0.0085);
+    EXPECT_NEAR(late / early, 1.0, 0.002) << "linear while stuck";
+    EXPECT_NEAR(early / nominal, 0.888, 0.01);
+
+    ASSERT_GE(events["event"].size(), 2u);
+    // The first precursor nucleates at the driven (trailing) edge at F_S/F_N = 0.18, as at the 20x
+    // slower rate of the headline scene: nucleation is set by the static stress field.
+    EXPECT_EQ(events["nucleation_block"][0], 0);
+    EXPECT_NEAR(events["force_ratio"][0], 0.182, 0.03 * 0.182);
+    // It is a slow front (tens of m/s against c_R ~ 900 m/s) arresting at l/L ~ 0.64.
+    EXPECT_NEAR(events["extent_over_length"][0], 0.64, 0.05);
+    EXPECT_LT(events["front_speed"][0], 100.0);
+    EXPECT_EQ(events["global"][0], 0);
+    // Then the whole interface slips at F_S/F_N = 0.42 (the global static coefficient), behind a
+    // fast, sub-Rayleigh front.
+    EXPECT_EQ(events["global"][1], 1);
+    EXPECT_NEAR(events["force_ratio"][1], 0.417, 0.03 * 0.417);
+    EXPECT_GT(events["front_speed"][1], 300.0);
+    EXPECT_LT(events["front_speed"][1], 1100.0);
 }
 
 }  // namespace

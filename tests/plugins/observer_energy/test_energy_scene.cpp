@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
+#include "cli.hpp"
 #include "csv.hpp"
+#include "scene_fixture.hpp"
 #include "frictionlab/plugin_search.hpp"
 #include "frictionlab/registry.hpp"
 #include "frictionlab/run.hpp"
@@ -21,39 +23,18 @@ namespace {
 namespace fs = std::filesystem;
 const std::string scene_file = std::string(ENERGY_SCENES) + "/energy_balance.yaml";
 
-fs::path work_directory() {
-    const fs::path dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "observer_energy_work" /
-                         ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 /// `frictionlab run -q --force <scene> <args>` in dir; returns the energy table.
 testing::Columns run_cli(const fs::path& dir, const std::string& args, const std::string& output) {
-    const std::string cmd = "cd '" + dir.string() + "' && '" FRICTIONLAB_CLI "' run -q --force '" + scene_file +
-                            "' --set output=" + output + " " + args + " 2>&1";
-    std::string text;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) text += buffer.data();
-    const int status = pclose(pipe);
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+    const auto r = testing::frictionlab("run -q --force '" + scene_file + "' --set output=" + output + " " + args, dir);
+    EXPECT_EQ(r.code, 0) << r.output;
     return testing::read_csv(dir / output / "energy.csv");
 }
 
 /// The scene as `frictionlab run` builds it, with the plugins of the build tree.
 struct LoadedScene {
-    LoadedScene() {
-        Diagnostics diagnostics;
-        load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR});
-        auto document = SceneDocument::load(scene_file, {}, diagnostics);
-        scene = document.validate(registry, diagnostics);
-        EXPECT_TRUE(diagnostics.empty()) << diagnostics.format();
-    }
     spdlog::logger log{"test"};
     Registry registry;
-    Scene scene;
+    Scene scene = testing::load_scene(scene_file, {}, registry);
 };
 
 class EnergyScene : public ::testing::Test {
@@ -179,7 +160,7 @@ std::vector<bool> work_accounting_seen(bool with_energy_observer) {
     spec.values.clear();
     if (with_energy_observer) s.scene.observers.push_back(spec);
     else s.scene.observers = {spec};
-    s.scene.output_directory = work_directory() / "out";
+    s.scene.output_directory = testing::work_directory() / "out";
     run_scene(s.scene, s.registry, s.log, RunOptions{true, false});
     return seen;
 }

@@ -11,48 +11,24 @@
 
 #include <gtest/gtest.h>
 
+#include "cli.hpp"
+#include "csv.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-int frictionlab(const std::string& args, const fs::path& cwd, std::string& output) {
-    const std::string cmd = "cd '" + cwd.string() + "' && '" FRICTIONLAB_CLI "' " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-    const int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-/// A CSV of numbers as columns by name; comment lines skipped.
-std::map<std::string, std::vector<double>> read_columns(const fs::path& file) {
-    std::ifstream in(file);
-    std::string line;
-    std::vector<std::string> names;
-    std::map<std::string, std::vector<double>> columns;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream fields(line);
-        std::string f;
-        std::size_t k = 0;
-        while (std::getline(fields, f, ',')) {
-            if (names.size() < k + 1) names.push_back(f);
-            else columns[names[k]].push_back(std::stod(f));
-            ++k;
-        }
-    }
-    return columns;
-}
+using frictionlab::testing::read_csv;
 
 TEST(PrecursorsScene, TheFirstPrecursorsOfAFastLoadedSlider) {
     const fs::path dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "observer_precursors" / "scene";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::string output;
-    ASSERT_EQ(frictionlab("run -q '" PRECURSOR_SCENES "/fast_loading.yaml'", dir, output), 0) << output;
+    const auto run = frictionlab::testing::frictionlab("run -q '" PRECURSOR_SCENES "/fast_loading.yaml'", dir);
+    ASSERT_EQ(run.code, 0) << run.output;
     const fs::path out = dir / "precursors_out";
 
-    auto events = read_columns(out / "precursors.csv");
+    auto events = read_csv(out / "precursors.csv");
     ASSERT_FALSE(events["event"].empty()) << "at least one rupture event";
     const double ratio = events["force_ratio"][0], extent = events["extent_over_length"][0];
     std::printf("first event: t = %.6g s, F_S/F_N = %.4g, l/L = %.4g, nucleation block %g, front %.4g m/s\n",
@@ -62,7 +38,7 @@ TEST(PrecursorsScene, TheFirstPrecursorsOfAFastLoadedSlider) {
     EXPECT_LE(extent, 1);
 
     // The front of the first event: the first rupture is no later farther from nucleation.
-    auto fronts = read_columns(out / "precursor_fronts.csv");
+    auto fronts = read_csv(out / "precursor_fronts.csv");
     std::vector<std::pair<double, double>> first;  // (distance, delay)
     for (std::size_t r = 0; r < fronts["event"].size(); ++r)
         if (fronts["event"][r] == 0) first.emplace_back(fronts["distance"][r], fronts["delay"][r]);
@@ -79,7 +55,7 @@ TEST(PrecursorsScene, TheFirstPrecursorsOfAFastLoadedSlider) {
     EXPECT_LE(out_of_order, first.size() / 5) << "front times increase away from nucleation, up to stragglers";
 
     // contact_area in the same run: block 5 of the paper's Fig. 9 has valid fractions throughout.
-    auto block = read_columns(out / "contact_area_block_5.csv");
+    auto block = read_csv(out / "contact_area_block_5.csv");
     ASSERT_FALSE(block["pinned_fraction"].empty());
     for (double f : block["pinned_fraction"]) {
         if (std::isnan(f)) continue;  // before the junctions exist

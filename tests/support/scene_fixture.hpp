@@ -13,6 +13,10 @@
 
 namespace frictionlab::testing {
 
+/// Parses and validates a scene with the build tree's plugins loaded into `registry`; a scene error
+/// throws with the diagnostics.
+Scene load_scene(const std::string& scene_file, const std::vector<std::string>& overrides, Registry& registry);
+
 class SceneFixture {
 public:
     explicit SceneFixture(const std::string& scene_file, const std::vector<std::string>& overrides = {});

@@ -4,16 +4,24 @@
 
 #include "frictionlab/plugin_search.hpp"
 
+#ifndef FRICTIONLAB_PLUGIN_DIR
+#error "the build passes FRICTIONLAB_PLUGIN_DIR, the build tree's plugin folder"
+#endif
+
 namespace frictionlab::testing {
 
-SceneFixture::SceneFixture(const std::string& scene_file, const std::vector<std::string>& overrides) {
+Scene load_scene(const std::string& scene_file, const std::vector<std::string>& overrides, Registry& registry) {
     Diagnostics diagnostics;
     auto document = SceneDocument::load(scene_file, overrides, diagnostics);
-    load_plugins(registry_, {FRICTIONLAB_PLUGIN_DIR});
-    scene_ = document.validate(registry_, diagnostics);
+    load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR});
+    Scene scene = document.validate(registry, diagnostics);
     if (!diagnostics.empty()) throw std::runtime_error(diagnostics.format());
-    sim_ = std::make_unique<Simulation>(scene_, registry_, log_);
+    return scene;
 }
+
+SceneFixture::SceneFixture(const std::string& scene_file, const std::vector<std::string>& overrides)
+    : scene_(load_scene(scene_file, overrides, registry_)),
+      sim_(std::make_unique<Simulation>(scene_, registry_, log_)) {}
 
 void SceneFixture::run_all_stages() {
     for (std::size_t i = 0; i < scene_.stages.size(); ++i) {
