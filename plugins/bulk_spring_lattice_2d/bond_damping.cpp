@@ -4,16 +4,31 @@
 
 namespace frictionlab {
 
+namespace {
+
+// The force on each bond's "from" node, 0 on masked pairs. (Full vector: DampingStencil.)
+
+/// rate Delta with rate = eta (dv . Delta) / |Delta|^2: the part of eta dv along the current bond.
+void bond_projected(const StageView& s, const double* mask, Index offset, Index count, double eta, double* fx,
+                    double* fz) {
+    for (Index i = 0; i < count; ++i) {
+        const double dx = s.x[i + offset] - s.x[i], dz = s.z[i + offset] - s.z[i];
+        const double dvx = s.vx[i + offset] - s.vx[i], dvz = s.vz[i + offset] - s.vz[i];
+        const double rate = mask[i] * (eta * (dvx * dx + dvz * dz) / (dx * dx + dz * dz));
+        fx[i] = rate * dx;
+        fz[i] = rate * dz;
+    }
+}
+
+}  // namespace
+
 BondDamping::BondDamping(const LatticeGrid& grid, double eta, Mode mode)
     : grid_(grid),
       families_(grid.families()),
       eta_(eta),
       mode_(mode),
-      dvx_(grid.size()),
-      dvz_(grid.size()),
-      dx_(grid.size()),
-      dz_(grid.size()),
-      rate_(grid.size()) {}
+      stencil_(grid, families_, eta),
+      pair_(families_, grid.size()) {}
 
 std::string BondDamping::describe() const {
     return fmt::format("bond damping eta={:.3g} N s/m ({})", eta_,
@@ -21,27 +36,12 @@ std::string BondDamping::describe() const {
 }
 
 void BondDamping::add_forces(const StageView& s, ForceView& f) {
-    auto fx = grid_.view(f.fx), fz = grid_.view(f.fz);
-    for (const BondFamily& b : families_) add_family(b, s, fx, fz);
-}
-
-void BondDamping::add_family(const BondFamily& b, const StageView& s, LatticeGrid::View& fx,
-                             LatticeGrid::View& fz) {
-    auto dvx = family_scratch(dvx_, b), dvz = family_scratch(dvz_, b);
-    dvx = bond_difference(grid_.view(s.vx), b);
-    dvz = bond_difference(grid_.view(s.vz), b);
-    if (mode_ == Mode::full_vector) {
-        scatter_pair_force(fx, b, eta_ * dvx);
-        scatter_pair_force(fz, b, eta_ * dvz);
-        return;
+    if (mode_ == Mode::full_vector) return stencil_.add_forces(s.vx.data(), s.vz.data(), f.fx.data(), f.fz.data());
+    for (std::size_t n = 0; n < families_.size(); ++n) {
+        const BondFamily& b = families_[n];
+        bond_projected(s, b.mask.data(), b.offset, b.count, eta_, pair_.x(n), pair_.z(n));
     }
-    auto dx = family_scratch(dx_, b), dz = family_scratch(dz_, b), rate = family_scratch(rate_, b);
-    dx = bond_difference(grid_.view(s.x), b);
-    dz = bond_difference(grid_.view(s.z), b);
-    // eta (dv . Delta) / |Delta|^2, so that the force on the "from" node is rate * Delta.
-    rate = eta_ * (dvx * dx + dvz * dz) / (dx.square() + dz.square());
-    scatter_pair_force(fx, b, rate * dx);
-    scatter_pair_force(fz, b, rate * dz);
+    pair_.add_to(f.fx.data(), f.fz.data());
 }
 
 }  // namespace frictionlab

@@ -2,7 +2,9 @@
 #include <string>
 
 #include "frictionlab/effect.hpp"
+#include "damping_stencil.hpp"
 #include "lattice_grid.hpp"
+#include "pair_forces.hpp"
 
 namespace frictionlab {
 
@@ -26,13 +28,12 @@ public:
     void add_forces(const StageView& s, ForceView& f) override;
 
 private:
-    void add_family(const BondFamily& b, const StageView& s, LatticeGrid::View& fx, LatticeGrid::View& fz);
-
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;
     double eta_;
     Mode mode_;
-    Eigen::ArrayXd dvx_, dvz_, dx_, dz_, rate_;  // scratch, one family at a time
+    DampingStencil stencil_;  // full vector
+    PairForces pair_;         // bond projected: scratch for this evaluation's per-bond forces
 };
 
 }  // namespace frictionlab

@@ -1,8 +1,10 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "frictionlab/effect.hpp"
 #include "lattice_grid.hpp"
+#include "pair_forces.hpp"
 
 namespace frictionlab {
 
@@ -30,14 +32,12 @@ public:
     double potential_energy(const StageView& s) const override;
 
 private:
-    void add_family(const BondFamily& b, const LatticeGrid::ConstView& x, const LatticeGrid::ConstView& z,
-                    LatticeGrid::View& fx, LatticeGrid::View& fz);
-
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;
     double stiffness_;
     Law law_;
-    Eigen::ArrayXd dx_, dz_, tension_;  // scratch, one family at a time
+    PairForces pair_;            // scratch: this evaluation's per-bond forces
+    std::vector<double> delta_;  // scratch: r^2/l^2 - 1 of one family's bonds
 };
 
 }  // namespace frictionlab

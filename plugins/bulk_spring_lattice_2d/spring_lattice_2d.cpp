@@ -116,10 +116,8 @@ void SpringLattice2d::build_node_sets() {
 
 void SpringLattice2d::build_connectivity() {
     for (const BondFamily& b : grid_.families())
-        for (Index c = 0; c < b.cols; ++c)
-            for (Index r = 0; r < b.rows; ++r)
-                body_.bonds.push_back(
-                    {grid_.node(b.from_row + r, b.from_col + c), grid_.node(b.to_row + r, b.to_col + c)});
+        for (Index i = 0; i < b.count; ++i)
+            if (b.mask[static_cast<std::size_t>(i)] != 0) body_.bonds.push_back({i, i + b.offset});
     for (Index iz = 0; iz + 1 < grid_.nz; ++iz)
         for (Index ix = 0; ix + 1 < grid_.nx; ++ix)
             body_.cells.push_back(
