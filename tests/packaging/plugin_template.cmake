@@ -44,3 +44,36 @@ foreach(expected "max_speed_csv" "${WORK}/my_plugin/build/plugins/observer_max_s
     message(FATAL_ERROR "frictionlab list does not show ${expected}:\n${listing}")
   endif()
 endforeach()
+
+# Through a scene, as a user would: the installed frictionlab runs a small lattice whose scene names
+# the template's directory in plugin_paths (relative to the scene file) and its observer by type.
+file(WRITE ${WORK}/scene/uses_template.yaml "output: out
+plugin_paths: [../my_plugin/build/plugins]
+bulk: {type: spring_lattice_2d, nx: 11, nz: 3, length: 0.025, height: 0.005}
+loaders:
+  - {type: rigid_base_contact}
+  - {type: normal_load, total_force: 100, ramp_time: 1.0e-4}
+integrator: {type: rk4, dt: 2.0e-7}
+stages:
+  - {name: settle, duration: 2.0e-4}
+observers:
+  - {type: max_speed_csv, every: 2.0e-5, file_name: max_speed.csv}
+")
+file(REMOVE_RECURSE ${WORK}/scene/out)
+execute_process(
+  COMMAND ${PREFIX}/${BINDIR}/frictionlab run -q uses_template.yaml
+  WORKING_DIRECTORY ${WORK}/scene
+  RESULT_VARIABLE result OUTPUT_VARIABLE run_log ERROR_VARIABLE run_log)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "frictionlab run of a scene using the template failed (${result}):\n${run_log}")
+endif()
+file(STRINGS ${WORK}/scene/out/max_speed.csv rows REGEX "^[0-9]")
+list(LENGTH rows row_count)
+if(NOT row_count EQUAL 11)
+  message(FATAL_ERROR "max_speed.csv has ${row_count} rows, expected 11 (t = 0, 2e-5, ..., 2e-4)")
+endif()
+file(READ ${WORK}/scene/out/run.yaml record)
+string(FIND "${record}" "observer_max_speed_csv" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "run.yaml does not record the template plugin:\n${record}")
+endif()

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+
+#include "cli.hpp"
 #include <spdlog/logger.h>
 
 #include "csv.hpp"
@@ -49,19 +51,16 @@ struct HandBuilt {
         system.add_effect(std::make_unique<Dashpot>());
         system.add_effect(std::make_unique<Push>(), {}, "push");
         system.add_effect(std::make_unique<Drag>(), {}, "drag");
-        dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "observer_energy_work" /
-              ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        fs::remove_all(dir);
-        fs::create_directories(dir);
+        dir = testing::work_directory();
     }
     static const Body& body() {
-        static const Body b = [] {
+        static const Body one_node = [] {
             Body b;
             b.x0 = b.z0 = Eigen::ArrayXd::Zero(1);
             b.mass = Eigen::ArrayXd::Constant(1, m);
             return b;
         }();
-        return b;
+        return one_node;
     }
     RunView view() {
         return RunView{system, body(), system.state(), quantities, stage, system.step_index(), dir, info, log};
