@@ -128,6 +128,9 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
     pinned_count_ = &q.field("junctions_pinned", set, n, "1", "Number of pinned junctions of the block.");
     sliding_count_ = &q.field("junctions_sliding", set, n, "1", "Number of sliding junctions of the block.");
     dislocated_count_ = &q.field("junctions_dislocated", set, n, "1", "Number of dislocated junctions of the block.");
+    // Each junction is a contact of mean radius rbar: the real contact area is N pi rbar^2 (Li2020 §2.2).
+    q.scalar("junction_area", "m^2", "Real contact area of one junction, pi rbar^2.") =
+        std::numbers::pi * params.contact_radius * params.contact_radius;
     const BlockJunctions::Constants c{p_, k_s_, params.mu_d};
     blocks_.reserve(nodes_.size());
     for (Index node : nodes_) {

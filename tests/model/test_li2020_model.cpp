@@ -64,6 +64,9 @@ TEST_F(AtRest, NoJunctionIsAboveThresholdAndNothingMoves) {
     EXPECT_EQ(fixture_->field("junctions_dislocated").sum(), 0.0);
     const double p = M_PI * 1e-5 * 1e-5 * 3e8;
     EXPECT_NEAR(pinned, 400.0 / p, 41.0);  // each block rounds P_b / p within one junction
+    // The real contact area is N pi rbar^2 = F_N / H_d, 0.27 % of the nominal area (physics.md A.3).
+    const double area = pinned * fixture_->sim().quantities().find_scalar("junction_area")->value;
+    EXPECT_NEAR(area / (0.1 * 0.005), 400.0 / 3e8 / (0.1 * 0.005), 0.01 * 0.0027);
     // Starting a stage with friction events on runs the law's threshold check (B.18 step 4).
     EXPECT_NO_THROW(fixture_->sim().system().begin_stage(StageInfo{"load", 1, s.t, 1.0, true}));
 }
