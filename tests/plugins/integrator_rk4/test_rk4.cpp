@@ -1,62 +1,28 @@
-// RK4 against the exact harmonic oscillator, and the freeze-and-commit call pattern (physics.md B.17).
+// RK4 against the exact harmonic oscillator, and the freeze-and-commit call pattern (theory.md B.17).
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
+#include "oscillator.hpp"
 #include "frictionlab/system.hpp"
 #include "rk4.hpp"
 
 namespace frictionlab {
 namespace {
 
-/// A spring of stiffness k pulling node 0 back to its reference x, counting how it is called.
-class Spring final : public Effect {
-public:
-    explicit Spring(double k) : k_(k) {}
-    std::string describe() const override { return "test spring"; }
-    double potential_energy(const StageView& s) const override { return 0.5 * k_ * s.x(0) * s.x(0); }
-    void add_forces(const StageView& s, ForceView& f) override {
-        f.fx(0) -= k_ * s.x(0);
-        ++evaluations;
-    }
-    void begin_step(const StageView&) override { ++begun; }
-    void commit(const StageView& end, double dt) override {
-        ++commits;
-        last_commit_time = end.t;
-        last_dt = dt;
-    }
-    int evaluations = 0, begun = 0, commits = 0;
-    double last_commit_time = 0, last_dt = 0;
-
-private:
-    double k_;
-};
-
-Body one_node(double mass) {
-    Body b;
-    b.x0 = Eigen::ArrayXd::Zero(1);
-    b.z0 = Eigen::ArrayXd::Zero(1);
-    b.mass = Eigen::ArrayXd::Constant(1, mass);
-    return b;
-}
+using test_support::one_node;
+using test_support::Oscillator;
+using test_support::Spring;
 
 Context test_context(spdlog::logger& log) { return Context{log, 0, nullptr, nullptr, nullptr, "integrator"}; }
 
-/// Phase-space distance from the exact state after one period of m x'' = -k x, x(0) = 1, v(0) = 0.
-/// (x alone would hide the phase error, which it feels only to second order at a full period.)
+/// Phase-space error after one period of the undamped oscillator, at a step of that period.
 double period_error(double dt_fraction) {
-    spdlog::logger log("test");
-    const double k = 4.0, m = 1.0, omega = std::sqrt(k / m), period = 2 * std::numbers::pi / omega;
-    Body body = one_node(m);
-    System system(body, 0);
-    system.add_effect(std::make_unique<Spring>(k));
-    system.initial_state()(0) = 1.0;
-    Rk4 rk4({period * dt_fraction}, test_context(log));
-    while (period - system.time() > 1e-12) rk4.step(system, period - system.time());
-    const double x = system.y()(0), v = system.y()(2);  // layout [x | z | vx | vz] of one node
-    return std::hypot(x - 1.0, v / omega);
+    const Oscillator osc;
+    const double period = 2 * std::numbers::pi / osc.omega();
+    return test_support::phase_space_error<Rk4>(osc, period * dt_fraction, period);
 }
 
 TEST(Rk4, ConvergesAtFourthOrderOnTheHarmonicOscillator) {
@@ -96,22 +62,9 @@ TEST(Rk4, ShortensTheLastStepToLandOnTheStageEnd) {
 /// Work-energy bookkeeping: the spring's work, integrated with RK4's own stage weights, equals the
 /// change of kinetic energy and minus the change of its potential energy, to RK4's 4th order.
 double energy_residual(double dt) {
-    spdlog::logger log("test");
-    const double k = 4.0, m = 1.0;
-    Body body = one_node(m);
-    System system(body, 0);
-    auto spring = std::make_unique<Spring>(k);
-    const Spring* probe = spring.get();
-    system.add_effect(std::move(spring));
-    system.enable_work_accounting();
-    system.initial_state()(0) = 1.0;
-    const double potential0 = probe->potential_energy(system.state());
-    Rk4 rk4({dt}, test_context(log));
-    while (1.3 - system.time() > 1e-12) rk4.step(system, 1.3 - system.time());
-    const double kinetic = 0.5 * m * system.y()(2) * system.y()(2);
-    const double work = system.work().at(0);
-    EXPECT_NEAR(work, kinetic, 1e-3);  // the work-energy theorem, to the step's accuracy
-    return std::abs(work + (probe->potential_energy(system.state()) - potential0));
+    const auto balance = test_support::work_balance<Rk4>(dt, 1.3);
+    EXPECT_NEAR(balance.work, balance.kinetic_gain, 1e-3);  // the work-energy theorem, to the step's accuracy
+    return std::abs(balance.work - balance.potential_drop);
 }
 
 TEST(Rk4, WorkAccountingClosesTheEnergyBalanceAtFourthOrder) {

@@ -1,0 +1,9 @@
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+#include "velocity_verlet.hpp"
+
+namespace {
+void register_types(frictionlab::Registry& registry) { registry.add<frictionlab::VelocityVerlet>(); }
+}  // namespace
+
+FRICTIONLAB_PLUGIN("integrator_velocity_verlet", "0.1.0", register_types)
