@@ -1,0 +1,12 @@
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+
+#include "coulomb.hpp"
+
+namespace {
+
+void register_types(frictionlab::Registry& r) { r.add<frictionlab::Coulomb>(); }
+
+}  // namespace
+
+FRICTIONLAB_PLUGIN("friction_coulomb", "0.1.0", register_types)

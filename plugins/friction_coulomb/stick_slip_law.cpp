@@ -1,0 +1,157 @@
+#include "stick_slip_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+double StickSlipLaw::stiffness(double given, double normal) {
+    if (given > 0) return given;
+    return std::sqrt(stiffness_coefficient * std::max(0.0, normal));
+}
+
+StickSlipLaw::StickSlipLaw(const Settings& settings, const Context& ctx, std::string_view type)
+    : name_(ctx.name.empty() ? std::string(type) : ctx.name), settings_(settings) {
+    if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
+    nodes_ = ctx.body->nodes(settings.node_set);
+    quantities_ = ctx.quantities;
+    const Index n = static_cast<Index>(nodes_.size());
+    const std::string& set = settings.node_set;
+    normal_force_ = &quantities_->field("normal_force", set, n, "N", "Normal contact force P_b on each interface node.");
+    friction_force_ = &quantities_->field("friction_force", set, n, "N",
+                                         "x-force on the block from the base: spring while stuck, kinetic while slipping.");
+    blocks_.resize(nodes_.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        Block& b = blocks_[i];
+        b.x_start = b.anchor = ctx.body->x0[nodes_[i]];
+    }
+}
+
+std::string StickSlipLaw::stiffness_text() const {
+    if (settings_.tangential_stiffness > 0) return fmt::format("k_t={:.3g} N/m", settings_.tangential_stiffness);
+    return "k_t=sqrt(39.2e9 f_N)";
+}
+
+double StickSlipLaw::stage_slip(const Block& b, double x) const {
+    return b.mode == Mode::slipping ? b.slip + std::abs(x - b.x_start) : 0.0;
+}
+
+double StickSlipLaw::stage_force(const Block& b, double x, double v, double normal, double slip) const {
+    switch (b.mode) {
+        case Mode::detached: return 0;
+        case Mode::stuck: return -b.stiffness * (x - b.anchor);
+        case Mode::slipping:
+            return -kinetic_strength(std::max(0.0, normal), slip) * std::tanh(v / settings_.regularisation_velocity);
+    }
+    return 0;
+}
+
+void StickSlipLaw::add_forces(const StageView& s, ForceView& f) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Index node = nodes_[k], i = static_cast<Index>(k);
+        const Block& b = blocks_[k];
+        const double slip = stage_slip(b, s.x[node]);
+        const double force = stage_force(b, s.x[node], s.vx[node], (*normal_force_)[i], slip);
+        f.fx[node] += force;
+        (*friction_force_)[i] = force;
+        publish(i, b, slip);
+    }
+}
+
+double StickSlipLaw::potential_energy(const StageView& s) const {
+    double energy = 0;
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Block& b = blocks_[k];
+        if (b.mode != Mode::stuck) continue;
+        const double stretch = s.x[nodes_[k]] - b.anchor;
+        energy += 0.5 * b.stiffness * stretch * stretch;
+    }
+    return energy;
+}
+
+void StickSlipLaw::begin_stage(const StageInfo& stage, const StageView& s) {
+    const bool had_events = events_;
+    events_ = stage.friction_events;
+    if (events_ && !had_events) check_settled(stage, s);
+}
+
+void StickSlipLaw::begin_step(const StageView& s) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        blocks_[k].x_start = s.x[nodes_[k]];
+        blocks_[k].v_start = s.vx[nodes_[k]];
+    }
+}
+
+void StickSlipLaw::commit(const StageView& end, double /*dt*/) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Index node = nodes_[k];
+        commit_block(blocks_[k], end.x[node], end.vx[node], (*normal_force_)[static_cast<Index>(k)]);
+    }
+}
+
+void StickSlipLaw::commit_block(Block& b, double x, double v, double normal) const {
+    const Mode during = b.mode;
+    if (during == Mode::slipping) b.slip += std::abs(x - b.x_start);
+    const double k_step = b.stiffness;
+    b.x_start = x;
+    b.v_start = v;
+
+    if (normal <= 0) {
+        b = Block{Mode::detached, 0, x, 0, 0, false, x, v};
+        return;
+    }
+    if (during == Mode::detached) {
+        b.mode = Mode::stuck;  // contact forms unloaded
+        b.anchor = x;
+    } else if (during == Mode::stuck && events_) {
+        const double stretch = x - b.anchor;
+        if (std::abs(k_step * stretch) > settings_.mu_s * normal) {
+            b.mode = Mode::slipping;
+            b.direction = stretch > 0 ? 1.0 : -1.0;
+            b.slip = 0;
+            b.reached_stick_velocity = std::abs(v) > settings_.stick_velocity;
+        }
+    } else if (during == Mode::slipping && events_) {
+        const bool reversed = b.direction * v < 0;
+        const bool stopped = b.reached_stick_velocity && std::abs(v) < settings_.stick_velocity;
+        b.reached_stick_velocity = b.reached_stick_velocity || std::abs(v) > settings_.stick_velocity;
+        if (reversed || stopped) {
+            // Continue the force the block felt at the end of the step (see the class comment).
+            const double force = stage_force(b, x, v, normal, b.slip);
+            b.mode = Mode::stuck;
+            b.slip = 0;
+            b.direction = 0;
+            b.reached_stick_velocity = false;
+            b.stiffness = stiffness(settings_.tangential_stiffness, normal);
+            b.anchor = x + force / b.stiffness;
+            return;
+        }
+    }
+
+    const double k_new = stiffness(settings_.tangential_stiffness, normal);
+    if (b.mode == Mode::stuck && during == Mode::stuck) {
+        // Same spring force at the new stiffness: k_t follows f_N without a force jump.
+        b.anchor = x - k_step * (x - b.anchor) / k_new;
+    }
+    b.stiffness = k_new;
+}
+
+void StickSlipLaw::check_settled(const StageInfo& stage, const StageView& s) const {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Block& b = blocks_[k];
+        if (b.mode != Mode::stuck) continue;
+        const double force = std::abs(b.stiffness * (s.x[nodes_[k]] - b.anchor));
+        const double threshold = settings_.mu_s * (*normal_force_)[static_cast<Index>(k)];
+        if (force <= threshold) continue;
+        throw RunError(fmt::format(
+            "{}: at the start of stage '{}', block {} (node {}) is stuck at |F| = {:.6g} N, above mu_s f_N = {:.6g} N; "
+            "settling did not reach a state the interface can hold (theory.md B.18)",
+            name_, stage.name, k, nodes_[k], force, threshold));
+    }
+}
+
+}  // namespace frictionlab

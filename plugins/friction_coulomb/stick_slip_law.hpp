@@ -1,0 +1,142 @@
+#pragma once
+// The stick-slip block with a tangential spring that the Amontons-Coulomb (coulomb) and the
+// slip-weakening (slip_weakening) laws share; they differ only in the strength of a slipping block.
+// It lives in this plugin's _code library, which friction_slip_weakening links.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+namespace frictionlab {
+
+/// Per interface block i, with normal force f_N (the quantity "normal_force", written by the base
+/// contact) and tangential stiffness k_t (the given value, or sqrt(c f_N) with c = 39.2e9 N/m^2,
+/// Trømborg 2011 re-implementations, when it is 0):
+///
+///     detached  f_N = 0                 no force
+///     stuck     F = -k_t (x - anchor)   held while |k_t (x - anchor)| <= mu_s f_N
+///     slipping  F = -S tanh(v / v_r)    S = kinetic_strength(f_N, delta) >= 0, of the derived law
+///
+/// F is the x-force on the block, delta the slip since the block last stuck, v_r the
+/// regularisation velocity: tanh(v/v_r) stands for sign(v) so that the stage force is a smooth
+/// function of the stage velocity (sign(v) jumps at v = 0 and an RK stage could straddle it).
+///
+/// Step structure (theory.md B.17): modes, anchors, k_t and delta are frozen within a step. A
+/// stage force is a function of the stage x, v and f_N only; a slipping block's stage slip is
+/// delta_n + |x - x_n|, x_n its position at the step start. The stage f_N is the base contact's
+/// value at the same stage (loaders precede the friction law in the pipeline). commit() then
+/// applies, per block and in this order, on the end-of-step x, v and f_N:
+///   1. delta += |x_end - x_n| for a slipping block;
+///   2. contact: f_N <= 0 detaches the block; a detached block with f_N > 0 sticks, unloaded;
+///   3. breaking: a stuck block with |k_t (x - anchor)| > mu_s f_N (strict) slips, in the direction
+///      s = sign(x - anchor) the spring resisted, with delta = 0;
+///   4. re-stick: a block slipping throughout the step sticks when its velocity has reversed
+///      (s v < 0), or has fallen below stick_velocity after exceeding it since it broke. The spring
+///      is re-anchored so that it carries the force the block felt at the end of the step,
+///      F = -S tanh(v/v_r): the friction force is continuous through the re-stick and the spring
+///      starts at the kinetic value, below mu_s f_N (S <= mu_s f_N), so it does not re-break at once.
+///      We prefer this to re-anchoring unloaded (a common reading of Trømborg 2011): an unloaded re-stick
+///      drops the force from mu_k f_N to 0 at an arbitrary instant and kicks the block forwards. The
+///      "after exceeding it" part matters for slip weakening, which breaks with S = mu_s f_N and no
+///      force drop: a just-broken block is slow and would otherwise re-stick before it slips at all;
+///   5. k_t follows the end-of-step f_N (default stiffness only); a stuck block is re-anchored so
+///      that its spring force is unchanged.
+/// Steps 3 and 4 are friction events: while a stage has friction_events false (settling, B.18)
+/// no block breaks or re-sticks; contact and k_t still follow f_N. When events are switched on, a
+/// stuck block above mu_s f_N is a RunError, as in three_state_junctions.
+///
+/// Stored energy: sum over stuck blocks of k_t (x - anchor)^2 / 2, so a stuck block's force is
+/// exactly -dE/dx. Slipping blocks store none (all their work is dissipated). The energy jumps at
+/// commits without work (breaking releases it; re-stick stores F^2 / (2 k_t), the model's own; a k_t
+/// change at fixed force changes it by F^2/2 (1/k_new - 1/k_old)).
+class StickSlipLaw : public FrictionLaw {
+public:
+    /// The parameters both laws share (their Params are flat, for the scene; see settings_of).
+    struct Settings {
+        double mu_s = 0.4;
+        double tangential_stiffness = 0;
+        double stick_velocity = 1e-5;
+        double regularisation_velocity = 1e-6;
+        std::string node_set = "interface";
+    };
+    enum class Mode : std::uint8_t { detached, stuck, slipping };
+    struct Block {
+        Mode mode = Mode::detached;
+        double stiffness = 0;  // k_t, N/m
+        double anchor = 0;     // m, stuck: where the spring is unloaded
+        double slip = 0;       // m, delta: slip since the block last stuck (slipping only)
+        double direction = 0;  // s = +-1, slipping: the direction it broke in
+        bool reached_stick_velocity = false;  // slipping: |v| has exceeded stick_velocity
+        double x_start = 0, v_start = 0;      // m, m/s: at the start of the current step
+    };
+
+    /// c of k_t = sqrt(c f_N), the value of re-implementations of Trømborg 2011, N/m^2.
+    static constexpr double stiffness_coefficient = 39.2e9;
+    /// k_t for normal force f_N: the given stiffness, or sqrt(c f_N) when it is 0, N/m.
+    static double stiffness(double given, double normal);
+
+    /// Declares the shared keys on a law's flat Params P (members with the names of Settings).
+    template <class P>
+    static void add_settings(ParamSpec<P>& s);
+    template <class P>
+    static Settings settings_of(const P& p) {
+        return {p.mu_s, p.tangential_stiffness, p.stick_velocity, p.regularisation_velocity, p.node_set};
+    }
+
+    void add_forces(const StageView& s, ForceView& f) final;
+    void begin_stage(const StageInfo&, const StageView&) override;
+    void begin_step(const StageView&) override;
+    void commit(const StageView& end, double dt) override;
+    double potential_energy(const StageView& s) const override;
+
+    Index blocks() const { return static_cast<Index>(blocks_.size()); }
+    const Block& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }
+    const Settings& settings() const { return settings_; }
+    /// Kinetic strength S (N, >= 0) of a slipping block at normal force f_N and slip delta.
+    virtual double kinetic_strength(double normal, double slip) const = 0;
+
+protected:
+    StickSlipLaw(const Settings&, const Context&, std::string_view type);
+    /// Publishes the law's own fields for block i at a stage; slip is the stage delta (0 unless slipping).
+    virtual void publish(Index /*i*/, const Block&, double /*slip*/) {}
+    /// The k_t part of describe().
+    std::string stiffness_text() const;
+
+    std::string name_;
+    Settings settings_;
+    NodeSet nodes_;
+    Quantities* quantities_;
+
+private:
+    double stage_force(const Block& b, double x, double v, double normal, double slip) const;
+    double stage_slip(const Block& b, double x) const;
+    void commit_block(Block& b, double x, double v, double normal) const;
+    void check_settled(const StageInfo&, const StageView&) const;
+
+    std::vector<Block> blocks_;
+    const Eigen::ArrayXd* normal_force_;
+    Eigen::ArrayXd* friction_force_;
+    bool events_ = true;
+};
+
+template <class P>
+void StickSlipLaw::add_settings(ParamSpec<P>& s) {
+    s.add("mu_s", &P::mu_s, "Static coefficient: a stuck block breaks when its spring force exceeds mu_s f_N.")
+        .unit("1").greater_than(0);
+    s.add("tangential_stiffness", &P::tangential_stiffness,
+          "Tangential stiffness k_t of the spring that holds a stuck block; 0 = sqrt(39.2e9 N/m^2 * f_N) per block, "
+          "from its normal force at each commit.")
+        .unit("N/m").at_least(0);
+    s.add("stick_velocity", &P::stick_velocity,
+          "A slipping block re-sticks when its speed falls below this after exceeding it, or its velocity reverses.")
+        .unit("m/s").at_least(0);
+    s.add("regularisation_velocity", &P::regularisation_velocity,
+          "v_r of the kinetic force -S tanh(v/v_r), a smooth sign(v).")
+        .unit("m/s").greater_than(0);
+    s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
+}
+
+}  // namespace frictionlab
