@@ -1,0 +1,12 @@
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+
+#include "two_state_junctions.hpp"
+
+namespace {
+
+void register_types(frictionlab::Registry& r) { r.add<frictionlab::TwoStateJunctions>(); }
+
+}  // namespace
+
+FRICTIONLAB_PLUGIN("friction_two_state_junctions", "0.1.0", register_types)
