@@ -8,7 +8,7 @@
 
 namespace frictionlab {
 
-/// Dashpots on every bond of the lattice, straight and diagonal alike (Li2020 Eq. 2; physics.md
+/// Dashpots on every bond of the lattice, straight and diagonal alike (Li2020 Eq. 2; theory.md
 /// B.4): the force on node i from its neighbour j is
 ///     full vector:      C_ij = eta (v_j - v_i)
 ///     bond projected:   C_ij = eta ((v_j - v_i) . n) n,   n = (x_j - x_i) / |x_j - x_i| (current)

@@ -33,7 +33,7 @@ ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
         .unit("1")
         .at_least(0);
     s.add("damping_mode", &Params::damping_mode,
-          "full_vector: eta (v_j - v_i) (Li2020 Eq. 2 as read in physics.md B.4); bond_projected: only the "
+          "full_vector: eta (v_j - v_i) (Li2020 Eq. 2 as read in theory.md B.4); bond_projected: only the "
           "component along the current bond, which leaves rigid rotation undamped.")
         .one_of({"full_vector", "bond_projected"});
     s.add("springs", &Params::springs,

@@ -13,11 +13,11 @@
 namespace frictionlab {
 
 /// The elastic slider as a square lattice of N = nx nz point masses m = M/N (edge and corner
-/// nodes are not lightened, physics.md B.20) with spacing l_s = L/(nx-1) = H/(nz-1), joined by
+/// nodes are not lightened, theory.md B.20) with spacing l_s = L/(nx-1) = H/(nz-1), joined by
 /// central springs to their 4 nearest neighbours (stiffness K = 3BE/4, rest length l_s) and to their
 /// 4 next-nearest neighbours (K/2, sqrt(2) l_s), plus a dashpot eta = sqrt(c K m) on every bond
 /// (Li2020 Eqs. 1, 2, 6). The springs give plane-stress constants C11 = 9E/8, C12 = C44 = 3E/8,
-/// i.e. Young's modulus E and Poisson's ratio exactly 1/3 (physics.md A.2); long-wave speeds
+/// i.e. Young's modulus E and Poisson's ratio exactly 1/3 (theory.md A.2); long-wave speeds
 /// c_L = sqrt(9E/8 rho), c_S = sqrt(3E/8 rho) with the lattice density rho = m/(l_s^2 B).
 ///
 /// Two consequences of not halving boundary masses and springs: rho is M/(LHB) times

@@ -13,7 +13,7 @@
 // |b_j| stays of the order of the junction forces and round-off never accumulates.
 //
 // Every active junction is one clamp of its step-start force: f = clamp(base + k_s dx, lo, hi) + off,
-// dx = x - x_start (physics.md B.17):
+// dx = x - x_start (theory.md B.17):
 //   sliding     (B.10)  base = f at step start, [lo, hi] = [-mu_d p, mu_d p], off = 0;
 //   dislocated  (B.11)  base = s g, the capped side is s cap(phi), the other is open (g may fall
 //                       below 0 within a step; separation is judged at commit), off = s f^n(phi).

@@ -1,6 +1,6 @@
 #pragma once
 // Durations of the sliding and dislocated states, t_s and t_d (Li et al. 2020, Eq. 12): Gaussian
-// truncated to t > 0 by rejection, so the density is renormalised and has no point mass (physics.md
+// truncated to t > 0 by rejection, so the density is renormalised and has no point mass (theory.md
 // B.14).
 //
 // A draw is keyed on (seed, block, junction id, purpose, the junction's own draw count), so a

@@ -87,7 +87,7 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
         .unit("rad").at_least(0).less_than(std::numbers::pi / 2);
     s.add("removal", &Params::removal,
           "Which junctions go when P_b falls: uniformly at random, the most loaded pinned ones first, or the "
-          "sliding and dislocated ones first (physics.md B.7).")
+          "sliding and dislocated ones first (theory.md B.7).")
         .one_of({"random", "most_loaded_pinned", "non_pinned_first"});
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     s.rule("initial_angle", angle_rule);
@@ -294,7 +294,7 @@ void ThreeStateJunctions::check_settled(const StageInfo& stage, const StageView&
         throw RunError(fmt::format(
             "{}: at the start of stage '{}', block {} (node {}) has a pinned junction at |f| = {:.6g} mu_s p, "
             "above the breaking threshold mu_s p = {:.6g} N; settling did not reach a state the junctions "
-            "can hold (physics.md B.18)",
+            "can hold (theory.md B.18)",
             name_, stage.name, i, nodes_[i], blocks_[i].max_pinned_force(x) / threshold_, threshold_));
     }
 }

@@ -14,7 +14,7 @@ namespace frictionlab {
 
 /// Three-state micro-contact friction: X. Li, Z. Zhao, J. Xiong, C. Liu, "2D numerical model for
 /// studying frictional sliding", Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2, §2.3 and
-/// Fig. 4, with the resolutions of physics.md B.
+/// Fig. 4, with the resolutions of theory.md B.
 ///
 /// Every interface block b carries N^b junctions (Eq. 8), each with the same normal load
 /// p = pi rbar^2 H_d (Eq. 7) and tangential stiffness k_s = 8 G* rbar (Mindlin; G = E/(2(1+nu)),
@@ -28,7 +28,7 @@ namespace frictionlab {
 ///                 tan phi(tau) = (1 - tau/t_d) tan phi0 while g = cap; frozen while g < cap  (Eq. 13)
 ///     t_s, t_d    Gaussian truncated to t > 0 by rejection                           (Eq. 12, B.14)
 ///
-/// State table (physics.md B; our reading of Fig. 4; judged at the end of each step):
+/// State table (theory.md B; our reading of Fig. 4; judged at the end of each step):
 ///
 ///     from -> to                      when                              force on entry
 ///     pinned -> sliding (C1)          |f| > mu_s p (strict)             s mu_d p, s = sign f; draw t_s
@@ -52,7 +52,7 @@ namespace frictionlab {
 /// P_b, so junctions are created, pinned and unloaded, as the load grows. When events are switched
 /// on, a pinned junction above mu_s p is a RunError.
 ///
-/// Readings where physics.md is silent (none contradicts it, so none needs an option):
+/// Readings where theory.md is silent (none contradicts it, so none needs an option):
 /// - entering a state at a commit starts its clock at that commit's time, not at the deadline that
 ///   triggered it; an adaptive stepper lands on next_event_time(), where the two coincide;
 /// - within a step a dislocated junction's g may pass below 0 (Eq. 15 continued linearly), so the

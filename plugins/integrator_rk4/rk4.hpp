@@ -9,7 +9,7 @@ namespace frictionlab {
 ///     k1 = f(t, y),  k2 = f(t + h/2, y + h/2 k1),  k3 = f(t + h/2, y + h/2 k2),  k4 = f(t + h, y + h k3)
 ///     y(t + h) = y + h/6 (k1 + 2 k2 + 2 k3 + k4)
 ///
-/// Discrete state is frozen over the four stages and committed once after the step (physics.md B.17),
+/// Discrete state is frozen over the four stages and committed once after the step (theory.md B.17),
 /// so every stage sees a force law that is a smooth function of the stage state.
 class Rk4 final : public Integrator {
 public:

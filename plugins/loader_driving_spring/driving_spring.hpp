@@ -8,7 +8,7 @@
 
 namespace frictionlab {
 
-/// Horizontal loading spring on the trailing edge (Li2020 Eq. 4, physics.md B.3):
+/// Horizontal loading spring on the trailing edge (Li2020 Eq. 4, theory.md B.3):
 ///     F_S = K_S (V (t - t0) - (x_h - x_h0))
 /// acting in +x on the driving point at height h above the lowest node of the node set. t0 and
 /// x_h0 are taken at the start of the first stage in which the loader is active, so F_S(t0) = 0;

@@ -22,7 +22,7 @@ ParamSpec<NormalLoad::Params> NormalLoad::spec() {
         .at_least(-1)
         .at_most(1);
     s.add("formula", &Params::formula,
-          "normalised: sums to F_N (physics.md B.1); paper_literal: Eq. 3 as printed, which sums to "
+          "normalised: sums to F_N (theory.md B.1); paper_literal: Eq. 3 as printed, which sums to "
           "F_N (1 + theta/N_x).")
         .one_of({"normalised", "paper_literal"});
     s.add("ramp_time", &Params::ramp_time,

@@ -8,13 +8,13 @@
 namespace frictionlab {
 
 /// Vertical load on the top surface, pushing down (-z), linear along x (Li2020 Eq. 3):
-///     normalised (physics.md B.1):  W_i = (F_N/N_x) [1 + theta (2i - N_x - 1)/(N_x - 1)]
+///     normalised (theory.md B.1):  W_i = (F_N/N_x) [1 + theta (2i - N_x - 1)/(N_x - 1)]
 ///     paper_literal (Eq. 3 as printed): W_i = (F_N/N_x) [1 + theta (2i - N_x)/N_x]
 /// for i = 1..N_x over the node set ordered by x. The normalised form sums to F_N exactly and puts
 /// (1 - theta) F_N/N_x on the trailing edge and (1 + theta) F_N/N_x on the leading edge; the
 /// literal one sums to F_N (1 + theta/N_x). theta > 0 loads the trailing (driven) edge less.
 /// With ramp_time > 0 the load grows linearly from 0 over that time, starting at the first stage
-/// in which the loader is active (the gradual loading of physics.md B.18).
+/// in which the loader is active (the gradual loading of theory.md B.18).
 ///
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class NormalLoad final : public Loader {

@@ -7,7 +7,7 @@
 
 namespace frictionlab {
 
-/// Normal contact of the interface nodes with a rigid base (Li2020 Eq. 5, physics.md B.5):
+/// Normal contact of the interface nodes with a rigid base (Li2020 Eq. 5, theory.md B.5):
 ///     P_b = -K_b (z_i - z0_i)  if z_i <= z0_i,   else 0,
 /// acting in +z, with K_b = stiffness_ratio * K (K the bulk's bond stiffness; Li2020 and
 /// Tromborg 2014 use K/2, the foundation stiffness of the same material). No damping, no

@@ -33,7 +33,7 @@ const std::vector<std::string> front_columns{"event", "block", "x", "distance", 
 
 ParamSpec<Precursors::Params> Precursors::spec() {
     ParamSpec<Params> s("Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
-                        "physics.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
+                        "theory.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
                         "as CSV tables and a summary with the global static coefficient.");
     s.add("criterion", &Params::criterion,
           "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
@@ -140,7 +140,7 @@ void Precursors::write(const RuptureEvent& e) {
 std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& info, bool run_ended) {
     std::string out;
     auto line = [&](std::string_view key, const std::string& value) { out += fmt::format("{}: {}\n", key, value); };
-    out += "# Rupture events (physics.md B.19, B.20). Numbers in SI units; null: not (yet) observed.\n";
+    out += "# Rupture events (theory.md B.19, B.20). Numbers in SI units; null: not (yet) observed.\n";
     line("run_ended", run_ended ? "true" : "false");
     line("events", std::to_string(s.events));
     line("global_slip_seen", s.global_seen ? "true" : "false");

@@ -15,7 +15,7 @@
 namespace frictionlab {
 
 /// Rupture events along the interface: the precursors of Li et al. (2020) Figs. 6-8 and the first
-/// global slip, detected as physics.md B.19 resolves the paper's undefined terms.
+/// global slip, detected as theory.md B.19 resolves the paper's undefined terms.
 /// Li, Zhao, Xiong & Liu, "A 2D model for frictional sliding", 2020, §3.1-3.2; cf. Rubinstein,
 /// Cohen & Fineberg, PRL 98, 226103 (2007), doi:10.1103/PhysRevLett.98.226103.
 ///

@@ -1,5 +1,5 @@
 #pragma once
-// When is an interface block "ruptured" at an observation? The two criteria of physics.md B.19,
+// When is an interface block "ruptured" at an observation? The two criteria of theory.md B.19,
 // as pure functions of arrays, so they are tested without a run.
 #include <Eigen/Core>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Rupture events along the interface from a history of observations (physics.md B.19), independent
+// Rupture events along the interface from a history of observations (theory.md B.19), independent
 // of a run so that it is tested on constructed histories.
 #include <cmath>
 #include <limits>

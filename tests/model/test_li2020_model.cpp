@@ -1,4 +1,4 @@
-// The Li et al. (2020) model assembled from scenes: the at-rest state after settling (physics.md
+// The Li et al. (2020) model assembled from scenes: the at-rest state after settling (theory.md
 // C.2), determinism, and that a scene simulates only the effects it names.
 #include <cmath>
 #include <cstring>
@@ -36,7 +36,7 @@ TEST_F(AtRest, NormalForcesCarryTheWholeLoadSymmetrically) {
     const double total = 400.0, mean = total / p.size();
     EXPECT_NEAR(p.sum(), total, 1e-6 * total);
     EXPECT_LE((p - p.reverse()).abs().maxCoeff(), 1e-6 * mean);
-    // Weakly non-uniform, heaviest at the edges: physics.md A.3's rest-state solve has 121 junctions
+    // Weakly non-uniform, heaviest at the edges: theory.md A.3's rest-state solve has 121 junctions
     // on an edge block against 104 on average (1.16, each count rounded to one junction).
     EXPECT_NEAR(p(0) / mean, 121.0 / 104.0, 0.015);
     EXPECT_GT(p.minCoeff() / mean, 0.95);
@@ -64,7 +64,7 @@ TEST_F(AtRest, NoJunctionIsAboveThresholdAndNothingMoves) {
     EXPECT_EQ(fixture_->field("junctions_dislocated").sum(), 0.0);
     const double p = M_PI * 1e-5 * 1e-5 * 3e8;
     EXPECT_NEAR(pinned, 400.0 / p, 41.0);  // each block rounds P_b / p within one junction
-    // The real contact area is N pi rbar^2 = F_N / H_d, 0.27 % of the nominal area (physics.md A.3).
+    // The real contact area is N pi rbar^2 = F_N / H_d, 0.27 % of the nominal area (theory.md A.3).
     const double area = pinned * fixture_->sim().quantities().find_scalar("junction_area")->value;
     EXPECT_NEAR(area / (0.1 * 0.005), 400.0 / 3e8 / (0.1 * 0.005), 0.01 * 0.0027);
     // Starting a stage with friction events on runs the law's threshold check (B.18 step 4).

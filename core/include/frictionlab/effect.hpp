@@ -2,7 +2,7 @@
 // One physical effect in the force pipeline (bulk springs, bond damping, base contact, a loader, a
 // friction law). The run assembles the pipeline from exactly the effects the scene names.
 //
-// Step structure (physics.md B.17): within one integrator step the effect's discrete state (junction
+// Step structure (theory.md B.17): within one integrator step the effect's discrete state (junction
 // states, anchors, counts, clocks) is frozen; add_forces() is a pure function of the stage state;
 // after the step is accepted, commit() judges and applies the state transitions once.
 #include <limits>

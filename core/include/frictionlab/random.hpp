@@ -42,7 +42,7 @@ inline double normal(const Key& k, std::uint64_t counter) {
     return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.14159265358979323846 * u2);
 }
 
-/// N(mean, sd) truncated to values > lower, by rejection (physics.md B.14): correctly normalised,
+/// N(mean, sd) truncated to values > lower, by rejection (theory.md B.14): correctly normalised,
 /// no point mass. `counter` advances by the number of draws used, so the next call draws afresh.
 inline double truncated_normal(const Key& k, std::uint64_t& counter, double mean, double sd, double lower) {
     for (;;) {

@@ -38,7 +38,7 @@ struct StageSpec {
     std::string name;
     SourceLocation where;
     double duration = 0;         // s, > 0
-    bool friction_events = true; // false while settling (physics.md B.18)
+    bool friction_events = true; // false while settling (theory.md B.18)
     /// Checked at the end of the stage: max node speed must be below this (m/s); inf = no check.
     double max_speed_at_end = std::numeric_limits<double>::infinity();
 };

@@ -9,7 +9,7 @@ struct StageInfo {
     int index = 0;
     double t_start = 0;   // s, simulated time at the start of the stage
     double duration = 0;  // s
-    /// False while settling: friction laws keep their discrete state (no breaking), physics.md B.18.
+    /// False while settling: friction laws keep their discrete state (no breaking), theory.md B.18.
     bool friction_events = true;
 };
 

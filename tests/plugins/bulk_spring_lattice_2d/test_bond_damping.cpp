@@ -1,4 +1,4 @@
-// Bond dashpots (Li2020 Eq. 2, physics.md B.4): forces depend on relative velocities only.
+// Bond dashpots (Li2020 Eq. 2, theory.md B.4): forces depend on relative velocities only.
 #include <random>
 
 #include <gtest/gtest.h>
@@ -102,7 +102,7 @@ TEST(BondDamping, ProjectedModeLeavesRigidRotationFree) {
 }
 
 TEST(BondDamping, FullVectorResistsRigidRotation) {
-    // The artefact physics.md B.4 notes: eta Omega (x_j - x_i) summed over a node's bonds. It
+    // The artefact theory.md B.4 notes: eta Omega (x_j - x_i) summed over a node's bonds. It
     // cancels inside; a mid-height node of the leading edge has bond vectors summing to (-3 l, 0)
     // and gets eta * 3 omega l along z.
     LatticeFixture f;

@@ -1,4 +1,4 @@
-// Dynamics of the free lattice under classical RK4 (physics.md C.1): energy conservation without
+// Dynamics of the free lattice under classical RK4 (theory.md C.1): energy conservation without
 // damping, monotonic decay with it, and the long-wave speeds c_L = sqrt(C11/rho),
 // c_S = sqrt(C44/rho) measured from pulse arrival times.
 #include <algorithm>
@@ -64,8 +64,8 @@ double undamped_energy_drift(double dt, int steps) {
 }
 
 // Classical RK4 removes a fraction (omega dt)^6/72 of a mode's energy per step. The stiffest mode
-// of the 41x9 lattice has omega_max dt = 0.29 at dt = 2e-7 (physics.md A.5), so a random field
-// loses ~14 % of its energy in 1e5 steps there: the 1e-6 target of physics.md C.1 holds only at a
+// of the 41x9 lattice has omega_max dt = 0.29 at dt = 2e-7 (theory.md A.5), so a random field
+// loses ~14 % of its energy in 1e5 steps there: the 1e-6 target of theory.md C.1 holds only at a
 // tenth of that step, where (omega_max dt)^6/72 * 1e5 = 8e-7 bounds the drift of any field.
 TEST(LatticeDynamics, UndampedEnergyIsConservedOver1e5Steps) {
     const double drift = undamped_energy_drift(2e-8, 100000);
@@ -139,12 +139,12 @@ double pulse_speed(bool transverse) {
 TEST(LatticeDynamics, LongWaveSpeedsAreThoseOfTheElasticConstants) {
     const double E = 3e9, rho = 1180;
     const double c_L = std::sqrt(9 * E / (8 * rho)), c_S = std::sqrt(3 * E / (8 * rho));  // C11 = 9E/8, C44 = 3E/8
-    EXPECT_NEAR(c_L, 1691, 1);  // physics.md A.4
+    EXPECT_NEAR(c_L, 1691, 1);  // theory.md A.4
     EXPECT_NEAR(c_S, 976, 1);
     const double measured_L = pulse_speed(false), measured_S = pulse_speed(true);
     RecordProperty("c_L", fmt::format("{:.1f}", measured_L));
     RecordProperty("c_S", fmt::format("{:.1f}", measured_S));
-    EXPECT_NEAR(measured_L / c_L, 1, 0.05);  // dispersion allowed (physics.md C.1)
+    EXPECT_NEAR(measured_L / c_L, 1, 0.05);  // dispersion allowed (theory.md C.1)
     EXPECT_NEAR(measured_S / c_S, 1, 0.05);
 }
 

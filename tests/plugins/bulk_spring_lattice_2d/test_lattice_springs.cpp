@@ -1,4 +1,4 @@
-// Exact consequences of the lattice springs (physics.md C.1): elastic constants, invariance under
+// Exact consequences of the lattice springs (theory.md C.1): elastic constants, invariance under
 // rigid motions, and the vectorised bond families against a plain per-bond loop.
 #include <limits>
 #include <random>
@@ -46,7 +46,7 @@ void expect_uniaxial_response(const std::string& law, double eps, double toleran
             if (ix == nx - 1) leading_total += n.x;
         }
     // The end face carries sigma B (H + 3 l_s/4), not sigma B H: edge rows keep full straight
-    // springs (masses and springs are not halved at the boundary, physics.md B.20), so the strip
+    // springs (masses and springs are not halved at the boundary, theory.md B.20), so the strip
     // acts like a continuum a quarter-spacing thicker than H.
     EXPECT_NEAR(-leading_total, sigma * B * (f.body().height + 0.75 * l), tolerance * sigma * B * f.body().height);
 }

@@ -18,7 +18,7 @@ TEST(SpringLattice2d, BodyFollowsLi2020Defaults) {
     EXPECT_DOUBLE_EQ(b.height, 0.02);
     EXPECT_DOUBLE_EQ(b.width, 0.005);
     EXPECT_DOUBLE_EQ(b.bond_stiffness, 0.75 * 0.005 * 3e9);  // K = 3BE/4 = 1.125e7 N/m
-    // Every node has M/N, edges and corners included (physics.md B.20).
+    // Every node has M/N, edges and corners included (theory.md B.20).
     EXPECT_TRUE((b.mass == 0.0118 / 369).all());
     EXPECT_NEAR(b.mass.sum(), 0.0118, 1e-15);
     EXPECT_NEAR(f.lattice.damping_coefficient(), std::sqrt(0.5 * 1.125e7 * 0.0118 / 369), 1e-12);

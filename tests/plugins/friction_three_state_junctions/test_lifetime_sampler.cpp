@@ -1,4 +1,4 @@
-// Statistics of the keyed truncated-Gaussian lifetimes (Eq. 12, physics.md B.14).
+// Statistics of the keyed truncated-Gaussian lifetimes (Eq. 12, theory.md B.14).
 #include <cmath>
 #include <numbers>
 #include <vector>

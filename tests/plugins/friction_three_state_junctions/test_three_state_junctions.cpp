@@ -1,4 +1,4 @@
-// Each transition of physics.md B (Fig. 4 of Li et al. 2020) with its exact force before and after.
+// Each transition of theory.md B (Fig. 4 of Li et al. 2020) with its exact force before and after.
 // Forces are those on the block (-sum_j f_j); a junction that resists +x motion pushes the block -x.
 #include <cmath>
 #include <limits>

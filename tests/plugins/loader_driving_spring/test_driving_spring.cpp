@@ -1,4 +1,4 @@
-// Loading spring of Li2020 Eq. 4 with the time and displacement origins of physics.md B.3.
+// Loading spring of Li2020 Eq. 4 with the time and displacement origins of theory.md B.3.
 #include <gtest/gtest.h>
 
 #include "driving_spring.hpp"
@@ -49,7 +49,7 @@ DrivingSpring::Params at_height(double h, const std::string& attachment = "node"
 }
 
 TEST(DrivingSpring, AttachesToTheTrailingEdgeNodeAtHeightH) {
-    SpringOnLattice s;  // h = 5 mm: row 2 of the trailing edge (physics.md A.2)
+    SpringOnLattice s;  // h = 5 mm: row 2 of the trailing edge (theory.md A.2)
     ASSERT_EQ(s.spring.attachment().size(), 1u);
     EXPECT_EQ(s.spring.attachment()[0].node, 2 * nx);
     EXPECT_EQ(s.spring.attachment()[0].weight, 1.0);

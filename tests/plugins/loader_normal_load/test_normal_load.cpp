@@ -1,4 +1,4 @@
-// Top load of Li2020 Eq. 3, normalised (physics.md B.1) or as printed, with its ramp.
+// Top load of Li2020 Eq. 3, normalised (theory.md B.1) or as printed, with its ramp.
 #include <limits>
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Compression-only base contact of Li2020 Eq. 5 (physics.md B.5).
+// Compression-only base contact of Li2020 Eq. 5 (theory.md B.5).
 #include <gtest/gtest.h>
 
 #include "frictionlab/errors.hpp"

@@ -1,4 +1,4 @@
-// Li2020 Sec. 3.1 initialisation without friction (physics.md C.2, B.18): the normal load ramped
+// Li2020 Sec. 3.1 initialisation without friction (theory.md C.2, B.18): the normal load ramped
 // over 2 ms and held, 10 ms in all at dt = 2e-7 s with bond damping, must settle to a symmetric
 // rest state whose base reactions carry exactly F_N.
 #include <gtest/gtest.h>

@@ -1,6 +1,8 @@
 // The energy balance on a real scene (tiny lattice, base contact, normal load, fast driving spring,
 // three-state junctions, bond damping, RK4), run by the `frictionlab` command as a user runs it, and
 // the cost rule: a run without the energy observer does no work accounting.
+#include <unistd.h>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -40,7 +42,10 @@ struct LoadedScene {
 class EnergyScene : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        const fs::path dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "observer_energy_work" / "scene";
+        // ctest runs each test of the suite in its own process, concurrently: one folder per process.
+        const fs::path dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "work" / "EnergyScene" /
+                             std::to_string(getpid());
+        fs::remove_all(dir);
         fs::create_directories(dir);
         coarse_ = new testing::Columns(run_cli(dir, "", "dt"));
         fine_ = new testing::Columns(run_cli(dir, "--set integrator.dt=1e-7", "dt_half"));

@@ -1,4 +1,4 @@
-// The two rupture criteria of physics.md B.19, on hand-set junction counts and slip histories.
+// The two rupture criteria of theory.md B.19, on hand-set junction counts and slip histories.
 #include <gtest/gtest.h>
 
 #include "rupture_criterion.hpp"

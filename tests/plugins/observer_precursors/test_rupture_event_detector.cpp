@@ -1,4 +1,4 @@
-// RuptureEventDetector on constructed histories (physics.md B.19, B.20): ruptures switched on and
+// RuptureEventDetector on constructed histories (theory.md B.19, B.20): ruptures switched on and
 // off per block at chosen times, so every expected start, extent and front time is known exactly.
 #include <cmath>
 #include <vector>
