@@ -34,7 +34,9 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
                         "Fig. 9, Eq. 17): normalised pinned count, junction fractions, slip, velocity, friction, "
                         "normal and neighbour bond forces per block; junction totals of the whole interface.");
     s.add("blocks", &Params::blocks,
-          "Interface blocks to follow, 0-based from the trailing edge (the paper's block 6 is 5).");
+          "Interface blocks to follow, 0-based from the trailing edge (the paper's block 6 is 5).")
+        .unit("1")
+        .at_least(0);
     s.add("prefix", &Params::prefix,
           "File names: <prefix>.csv for the whole interface, <prefix>_block_<i>.csv per block, in the output "
           "directory.");

@@ -1,0 +1,178 @@
+// Conformance of every type in the build's plugin directory, by kind:
+//  - every type and key is documented (doc; a unit for every number) and `frictionlab example` of
+//    every type is itself a valid scene component;
+//  - every friction law resists a small forward displacement and velocity of a loaded, stuck
+//    interface with a finite force, publishes friction_force, and is deterministic for a seed;
+//  - every bulk model provides the standard node sets and feels no force under rigid translation.
+#include <cmath>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <spdlog/logger.h>
+
+#include "frictionlab/plugin_search.hpp"
+#include "frictionlab/registry.hpp"
+#include "frictionlab/scene.hpp"
+#include "frictionlab/system.hpp"
+
+namespace frictionlab {
+namespace {
+
+constexpr Kind all_kinds[] = {Kind::bulk_model, Kind::friction_law, Kind::loader, Kind::integrator, Kind::observer};
+
+Registry& shipped() {
+    static Registry registry;
+    static const bool loaded = (load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR}), true);
+    (void)loaded;
+    return registry;
+}
+
+ParamValues defaults(const TypeInfo& t) {
+    ParamValues v;
+    for (const auto& p : t.params) v[p.key] = p.default_value;
+    return v;
+}
+
+TEST(Conformance, EveryTypeAndKeyIsDocumented) {
+    for (Kind kind : all_kinds)
+        for (const TypeInfo* t : shipped().types(kind)) {
+            EXPECT_FALSE(t->summary.empty()) << t->type;
+            for (const auto& p : t->params) {
+                EXPECT_FALSE(p.doc.empty()) << t->type << "." << p.key;
+                if (p.type == ValueType::real || p.type == ValueType::real_list)
+                    EXPECT_FALSE(p.unit.empty()) << t->type << "." << p.key << " is a number without a unit";
+            }
+        }
+    EXPECT_GE(shipped().types(Kind::friction_law).size(), 5u);
+}
+
+/// `snippet` placed as the scene's component of its kind, in an otherwise minimal valid scene.
+std::string scene_with(Kind kind, const std::string& snippet) {
+    std::string indented;
+    std::istringstream lines(snippet);
+    for (std::string line; std::getline(lines, line);) indented += "    " + line + "\n";
+    const auto section = [&](Kind k, const std::string& fallback) {
+        if (k != kind) return fallback;
+        const bool list = k == Kind::loader || k == Kind::observer;
+        return std::string(to_string(k) == "bulk_model" ? "bulk" : k == Kind::friction_law ? "friction"
+                           : k == Kind::loader ? "loaders" : k == Kind::observer ? "observers" : "integrator") +
+               ":\n" + (list ? "  -\n" : "") + indented;
+    };
+    return "output: out\n" + section(Kind::bulk_model, "bulk: {type: spring_lattice_2d}\n") +
+           section(Kind::friction_law, "") + section(Kind::loader, "") +
+           section(Kind::integrator, "integrator: {type: rk4}\n") + section(Kind::observer, "") +
+           "stages:\n  - {name: load, duration: 1.0e-3}\n";
+}
+
+TEST(Conformance, EveryExampleIsAValidComponent) {
+    for (Kind kind : all_kinds)
+        for (const TypeInfo* t : shipped().types(kind)) {
+            const std::string text = scene_with(kind, example_yaml(*t));
+            Diagnostics d;
+            auto document = SceneDocument::parse(text, "example", {}, d);
+            document.validate(shipped(), d);
+            EXPECT_TRUE(d.empty()) << to_string(kind) << "/" << t->type << ":\n" << d.format() << "\n" << text;
+        }
+}
+
+/// A small lattice whose interface carries 10 N per block, stuck, then nudged forward.
+class FrictionLawProbe {
+public:
+    FrictionLawProbe(const TypeInfo& law, std::uint64_t seed) {
+        ParamValues lattice = defaults(*shipped().find(Kind::bulk_model, "spring_lattice_2d"));
+        lattice["nx"] = std::int64_t{11}, lattice["nz"] = std::int64_t{3};
+        lattice["length"] = 0.025, lattice["height"] = 0.005;
+        bulk_ = shipped().create<BulkModel>("spring_lattice_2d", lattice, context(seed, nullptr));
+        const Body& body = bulk_->body();
+        const auto n = static_cast<Index>(body.nodes("interface").size());
+        quantities_.field("normal_force", "interface", n, "N", "test") = Eigen::ArrayXd::Constant(n, 10.0);
+        auto effect = shipped().create<FrictionLaw>(law.type, defaults(law), context(seed, &body));
+        system_ = std::make_unique<System>(body, aux_.count);
+        system_->add_effect(std::move(effect));
+        Eigen::Ref<Eigen::ArrayXd> aux = system_->initial_state().tail(aux_.count).array();
+        system_->for_each_effect([&](const Effect& e) { e.initialise_aux(aux); });
+        // Settle: a few commits at rest, so laws whose contacts follow the normal force form them.
+        system_->begin_stage({"settle", 0, 0.0, 1e-5, false});
+        for (int k = 1; k <= 10; ++k) system_->begin_step(), system_->accept(k * 1e-6, system_->y());
+        system_->begin_stage({"load", 1, system_->time(), 1.0, true});
+    }
+
+    /// x-forces on the interface nodes with every interface node displaced by dx and moving at v.
+    Eigen::ArrayXd interface_force(double dx, double v) {
+        const Body& body = bulk_->body();
+        const auto& nodes = body.nodes("interface");
+        const Index n = body.size();
+        Eigen::VectorXd y = system_->y(), dy(y.size());
+        for (Index node : nodes) y(node) += dx, y(2 * n + node) = v;
+        system_->begin_step();
+        system_->derivative(system_->time(), y, dy);
+        // The lattice is not in the pipeline, so the force on an interface node is the law's alone.
+        Eigen::ArrayXd f(static_cast<Index>(nodes.size()));
+        for (std::size_t k = 0; k < nodes.size(); ++k) f(static_cast<Index>(k)) = dy(2 * n + nodes[k]) * body.mass(nodes[k]);
+        return f;
+    }
+    const Quantities& quantities() const { return quantities_; }
+
+private:
+    Context context(std::uint64_t seed, const Body* body) {
+        return Context{log_, seed, body, &quantities_, &aux_, "friction"};
+    }
+    spdlog::logger log_{"test"};
+    Quantities quantities_;
+    AuxAllocator aux_;
+    std::unique_ptr<BulkModel> bulk_;
+    std::unique_ptr<System> system_;
+};
+
+TEST(Conformance, EveryFrictionLawResistsForwardMotionOfAStuckInterface) {
+    ASSERT_GE(shipped().types(Kind::friction_law).size(), 5u);
+    for (const TypeInfo* law : shipped().types(Kind::friction_law)) {
+        SCOPED_TRACE(law->type);
+        FrictionLawProbe probe(*law, 7);
+        EXPECT_NE(probe.quantities().find_field("friction_force"), nullptr) << law->type;
+        for (double dx : {1e-9, 1e-8, 1e-7})
+            for (double v : {1e-6, 1e-4}) {
+                const Eigen::ArrayXd f = probe.interface_force(dx, v);
+                EXPECT_TRUE(f.allFinite()) << law->type;
+                EXPECT_TRUE((f <= 0).all()) << law->type << ": a block pushed forward must be held back, dx = " << dx
+                                            << ", v = " << v << ", f = " << f.transpose();
+                EXPECT_LT(f.sum(), 0) << law->type << " gives no resistance at dx = " << dx << ", v = " << v;
+            }
+    }
+}
+
+TEST(Conformance, EveryFrictionLawIsDeterministicForASeed) {
+    for (const TypeInfo* law : shipped().types(Kind::friction_law)) {
+        FrictionLawProbe a(*law, 11), b(*law, 11);
+        for (double dx : {1e-8, 1e-6}) EXPECT_TRUE((a.interface_force(dx, 1e-5) == b.interface_force(dx, 1e-5)).all())
+                                           << law->type;
+    }
+}
+
+TEST(Conformance, EveryBulkModelHasTheStandardNodeSetsAndNoForceUnderTranslation) {
+    spdlog::logger log("test");
+    for (const TypeInfo* t : shipped().types(Kind::bulk_model)) {
+        Quantities q;
+        AuxAllocator aux;
+        Context ctx{log, 0, nullptr, &q, &aux, "bulk"};
+        auto bulk = shipped().create<BulkModel>(t->type, defaults(*t), ctx);
+        const Body& body = bulk->body();
+        for (const char* set : {"all", "top", "interface", "trailing_edge", "leading_edge"})
+            EXPECT_FALSE(body.nodes(set).empty()) << t->type << " node set " << set;
+        EXPECT_TRUE((body.mass > 0).all()) << t->type;
+        EXPECT_GT(body.bond_stiffness, 0) << t->type;
+        Context with_body{log, 0, &body, &q, &aux, "bulk"};
+        System system(body, aux.count);
+        for (auto& e : bulk->effects(with_body)) system.add_effect(std::move(e));
+        Eigen::VectorXd y = system.y(), dy(y.size());
+        const Index n = body.size();
+        y.head(n).array() += 1e-3, y.segment(n, n).array() -= 2e-4;  // rigid translation, at rest
+        system.derivative(0, y, dy);
+        const double scale = body.bond_stiffness * body.spacing;
+        EXPECT_LT((dy.segment(2 * n, 2 * n).array() * body.mass.replicate(2, 1)).abs().maxCoeff(), 1e-9 * scale)
+            << t->type;
+    }
+}
+
+}  // namespace
+}  // namespace frictionlab
