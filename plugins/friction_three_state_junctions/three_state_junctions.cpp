@@ -14,6 +14,9 @@ namespace frictionlab {
 
 namespace {
 
+/// More junctions than this on one block means the run has gone wrong (400 N at r = 1 um is ~1e4).
+constexpr double max_junctions_per_block = 1e6;
+
 using Params = ThreeStateJunctions::Params;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -257,6 +260,12 @@ void ThreeStateJunctions::decay_angle(BlockJunctions& b, Index j, double t) cons
 
 void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double x) {
     const double ratio = std::max(0.0, (*normal_force_)[i] / p_);
+    // An exploding run makes P_b absurd within a step; stop it here rather than allocate junctions
+    // until memory runs out (the run's runaway check only looks every few steps).
+    if (!(ratio <= max_junctions_per_block))
+        throw RunError(fmt::format("{}: block {} has a normal force of {:.3g} N, which would need {:.3g} junctions "
+                                   "(more than {:.0e}): the run is unstable, or p is far too small",
+                                   name_, i, (*normal_force_)[i], ratio, max_junctions_per_block));
     const auto low = static_cast<Index>(std::floor(ratio + count_tolerance));
     const auto high = static_cast<Index>(std::ceil(ratio - count_tolerance));
     while (b.size() < low) b.add_pinned(x);
