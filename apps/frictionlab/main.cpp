@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
     run->add_option("scene", scene_file, "Scene file (YAML)")->required();
     run->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
     run->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
-    run->add_flag("--force", force, "Replace the output directory if it exists");
+    run->add_flag("--force", force, "Replace the output directory if it exists, and run a time step above the estimated stable one");
     common.attach(*run);
 
     auto* check = app.add_subcommand("check", "Validate a scene; report every error with file:line:column");

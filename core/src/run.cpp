@@ -168,6 +168,7 @@ class SceneRun {
 public:
     SceneRun(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options)
         : scene_(scene), registry_(registry), log_(log), options_(options), sim_(scene, registry, log) {
+        sim_.refuse_unstable_steps(!options.force);
         // After the components accepted their parameters, so a refusal leaves no directory behind.
         output_ = prepare_output_directory(scene.output_directory, options.force);
         for (const auto& o : scene.observers)
@@ -194,7 +195,9 @@ public:
             record.error = e.what();
             record.summary = summary();
             record.write(output_);
-            throw RunError(fmt::format("{} (outputs so far are in {})", e.what(), output_.string()));
+            const std::string message = fmt::format("{} (outputs so far are in {})", e.what(), output_.string());
+            if (dynamic_cast<const InputError*>(&e)) throw InputError(message);  // e.g. a refused time step
+            throw RunError(message);
         }
         finish_observers();
         record.status = "completed";

@@ -58,6 +58,16 @@ void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy,
     ++evaluations_;
 }
 
+void System::effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+    const Index n = layout_.nodes;
+    dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    dy.tail(layout_.size() - 2 * n).setZero();
+    ForceView f = forces_of(dy, layout_);
+    active_.at(active_index)->add_forces(view_of(y, layout_, t), f);
+    f.fx *= inverse_mass_;
+    f.fz *= inverse_mass_;
+}
+
 void System::begin_step() {
     std::fill(pending_work_.begin(), pending_work_.end(), 0.0);
     const StageView s = state();

@@ -29,6 +29,8 @@ public:
     SemiImplicitEuler(const Params& p, const Context&);
     double step(System& system, double max_dt) override;
     double nominal_dt() const override { return dt_; }
+    /// Stable for h |lambda| < 2: the undamped limit omega h < 2, and (c/m) h < 2 for damping.
+    double stability_radius() const override { return 2.0; }
 
 private:
     double dt_;

@@ -83,8 +83,16 @@ TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
     EXPECT_NE(bad.output.find("integrator.dt"), std::string::npos) << bad.output;
 }
 
-TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
+TEST_F(Cli, AStepAboveTheStableLimitIsRefused) {
     auto r = frictionlab("run -q " + scene("unstable.yaml"), dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("above the estimated stable step"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("set by bond damping"), std::string::npos) << r.output;  // what sets the limit
+}
+
+TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
+    // --force runs the refused step anyway, so the run itself fails.
+    auto r = frictionlab("run -q --force " + scene("unstable.yaml"), dir_);
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_NE(r.output.find("block"), std::string::npos) << r.output;  // says where it went wrong
     EXPECT_NE(r.output.find("step"), std::string::npos) << r.output;

@@ -1,6 +1,7 @@
 // The Li et al. (2020) model assembled from scenes: the at-rest state after settling (theory.md
 // C.2), determinism, and that a scene simulates only the effects it names.
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include <gtest/gtest.h>
@@ -8,6 +9,8 @@
 #include "cli.hpp"
 #include "csv.hpp"
 #include "scene_fixture.hpp"
+#include "frictionlab/errors.hpp"
+#include "frictionlab/stability.hpp"
 
 namespace frictionlab {
 namespace {
@@ -91,7 +94,9 @@ TEST(Determinism, SameSeedSameBitsOtherSeedOtherHistory) {
 /// costs exactly its four force evaluations.
 TEST(OnlyWhatTheSceneNames, NoFrictionNoDampingMeansNoSuchWork) {
     SceneFixture f(scene("bare_lattice.yaml"));
-    f.run_all_stages();
+    const StageInfo stage = f.sim().begin_stage(0);  // includes the one-off stable-step estimate
+    const long long before = f.sim().system().evaluations();
+    f.sim().advance_to(stage.t_start + stage.duration);
     const auto pipeline = f.sim().system().pipeline();
     ASSERT_EQ(pipeline.size(), 3u);
     EXPECT_EQ(pipeline[0].rfind("lattice springs", 0), 0u) << pipeline[0];
@@ -99,8 +104,8 @@ TEST(OnlyWhatTheSceneNames, NoFrictionNoDampingMeansNoSuchWork) {
     EXPECT_EQ(pipeline[2].rfind("normal load", 0), 0u) << pipeline[2];
     EXPECT_EQ(f.sim().quantities().find_field("junctions_pinned"), nullptr);
     EXPECT_EQ(f.sim().quantities().find_field("friction_force"), nullptr);
-    EXPECT_EQ(f.sim().system().evaluations(), 4 * f.sim().system().step_index());
     EXPECT_EQ(f.sim().system().step_index(), 1000);
+    EXPECT_EQ(f.sim().system().evaluations() - before, 4 * f.sim().system().step_index());
 }
 
 /// The baseline slider loaded at 20 mm/s through settling, one precursor and the first global slip
@@ -145,6 +150,66 @@ TEST(FastLoadingRegression, LoadingCurveAndRuptureEvents) {
     EXPECT_NEAR(events["force_ratio"][1], 0.417, 0.03 * 0.417);
     EXPECT_GT(events["front_speed"][1], 300.0);
     EXPECT_LT(events["front_speed"][1], 1100.0);
+}
+
+/// The stable step estimated before a stage runs (theory.md A.5) separates stable from unstable
+/// runs: 0.95 of it settles to rest, 1.1 of it blows up within the 10 ms settle (measured: the true
+/// limit lies between 1.0 and 1.05 of the estimate), and a step above it is refused, naming the effect.
+class StableStep : public ::testing::Test {
+protected:
+    static double limit(const std::vector<std::string>& overrides = {}) {
+        SceneFixture f(scene("settle_400N.yaml"), overrides);
+        f.sim().refuse_unstable_steps(false);
+        f.sim().begin_stage(0);
+        return estimate_stability(f.sim().system(), 2.785).dt_limit;
+    }
+    static std::vector<std::string> with_dt(double dt) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.6e", dt);
+        return {std::string("integrator.dt=") + value};
+    }
+};
+
+TEST_F(StableStep, EstimateMatchesTheEigenAnalysisAndSeparatesStableFromUnstableRuns) {
+    const double dt_max = limit();
+    // theory.md A.5: (c/m)_max dt = 0.99 at dt = 2e-7, so about 2.785 / 0.99 * 2e-7 = 5.6e-7 s.
+    EXPECT_NEAR(dt_max, 5.6e-7, 0.1 * 5.6e-7);
+
+    SceneFixture below(scene("settle_400N.yaml"), with_dt(0.95 * dt_max));
+    EXPECT_NO_THROW(below.run_all_stages());
+    const StageView s = below.sim().system().state();
+    EXPECT_LT((s.vx.square() + s.vz.square()).sqrt().maxCoeff(), 1e-6);  // at rest, as the stage requires
+
+    SceneFixture above(scene("settle_400N.yaml"), with_dt(1.1 * dt_max));
+    above.sim().refuse_unstable_steps(false);
+    bool blew_up = false;
+    try {
+        above.run_all_stages();
+        const StageView a = above.sim().system().state();
+        blew_up = (a.vx.square() + a.vz.square()).sqrt().maxCoeff() > 1.0;  // m/s: nothing physical here
+    } catch (const RunError&) {
+        blew_up = true;  // non-finite, runaway or absurd normal force
+    }
+    EXPECT_TRUE(blew_up);
+}
+
+TEST_F(StableStep, AStepAboveTheLimitIsRefusedNamingTheEffectThatSetsIt) {
+    SceneFixture f(scene("settle_400N.yaml"), {"integrator.dt=8e-7"});
+    try {
+        f.sim().begin_stage(0);
+        FAIL() << "dt = 8e-7 s should be refused";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("bond damping"), std::string::npos) << message;
+        EXPECT_NE(message.find("--force"), std::string::npos) << message;
+    }
+}
+
+TEST_F(StableStep, TheDampingLimitOfFinerLatticesAtThePapersStep) {
+    // theory.md A.5: at dt = 2e-7 s, 101 x 21 is stable though close to the limit; 201 x 41 is not.
+    EXPECT_GT(limit({"bulk.nx=101", "bulk.nz=21"}), 2e-7);
+    EXPECT_LT(limit({"bulk.nx=101", "bulk.nz=21"}), 2.6e-7);
+    EXPECT_LT(limit({"bulk.nx=201", "bulk.nz=41"}), 2e-7);
 }
 
 }  // namespace

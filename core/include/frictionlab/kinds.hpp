@@ -1,6 +1,7 @@
 #pragma once
 // The kinds of plugin a scene names. Each is a small interface in the language of the physics.
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -56,6 +57,10 @@ public:
     virtual double step(System&, double max_dt) = 0;
     /// The step the integrator is configured for (fixed steppers) or starts from (adaptive).
     virtual double nominal_dt() const = 0;
+    /// The radius |h lambda| within which the scheme is stable for every eigenvalue lambda of the
+    /// linearised system in the closed left half-plane (RK4: 2.785, its real-axis limit, the
+    /// smallest along the boundary there). Infinity: no limit known.
+    virtual double stability_radius() const { return std::numeric_limits<double>::infinity(); }
 };
 
 }  // namespace frictionlab

@@ -35,8 +35,12 @@ public:
     /// A context for components built later against this simulation (observers).
     Context context(const std::string& name);
 
-    /// Starts stage `index` of the scene at the current time and logs its pipeline.
+    /// Starts stage `index` of the scene at the current time and logs its pipeline. Estimates the
+    /// stable step of the stage's pipeline (stability.hpp) and throws InputError, naming the limit
+    /// and the effect that sets it, if the integrator's step is above it, unless told not to.
     StageInfo begin_stage(std::size_t index);
+    /// Whether begin_stage refuses a step above the estimated stable step (default) or only warns.
+    void refuse_unstable_steps(bool refuse) { refuse_unstable_ = refuse; }
     /// One integrator step, no longer than max_dt. Throws RunError, naming the step, time, block
     /// and quantity, if the state is no longer finite.
     double step(double max_dt);
@@ -52,6 +56,7 @@ public:
 
 private:
     void check_bounded() const;
+    void check_stability(const StageInfo& stage);
     void record_plugin(const ComponentSpec& component, Kind kind);
 
     const Scene& scene_;
@@ -63,6 +68,7 @@ private:
     std::unique_ptr<BulkModel> bulk_;  // owns the Body the system refers to: declared first
     std::unique_ptr<Integrator> integrator_;
     std::unique_ptr<System> system_;
+    bool refuse_unstable_ = true;
 };
 
 }  // namespace frictionlab

@@ -37,6 +37,9 @@ public:
     /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
     /// to its work with that weight, so the work is integrated to the integrator's own order.
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
+    /// dy/dt with only one active effect of the pipeline (index into pipeline()), for diagnostics
+    /// such as the stability estimate that names the effect limiting the step.
+    void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
     void begin_step();
     /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);

@@ -1,0 +1,25 @@
+#pragma once
+// The stable time step of an assembled system, estimated before a stage runs (theory.md A.5): the
+// largest |eigenvalue| of the pipeline linearised at the current state, discrete state frozen, set
+// against the integrator's stability radius. Each effect is also linearised alone, so a refusal
+// names the effect that sets the limit (springs, damping, contact, junctions, a stiff friction law).
+#include <limits>
+#include <string>
+
+namespace frictionlab {
+
+class System;
+
+struct StabilityEstimate {
+    double lambda_max = 0;  // 1/s, largest |eigenvalue| of the linearised system
+    double dt_limit = std::numeric_limits<double>::infinity();  // stability radius / lambda_max, s
+    std::string limiting_effect;  // describe() of the effect with the largest |eigenvalue| alone
+    double limiting_lambda = 0;   // that effect's own largest |eigenvalue|, 1/s
+};
+
+/// Power iteration on finite-difference Jacobian-vector products of System::derivative (a few
+/// hundred force evaluations). The linearisation is exact for linear effects; for a nonlinear one
+/// (contact at its kink, rate-and-state) it is taken at the current state.
+StabilityEstimate estimate_stability(System& system, double stability_radius);
+
+}  // namespace frictionlab
