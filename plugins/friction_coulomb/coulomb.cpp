@@ -1,5 +1,7 @@
 #include "coulomb.hpp"
 
+#include "frictionlab/friction_rules.hpp"
+
 #include <fmt/format.h>
 
 #include "frictionlab/errors.hpp"
@@ -8,11 +10,7 @@ namespace frictionlab {
 
 namespace {
 
-std::string order_rule(const Coulomb::Params& p) {
-    if (p.mu_k <= p.mu_s) return {};
-    return fmt::format("mu_k = {:.4g} exceeds mu_s = {:.4g}: a re-stuck block would carry more than it takes to "
-                       "break it", p.mu_k, p.mu_s);
-}
+std::string order_rule(const Coulomb::Params& p) { return moving_not_above_static("mu_k", p.mu_k, p.mu_s); }
 
 const Coulomb::Params& validated(const Coulomb::Params& p) {
     if (const std::string error = order_rule(p); !error.empty()) throw InputError("coulomb: " + error);

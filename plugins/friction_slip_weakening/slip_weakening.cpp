@@ -1,5 +1,7 @@
 #include "slip_weakening.hpp"
 
+#include "frictionlab/friction_rules.hpp"
+
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -10,10 +12,7 @@ namespace frictionlab {
 
 namespace {
 
-std::string order_rule(const SlipWeakening::Params& p) {
-    if (p.mu_d <= p.mu_s) return {};
-    return fmt::format("mu_d = {:.4g} exceeds mu_s = {:.4g}: the strength would grow with slip", p.mu_d, p.mu_s);
-}
+std::string order_rule(const SlipWeakening::Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
 const SlipWeakening::Params& validated(const SlipWeakening::Params& p) {
     if (const std::string error = order_rule(p); !error.empty()) throw InputError("slip_weakening: " + error);

@@ -1,5 +1,7 @@
 #include "three_state_junctions.hpp"
 
+#include "frictionlab/friction_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -33,11 +35,7 @@ std::string angle_rule(const Params& p) {
                        "(Li et al. 2020, Eq. 11) divides by 1 - mu_d tan(phi0)", m);
 }
 
-std::string order_rule(const Params& p) {
-    if (p.mu_d <= p.mu_s) return {};
-    return fmt::format("mu_d = {:.4g} exceeds mu_s = {:.4g}: a sliding junction would carry more force than "
-                       "it takes to break a pinned one", p.mu_d, p.mu_s);
-}
+std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
 ThreeStateJunctions::Removal parse_removal(const std::string& s) {
     if (s == "random") return ThreeStateJunctions::Removal::random;

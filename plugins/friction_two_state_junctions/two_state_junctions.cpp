@@ -1,5 +1,7 @@
 #include "two_state_junctions.hpp"
 
+#include "frictionlab/friction_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,11 +18,7 @@ using Params = TwoStateJunctions::Params;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-std::string order_rule(const Params& p) {
-    if (p.mu_d <= p.mu_s) return {};
-    return fmt::format("mu_d = {:.4g} exceeds mu_s = {:.4g}: a slipping junction would carry more force than "
-                       "it takes to break a pinned one", p.mu_d, p.mu_s);
-}
+std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
 const Params& validated(const Params& p) {
     if (const std::string error = order_rule(p); !error.empty()) throw InputError("two_state_junctions: " + error);

@@ -6,13 +6,9 @@
 
 namespace frictionlab {
 
-ParamSpec<Rk4::Params> Rk4::spec() {
-    ParamSpec<Params> s("Classical 4th-order Runge-Kutta, fixed step; discrete state frozen within a step.");
-    s.add("dt", &Params::dt, "Time step.").unit("s").greater_than(0);
-    return s;
-}
+ParamSpec<Rk4::Params> Rk4::spec() { return fixed_step_spec("Classical 4th-order Runge-Kutta, fixed step; discrete state frozen within a step."); }
 
-Rk4::Rk4(const Params& p, const Context&) : dt_(p.dt) {}
+Rk4::Rk4(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 
 double Rk4::step(System& system, double max_dt) {
     const double h = std::min(dt_, max_dt);

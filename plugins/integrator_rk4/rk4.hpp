@@ -1,6 +1,5 @@
 #pragma once
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/fixed_step_integrator.hpp"
 
 namespace frictionlab {
 
@@ -11,23 +10,18 @@ namespace frictionlab {
 ///
 /// Discrete state is frozen over the four stages and committed once after the step (theory.md B.17),
 /// so every stage sees a force law that is a smooth function of the stage state.
-class Rk4 final : public Integrator {
+class Rk4 final : public FixedStepIntegrator {
 public:
-    struct Params {
-        double dt = 2e-7;
-    };
     static constexpr std::string_view type = "rk4";
     static ParamSpec<Params> spec();
 
     Rk4(const Params& p, const Context&);
     double step(System& system, double max_dt) override;
-    double nominal_dt() const override { return dt_; }
     /// RK4's stability region reaches 2.785 on the negative real axis and 2.828 on the imaginary
     /// axis, and further in between: |h lambda| < 2.785 is stable for any lambda with Re <= 0.
     double stability_radius() const override { return 2.785; }
 
 private:
-    double dt_;
     Eigen::VectorXd k1_, k2_, k3_, k4_, stage_;  // sized at the first step, reused after
 };
 

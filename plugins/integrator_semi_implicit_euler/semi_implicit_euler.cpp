@@ -6,15 +6,10 @@
 
 namespace frictionlab {
 
-ParamSpec<SemiImplicitEuler::Params> SemiImplicitEuler::spec() {
-    ParamSpec<Params> s(
-        "Semi-implicit (symplectic) Euler, fixed step, 1st order, one evaluation per step; stable for "
-        "omega*dt < 2.");
-    s.add("dt", &Params::dt, "Time step.").unit("s").greater_than(0);
-    return s;
-}
+ParamSpec<SemiImplicitEuler::Params> SemiImplicitEuler::spec() { return fixed_step_spec("Semi-implicit (symplectic) Euler, fixed step, 1st order, one evaluation per step; stable for "
+        "omega*dt < 2."); }
 
-SemiImplicitEuler::SemiImplicitEuler(const Params& p, const Context&) : dt_(p.dt) {}
+SemiImplicitEuler::SemiImplicitEuler(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 
 double SemiImplicitEuler::step(System& system, double max_dt) {
     const double h = std::min(dt_, max_dt);

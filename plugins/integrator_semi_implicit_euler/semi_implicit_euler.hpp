@@ -1,6 +1,5 @@
 #pragma once
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/fixed_step_integrator.hpp"
 
 namespace frictionlab {
 
@@ -18,22 +17,17 @@ namespace frictionlab {
 ///
 /// Use it for cheap exploratory runs and settling, where a quarter of RK4's evaluations per step
 /// matters more than accuracy, or as the low-order end of a time-step/integrator study.
-class SemiImplicitEuler final : public Integrator {
+class SemiImplicitEuler final : public FixedStepIntegrator {
 public:
-    struct Params {
-        double dt = 2e-7;
-    };
     static constexpr std::string_view type = "semi_implicit_euler";
     static ParamSpec<Params> spec();
 
     SemiImplicitEuler(const Params& p, const Context&);
     double step(System& system, double max_dt) override;
-    double nominal_dt() const override { return dt_; }
     /// Stable for h |lambda| < 2: the undamped limit omega h < 2, and (c/m) h < 2 for damping.
     double stability_radius() const override { return 2.0; }
 
 private:
-    double dt_;
     Eigen::VectorXd rate_, next_;  // sized at the first step, reused after
 };
 

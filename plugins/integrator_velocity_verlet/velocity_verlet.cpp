@@ -6,15 +6,10 @@
 
 namespace frictionlab {
 
-ParamSpec<VelocityVerlet::Params> VelocityVerlet::spec() {
-    ParamSpec<Params> s(
-        "Velocity Verlet (kick-drift-kick), fixed step, 2nd order; symplectic for position-dependent forces, "
-        "velocity-dependent forces at the Euler-predicted end velocity; stable for omega*dt < 2.");
-    s.add("dt", &Params::dt, "Time step.").unit("s").greater_than(0);
-    return s;
-}
+ParamSpec<VelocityVerlet::Params> VelocityVerlet::spec() { return fixed_step_spec("Velocity Verlet (kick-drift-kick), fixed step, 2nd order; symplectic for position-dependent forces, "
+        "velocity-dependent forces at the Euler-predicted end velocity; stable for omega*dt < 2."); }
 
-VelocityVerlet::VelocityVerlet(const Params& p, const Context&) : dt_(p.dt) {}
+VelocityVerlet::VelocityVerlet(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 
 double VelocityVerlet::step(System& system, double max_dt) {
     const double h = std::min(dt_, max_dt);

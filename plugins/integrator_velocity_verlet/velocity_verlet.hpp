@@ -1,6 +1,5 @@
 #pragma once
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/fixed_step_integrator.hpp"
 
 namespace frictionlab {
 
@@ -38,22 +37,17 @@ namespace frictionlab {
 /// Use it for conservative or lightly damped runs where long-time energy behaviour matters, or as a
 /// cheaper 2nd-order alternative to RK4 (half the evaluations per step) when omega_max h is well
 /// below 2.
-class VelocityVerlet final : public Integrator {
+class VelocityVerlet final : public FixedStepIntegrator {
 public:
-    struct Params {
-        double dt = 2e-7;
-    };
     static constexpr std::string_view type = "velocity_verlet";
     static ParamSpec<Params> spec();
 
     VelocityVerlet(const Params& p, const Context&);
     double step(System& system, double max_dt) override;
-    double nominal_dt() const override { return dt_; }
     /// Stable for h |lambda| < 2: the undamped limit omega h < 2, and (c/m) h < 2 for damping.
     double stability_radius() const override { return 2.0; }
 
 private:
-    double dt_;
     Eigen::VectorXd start_rate_, end_rate_, stage_;  // sized at the first step, reused after
 };
 
