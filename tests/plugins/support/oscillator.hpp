@@ -106,17 +106,33 @@ struct Oscillator {
     double energy(double x, double v) const { return 0.5 * m * v * v + 0.5 * k * x * x; }
 };
 
+/// An oscillator assembled for a test that drives an integrator: its services, body and system,
+/// with the spring (effect 0) at hand and, if asked, work accounting on.
+struct OscillatorRig {
+    explicit OscillatorRig(const Oscillator& o = {}, bool account_work = false)
+        : osc(o), body(one_node(o.m)), system(osc.make_system(body, &spring)) {
+        if (account_work) system.enable_work_accounting();
+    }
+    /// Phase-space distance from the exact state, velocity scaled by omega.
+    double phase_space_error() const {
+        const auto [x, v] = osc.exact(system.time());
+        return std::hypot(system.y()(0) - x, (system.y()(2) - v) / osc.omega());  // y = [x | z | vx | vz]
+    }
+    Services services;
+    Oscillator osc;
+    Body body;
+    Spring* spring = nullptr;  // before `system`, which sets it
+    System system;
+};
+
 /// Phase-space distance from the exact state at t_end, velocity scaled by omega so x and v weigh
 /// alike (x alone would hide a phase error, which it feels only to second order at a full period).
 template <class Integrator>
 double phase_space_error(const Oscillator& osc, double dt, double t_end) {
-    Services services;
-    const Body body = one_node(osc.m);
-    System system = osc.make_system(body);
-    Integrator integrator({dt}, services.context());
-    run_until(integrator, system, t_end);
-    const auto [x, v] = osc.exact(t_end);
-    return std::hypot(system.y()(0) - x, (system.y()(2) - v) / osc.omega());  // y = [x | z | vx | vz]
+    OscillatorRig rig(osc);
+    Integrator integrator({dt}, rig.services.context());
+    run_until(integrator, rig.system, t_end);
+    return rig.phase_space_error();
 }
 
 /// The undamped spring's work from t = 0 to t_end with the integrator's own work weights, beside
@@ -126,17 +142,12 @@ struct WorkBalance {
 };
 template <class Integrator>
 WorkBalance work_balance(double dt, double t_end) {
-    Services services;
-    const Oscillator osc;
-    const Body body = one_node(osc.m);
-    Spring* spring = nullptr;
-    System system = osc.make_system(body, &spring);
-    system.enable_work_accounting();
-    const double potential0 = spring->potential_energy(system.state());
-    Integrator integrator({dt}, services.context());
-    run_until(integrator, system, t_end);
-    const double v = system.y()(2);
-    return {system.work().at(0), 0.5 * osc.m * v * v, potential0 - spring->potential_energy(system.state())};
+    OscillatorRig rig({}, true);
+    const double potential0 = rig.spring->potential_energy(rig.system.state());
+    Integrator integrator({dt}, rig.services.context());
+    run_until(integrator, rig.system, t_end);
+    const double v = rig.system.y()(2);
+    return {rig.system.work().at(0), 0.5 * rig.osc.m * v * v, potential0 - rig.spring->potential_energy(rig.system.state())};
 }
 
 /// Error of psi(t_end) for psi' = -psi, psi(0) = 1, the only aux variable of a one-node system.
