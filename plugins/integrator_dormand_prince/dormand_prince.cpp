@@ -59,7 +59,9 @@ ParamSpec<Params> DormandPrince::spec() {
         .unit("m/s")
         .greater_than(0);
     s.add("atol_aux", &Params::atol_aux,
-          "Absolute tolerance of the local error of aux variables (in each variable's own unit).")
+          "Absolute tolerance of the local error of aux variables (the shipped ones are dimensionless, e.g. "
+          "rate_state's psi; an effect's dimensional aux variable would take it in its own unit).")
+        .unit("1")
         .greater_than(0);
     s.add("initial_step", &Params::initial_step, "First step tried; also the run's nominal step.")
         .unit("s")
