@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,11 @@ ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
         "Eq. 4). doi:10.1007/s10409-020-00955-2");
     s.add("stiffness", &Params::stiffness, "Stiffness K_S of the loading spring.").unit("N/m").greater_than(0);
     s.add("velocity", &Params::velocity, "Speed V of the spring's far end, from the start of loading.").unit("m/s");
+    s.add("reversal_period", &Params::reversal_period,
+          "Period T of a triangle-wave far end: it moves at +V for T/2, then at -V for T/2, repeated (between 0 "
+          "and V T/2); 0: it moves at V and never reverses.")
+        .unit("s")
+        .at_least(0);
     s.add("height", &Params::height, "Height h of the driving point above the lowest node of the node set.")
         .unit("m")
         .at_least(0);
@@ -69,7 +75,7 @@ DrivingSpring::DrivingSpring(const Params& p, const Context& ctx)
       displacement_(ctx.quantities->scalar("driving_displacement", "m",
                                            "Displacement x_h - x_h0 of the driving point since loading began.")),
       driver_(ctx.quantities->scalar("driver_position", "m",
-                                     "Displacement V (t - t0) of the spring's far end since loading began.")) {
+                                     "Displacement X(t) of the spring's far end since loading began.")) {
     x_h0_ = driving_point_x(ctx.body->x0);
 }
 
@@ -81,11 +87,29 @@ double DrivingSpring::driving_point_x(const Positions& x) const {
 }
 
 std::string DrivingSpring::describe() const {
-    return fmt::format("driving spring K_S={:g} N/m, V={:g} m/s at h={:g} m ({})", params_.stiffness,
-                       params_.velocity, params_.height,
+    return fmt::format("driving spring K_S={:g} N/m, V={:g} m/s{} at h={:g} m ({})", params_.stiffness,
+                       params_.velocity,
+                       params_.reversal_period > 0 ? fmt::format(" reversing every {:g} s", params_.reversal_period / 2)
+                                                   : "",
+                       params_.height,
                        attachment_.size() == 1 ? fmt::format("node {}", attachment_[0].node)
                                                : fmt::format("between nodes {} and {}", attachment_[0].node,
                                                              attachment_[1].node));
+}
+
+double DrivingSpring::far_end(double t) const {
+    const double elapsed = t - t0_, period = params_.reversal_period;
+    if (period == 0) return params_.velocity * elapsed;
+    const double phase = std::fmod(elapsed, period);  // exact
+    return params_.velocity * std::min(phase, period - phase);
+}
+
+double DrivingSpring::reversal_after(double t) const {
+    const double half = params_.reversal_period / 2;
+    if (half == 0) return std::numeric_limits<double>::infinity();
+    double k = std::floor((t - t0_) / half) + 1;
+    if (t0_ + k * half <= t) ++k;  // t itself a kink, its quotient rounded up
+    return t0_ + k * half;
 }
 
 void DrivingSpring::begin_stage(const StageInfo& stage, const StageView& s) {
@@ -93,10 +117,13 @@ void DrivingSpring::begin_stage(const StageInfo& stage, const StageView& s) {
     started_ = true;
     t0_ = stage.t_start;
     x_h0_ = driving_point_x(s.x);
+    next_reversal_ = reversal_after(t0_);
 }
 
+void DrivingSpring::commit(const StageView& end, double /*dt*/) { next_reversal_ = reversal_after(end.t); }
+
 void DrivingSpring::add_forces(const StageView& s, ForceView& f) {
-    driver_ = params_.velocity * (s.t - t0_);
+    driver_ = far_end(s.t);
     displacement_ = driving_point_x(s.x) - x_h0_;
     force_ = params_.stiffness * (driver_ - displacement_);
     for (const Attachment& a : attachment_) f.fx(a.node) += a.weight * force_;
@@ -105,7 +132,7 @@ void DrivingSpring::add_forces(const StageView& s, ForceView& f) {
 double DrivingSpring::potential_energy(const StageView& s) const {
     if (!started_) return 0;  // not yet in the pipeline: no spring to store anything
     // The stretch add_forces() turns into F_S = K_S * stretch, without publishing it.
-    const double stretch = params_.velocity * (s.t - t0_) - (driving_point_x(s.x) - x_h0_);
+    const double stretch = far_end(s.t) - (driving_point_x(s.x) - x_h0_);
     return 0.5 * params_.stiffness * stretch * stretch;
 }
 

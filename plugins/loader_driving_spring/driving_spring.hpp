@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -9,8 +10,12 @@
 namespace frictionlab {
 
 /// Horizontal loading spring on the trailing edge (Li2020 Eq. 4, theory.md B.3):
-///     F_S = K_S (V (t - t0) - (x_h - x_h0))
-/// acting in +x on the driving point at height h above the lowest node of the node set. t0 and
+///     F_S = K_S (X(t) - (x_h - x_h0)),   X(t) = V (t - t0)
+/// acting in +x on the driving point at height h above the lowest node of the node set. With a
+/// reversal period T > 0 the far end X moves as a triangle wave instead (theory.md B.22): +V for
+/// T/2, then -V for T/2, repeated, so X(t) = V min(tau, T - tau), tau = (t - t0) mod T, between 0
+/// and V T/2. Its kinks, at every multiple of T/2 after t0, are announced as events
+/// (next_event_time), so an adaptive stepper ends its steps there and F_S is smooth within each. t0 and
 /// x_h0 are taken at the start of the first stage in which the loader is active, so F_S(t0) = 0;
 /// the spring is massless and undamped. With attachment "node" the driving point must be a node;
 /// with "interpolated" it lies between the two nearest nodes, x_h is their linear interpolation and
@@ -18,15 +23,16 @@ namespace frictionlab {
 ///
 /// Stored energy: the loading spring's own, E = F_S^2 / (2 K_S) (0 before the loader's first
 /// stage). Its far end is moved by the driver, so the energy the driver puts in is the work on the
-/// nodes plus E's change: W + dE = int F_S V dt.
+/// nodes plus E's change: W + dE = int F_S dX/dt dt (negative while a reversed far end unloads it).
 ///
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class DrivingSpring final : public Loader {
 public:
     struct Params {
-        double stiffness = 0.8e6;  // K_S, N/m
-        double velocity = 1e-4;    // V, m/s
-        double height = 0.005;     // h, m
+        double stiffness = 0.8e6;     // K_S, N/m
+        double velocity = 1e-4;       // V, m/s
+        double reversal_period = 0;   // T, s; 0: never reverses
+        double height = 0.005;        // h, m
         std::string attachment = "node";
         std::string node_set = "trailing_edge";
     };
@@ -38,7 +44,11 @@ public:
     std::string describe() const override;
     void add_forces(const StageView& s, ForceView& f) override;
     void begin_stage(const StageInfo& stage, const StageView& s) override;
+    void commit(const StageView& end, double dt) override;
+    double next_event_time() const override { return next_reversal_; }
     double potential_energy(const StageView& s) const override;
+    /// Position X(t) of the far end since loading began (m): V (t - t0), or the triangle wave.
+    double far_end(double t) const;
 
     struct Attachment {
         Index node;
@@ -50,10 +60,13 @@ public:
 private:
     template <class Positions>
     double driving_point_x(const Positions& x) const;
+    /// The first kink of the triangle wave strictly after t (+inf without reversals).
+    double reversal_after(double t) const;
 
     Params params_;
     std::vector<Attachment> attachment_;
     double t0_ = 0, x_h0_ = 0;
+    double next_reversal_ = std::numeric_limits<double>::infinity();
     bool started_ = false;
     double& force_;         // published "driving_force"
     double& displacement_;  // published "driving_displacement"

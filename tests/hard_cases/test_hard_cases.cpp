@@ -25,7 +25,11 @@ INSTANTIATE_TEST_SUITE_P(
         HardCase{"theta_minus_one", "--set loaders[1].theta=-1", "no load on the leading edge block"},
         HardCase{"normal_2kN", "--set loaders[1].total_force=2000" + heavy_settle, "five times the junctions and contact"},
         HardCase{"normal_10kN", "--set loaders[1].total_force=10000" + heavy_settle, "25x: ~2600 junctions per block"},
-        HardCase{"loading_1000x", "--set loaders[2].velocity=0.1", "1000x the paper's loading rate"}),
+        HardCase{"loading_1000x", "--set loaders[2].velocity=0.1", "1000x the paper's loading rate"},
+        HardCase{"velocity_reversals", "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002",
+                 "the far end reverses every 1 ms (5 times, 150 um strokes, theory.md B.22): junctions near the "
+                 "driven edge break forwards at each crest (F_S ~ 84 N), relax while dislocated on the way back, "
+                 "and break backwards at each trough, where F_S turns negative"}),
     [](const auto& info) { return info.param.name; });
 
 INSTANTIATE_TEST_SUITE_P(

@@ -1,4 +1,7 @@
 // Loading spring of Li2020 Eq. 4 with the time and displacement origins of theory.md B.3.
+#include <cmath>
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "driving_spring.hpp"
@@ -70,6 +73,61 @@ TEST(DrivingSpring, ForceStartsAtZeroAndGrowsAsKsVtForAFixedNode) {
         EXPECT_NEAR(s.scalar("driver_position"), V * elapsed, 1e-15);
         EXPECT_EQ(s.scalar("driving_displacement"), 0.0);
     }
+}
+
+DrivingSpring::Params reversing(double period) {
+    DrivingSpring::Params p;
+    p.reversal_period = period;
+    return p;
+}
+
+/// With a reversal period T the far end is a triangle wave: +V for T/2, -V for T/2, from 0 to V T/2.
+TEST(DrivingSpring, AReversalPeriodMovesTheFarEndAsATriangleWave) {
+    SpringOnLattice s(reversing(0.02));
+    const Index node = 2 * nx;
+    s.begin_stage(0.3);
+    const double Ks = 0.8e6, V = 1e-4;
+    // elapsed time -> far-end position: up, peak at T/2, down, back at 0 at T, up again, and so on.
+    const std::pair<double, double> expected[] = {{0.0, 0.0},     {0.005, 5e-7},  {0.01, 1e-6},   {0.015, 5e-7},
+                                                  {0.02, 0.0},    {0.025, 5e-7},  {0.047, 7e-7},  {0.053, 7e-7},
+                                                  {1.0003, 3e-8}, {1.0197, 3e-8}, {4.01, 1e-6}};
+    for (const auto& [elapsed, far] : expected) {
+        SCOPED_TRACE(elapsed);
+        const Eigen::VectorXd f = s.fx(0.3 + elapsed);
+        // Only the round-off of (0.3 + elapsed) - 0.3, times V: the wave itself is exact (fmod).
+        const double tolerance = V * 1e-15 * (1 + elapsed);
+        EXPECT_NEAR(s.scalar("driver_position"), far, tolerance);
+        EXPECT_NEAR(s.spring.far_end(0.3 + elapsed), far, tolerance);
+        EXPECT_NEAR(f(node), Ks * far, Ks * tolerance);
+    }
+    // The force follows the driving point too: F_S = K_S (X - (x_h - x_h0)), negative when the far
+    // end has come back behind the driving point.
+    s.y(node) += 8e-7;
+    const Eigen::VectorXd f = s.fx(0.3 + 0.017);  // X = 3e-7 m on the way back
+    EXPECT_NEAR(f(node), Ks * (3e-7 - 8e-7), 1e-9);
+    EXPECT_NEAR(s.spring.potential_energy(view_of(s.y, s.layout, 0.3 + 0.017)), 0.5 * Ks * 5e-7 * 5e-7, 1e-18);
+}
+
+TEST(DrivingSpring, ReversalsAreAnnouncedAsEventsAtEveryHalfPeriod) {
+    SpringOnLattice s(reversing(0.02));
+    EXPECT_TRUE(std::isinf(s.spring.next_event_time()));  // not loading yet
+    s.begin_stage(0.3);
+    EXPECT_DOUBLE_EQ(s.spring.next_event_time(), 0.31);
+    const auto commit_at = [&](double t) {
+        s.spring.commit(view_of(s.y, s.layout, t), 1e-7);
+        return s.spring.next_event_time();
+    };
+    EXPECT_DOUBLE_EQ(commit_at(0.305), 0.31);
+    const double kink = 0.3 + 0.01;
+    const double next = commit_at(kink);  // at the kink itself: the next one, strictly after
+    EXPECT_GT(next, kink);
+    EXPECT_DOUBLE_EQ(next, 0.32);
+    EXPECT_DOUBLE_EQ(commit_at(0.3 + 0.0471), 0.35);
+    // Without a reversal period the far end never reverses: no events.
+    SpringOnLattice plain;
+    plain.begin_stage(0.3);
+    EXPECT_TRUE(std::isinf(plain.spring.next_event_time()));
+    EXPECT_NEAR(plain.spring.far_end(0.3 + 4.01), 1e-4 * 4.01, 1e-18);
 }
 
 TEST(DrivingSpring, ForceFollowsTheDrivingPointDisplacement) {
