@@ -53,6 +53,22 @@ INSTANTIATE_TEST_SUITE_P(
                  1e-4}),
     [](const auto& info) { return info.param.name; });
 
+/// The adaptive integrator on the cases that stress its step control most: its error test, not a
+/// fixed step, must keep the run stable (theory.md B.21), and it must land on the reversal events.
+const std::string adaptive = " --set 'integrator={type: dormand_prince}'";
+
+INSTANTIATE_TEST_SUITE_P(
+    Adaptive, HardCases,
+    ::testing::Values(
+        HardCase{"adaptive_velocity_reversals",
+                 "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002" + adaptive,
+                 "dormand_prince through five reversals, landing on each kink of the drive"},
+        HardCase{"adaptive_normal_10kN", "--set loaders[1].total_force=10000" + heavy_settle + adaptive,
+                 "dormand_prince with ~2600 junctions per block breaking while settling"},
+        HardCase{"adaptive_zero_damping", "--set bulk.damping_factor=0" + adaptive,
+                 "dormand_prince on an undamped, ringing lattice"}),
+    [](const auto& info) { return info.param.name; });
+
 /// Cases refused as bad input before anything runs.
 TEST(HardCasesRefused, ALatticeBeyondTheDampingLimitAndASingularAngle) {
     const auto dir = testing::work_directory();
