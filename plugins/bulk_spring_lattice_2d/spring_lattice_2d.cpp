@@ -16,15 +16,7 @@ ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
         "Square spring-block lattice with diagonal springs (Li et al. 2020, Eqs. 1, 2, 6): straight "
         "springs K = 3BE/4, diagonals K/2 (Poisson's ratio 1/3), equal masses M/N, dashpots "
         "eta = sqrt(c K m) on every bond. doi:10.1007/s10409-020-00955-2");
-    s.add("length", &Params::length, "Slider length L along x, the sliding direction.").unit("m").greater_than(0);
-    s.add("height", &Params::height, "Slider height H along z, normal to the interface.").unit("m").greater_than(0);
-    s.add("width", &Params::width, "Slider width B along y (out of plane); enters K = 3BE/4.")
-        .unit("m")
-        .greater_than(0);
-    s.add("mass", &Params::mass, "Total mass M of the slider, shared equally by all nodes.").unit("kg").greater_than(0);
-    s.add("youngs_modulus", &Params::youngs_modulus, "Young's modulus E of the slider material.")
-        .unit("Pa")
-        .greater_than(0);
+    add_slider_params(s, "K = 3BE/4 (straight) and K/2 (diagonal)");
     s.add("nx", &Params::nx, "Number of node columns along x.").unit("1").at_least(2);
     s.add("nz", &Params::nz, "Number of node rows along z; L/(nx-1) must equal H/(nz-1).").unit("1").at_least(2);
     s.add("damping_factor", &Params::damping_factor,

@@ -6,6 +6,7 @@
 
 #include "frictionlab/kinds.hpp"
 #include "frictionlab/param_spec.hpp"
+#include "frictionlab/slider_params.hpp"
 #include "bond_damping.hpp"
 #include "lattice_grid.hpp"
 #include "lattice_springs.hpp"
@@ -33,12 +34,7 @@ namespace frictionlab {
 /// Tromborg, Scheibert, Amundsen, Thogersen, Malthe-Sorenssen, PRL 107, 074301 (2011).
 class SpringLattice2d final : public BulkModel {
 public:
-    struct Params {
-        double length = 0.1;           // L, m
-        double height = 0.02;          // H, m
-        double width = 0.005;          // B, m
-        double mass = 0.0118;          // M, kg
-        double youngs_modulus = 3e9;   // E, Pa
+    struct Params : SliderParams {
         int nx = 41;
         int nz = 9;
         double damping_factor = 0.5;   // c in eta = sqrt(c K m)

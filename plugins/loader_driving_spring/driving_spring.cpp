@@ -21,7 +21,9 @@ ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
           "and V T/2); 0: it moves at V and never reverses.")
         .unit("s")
         .at_least(0);
-    s.add("height", &Params::height, "Height h of the driving point above the lowest node of the node set.")
+    s.add("height", &Params::height,
+          "Height h of the driving point above the lowest node of the node set (a set of one node, a chain's "
+          "trailing block, takes any h up to the slider's height and ignores the torque F_S h).")
         .unit("m")
         .at_least(0);
     s.add("attachment", &Params::attachment,
@@ -51,6 +53,14 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     const NodeSet& set = body.nodes(p.node_set);
     if (set.empty()) throw InputError("driving_spring: node set '" + p.node_set + "' is empty");
     const NodeHeights n = sorted_heights(body, set);
+    if (n.nodes.size() == 1) {
+        // A chain's trailing edge is one block: any h up to the slider's height drives it, without the
+        // torque F_S h, which a 1D chain cannot carry.
+        if (p.height > body.height * (1 + 1e-9))
+            throw InputError(fmt::format("driving_spring: height = {:g} m is above the slider (height {:g} m)",
+                                         p.height, body.height));
+        return {{n.nodes.front(), 1.0}};
+    }
     const double tolerance = 1e-9 * (body.spacing > 0 ? body.spacing : std::max(n.heights.back(), 1.0));
     if (p.height < -tolerance || p.height > n.heights.back() + tolerance)
         throw InputError(fmt::format("driving_spring: height = {:g} m is outside node set '{}' (0 to {:g} m)",

@@ -19,7 +19,9 @@ namespace frictionlab {
 /// x_h0 are taken at the start of the first stage in which the loader is active, so F_S(t0) = 0;
 /// the spring is massless and undamped. With attachment "node" the driving point must be a node;
 /// with "interpolated" it lies between the two nearest nodes, x_h is their linear interpolation and
-/// F_S is shared with the same weights (so the work F_S dx_h is what the nodes receive).
+/// F_S is shared with the same weights (so the work F_S dx_h is what the nodes receive). A node set
+/// of one node (the trailing block of a chain, plugins/bulk_chain_1d) is the driving point for any h
+/// from 0 to the slider's height H: the torque F_S h is then not modelled.
 ///
 /// Stored energy: the loading spring's own, E = F_S^2 / (2 K_S) (0 before the loader's first
 /// stage). Its far end is moved by the driver, so the energy the driver puts in is the work on the

@@ -14,8 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include "chain_1d.hpp"
 #include "driving_spring.hpp"
-#include "plugin_test_support.hpp"
+#include "plate_springs.hpp"
+#include "bulk_at_rest.hpp"
 #include "rig.hpp"
 #include "rigid_base_contact.hpp"
 #include "spring_lattice_2d.hpp"
@@ -27,10 +29,7 @@ constexpr double relative_tolerance = 1e-8;
 
 /// Largest |dE/dq + F_q| over the position dofs q, relative to the largest |F_q|.
 double gradient_mismatch(Effect& e, const StateLayout& layout, Eigen::VectorXd y, double t, double h) {
-    Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
-    ForceView f = forces_of(dy, layout);
-    e.add_forces(view_of(y, layout, t), f);
-    const Eigen::VectorXd force = dy.segment(2 * layout.nodes, 2 * layout.nodes);
+    const Eigen::VectorXd force = test_support::forces_of_effect(e, y, layout, t);
     double worst = 0;
     for (Index q = 0; q < 2 * layout.nodes; ++q) {
         const double q0 = y(q);
@@ -48,17 +47,20 @@ double gradient_mismatch(Effect& e, const StateLayout& layout, Eigen::VectorXd y
     return worst / scale;
 }
 
-/// A small lattice (5 x 3, 1 mm spacing) with every node displaced by up to u at random.
-struct RandomLatticeState {
-    explicit RandomLatticeState(double u, const std::string& springs = "geometric", unsigned seed = 11)
-        : lattice(params(springs), services.context()), layout{lattice.body().size(), 0} {
-        y = Eigen::VectorXd::Zero(layout.size());
-        y.head(layout.nodes) = lattice.body().x0.matrix();
-        y.segment(layout.nodes, layout.nodes) = lattice.body().z0.matrix();
+/// A bulk model with every node displaced by up to u at random.
+template <class Bulk>
+struct RandomState : test_support::BulkAtRest<Bulk> {
+    RandomState(const typename Bulk::Params& p, double u, unsigned seed) : test_support::BulkAtRest<Bulk>(p) {
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> d(-u, u);
-        for (Index q = 0; q < 2 * layout.nodes; ++q) y(q) += d(rng);
+        for (Index q = 0; q < 2 * this->layout.nodes; ++q) this->y(q) += d(rng);
     }
+};
+
+/// A small lattice (5 x 3, 1 mm spacing) displaced at random.
+struct RandomLatticeState : RandomState<SpringLattice2d> {
+    explicit RandomLatticeState(double u, const std::string& springs = "geometric", unsigned seed = 11)
+        : RandomState(params(springs), u, seed) {}
     static SpringLattice2d::Params params(const std::string& springs) {
         SpringLattice2d::Params p;
         p.nx = 5;
@@ -68,19 +70,13 @@ struct RandomLatticeState {
         p.springs = springs;
         return p;
     }
-    Context context() { return services.context(&lattice.body()); }
-
-    test_support::Services services;
-    SpringLattice2d lattice;
-    StateLayout layout;
-    Eigen::VectorXd y;
 };
 
 TEST(EnergyConsistency, LatticeSpringsForceIsMinusTheGradientOfTheirEnergy) {
     const double u = 1e-6;  // 1e-3 of the spacing: geometric springs are nonlinear on the scale l
     for (const char* law : {"geometric", "small_strain"}) {
         RandomLatticeState s(u, law);
-        auto effects = s.lattice.effects(s.context());
+        auto effects = s.bulk.effects(s.context());
         Effect& springs = *effects.at(0);
         ASSERT_EQ(springs.key(), "lattice_springs");
         EXPECT_LT(gradient_mismatch(springs, s.layout, s.y, 0, 1e-3 * u), relative_tolerance) << law;
@@ -93,10 +89,10 @@ TEST(EnergyConsistency, BaseContactForceIsMinusTheGradientOfItsEnergy) {
     const double u = 1e-6;
     RandomLatticeState s(0.5 * u);
     RigidBaseContact contact({}, s.context());
-    for (Index node : s.lattice.body().nodes("interface")) s.y(s.layout.nodes + node) -= u;
+    for (Index node : s.bulk.body().nodes("interface")) s.y(s.layout.nodes + node) -= u;
     EXPECT_LT(gradient_mismatch(contact, s.layout, s.y, 0, 1e-3 * u), relative_tolerance);
     // Lifted off: no force and no energy.
-    for (Index node : s.lattice.body().nodes("interface")) s.y(s.layout.nodes + node) += 3 * u;
+    for (Index node : s.bulk.body().nodes("interface")) s.y(s.layout.nodes + node) += 3 * u;
     EXPECT_EQ(contact.potential_energy(view_of(s.y, s.layout, 0)), 0.0);
 }
 
@@ -121,6 +117,38 @@ TEST(EnergyConsistency, DrivingSpringForceIsMinusTheGradientOfItsEnergy) {
         EXPECT_NEAR(spring.potential_energy(view_of(y, s.layout, 1e-4)), 0.5 * p.stiffness * stretch * stretch,
                     1e-12 * p.stiffness * stretch * stretch);
     }
+}
+
+/// A chain of 6 blocks displaced at random.
+struct RandomChainState : RandomState<Chain1d> {
+    explicit RandomChainState(double u) : RandomState(params(), u, 5) {}
+    static Chain1d::Params params() {
+        Chain1d::Params p;
+        p.blocks = 6;
+        return p;
+    }
+};
+
+TEST(EnergyConsistency, ChainSpringsForceIsMinusTheGradientOfTheirEnergy) {
+    const double u = 1e-6;
+    RandomChainState s(u);
+    auto effects = s.bulk.effects(s.context());
+    Effect& springs = *effects.at(0);
+    ASSERT_EQ(springs.key(), "chain_springs");
+    EXPECT_LT(gradient_mismatch(springs, s.layout, s.y, 0, 1e-3 * u), relative_tolerance);
+}
+
+TEST(EnergyConsistency, PlateSpringsForceIsMinusTheGradientOfTheirEnergy) {
+    const double u = 1e-6;
+    RandomChainState s(u);
+    PlateSprings::Params p;
+    p.velocity = 0.01;
+    PlateSprings plate(p, s.context());
+    Eigen::VectorXd reference = Eigen::VectorXd::Zero(s.layout.size());
+    reference.head(s.layout.nodes) = s.bulk.body().x0.matrix();
+    plate.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(reference, s.layout, 0.0));
+    // 1e-4 s later the plate has moved 1 um, each block by its own random u.
+    EXPECT_LT(gradient_mismatch(plate, s.layout, s.y, 1e-4, 1e-3 * u), relative_tolerance);
 }
 
 // Junctions: E = sum_j f_j^2 / (2 k_s) at a frozen discrete state. The block position x is the only

@@ -4,9 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include "chain_1d.hpp"
 #include "driving_spring.hpp"
 #include "frictionlab/errors.hpp"
-#include "plugin_test_support.hpp"
+#include "bulk_at_rest.hpp"
 #include "spring_lattice_2d.hpp"
 
 namespace frictionlab {
@@ -14,34 +15,21 @@ namespace {
 
 constexpr Index nx = 41;
 
-struct SpringOnLattice {
-    explicit SpringOnLattice(const DrivingSpring::Params& p = {})
-        : lattice(SpringLattice2d::Params{}, services.context()),
-          layout{lattice.body().size(), 0},
-          spring(p, services.context(&lattice.body())) {
-        y = Eigen::VectorXd::Zero(layout.size());
-        y.head(layout.nodes) = lattice.body().x0.matrix();
-        y.segment(layout.nodes, layout.nodes) = lattice.body().z0.matrix();
-    }
+struct SpringOnLattice : test_support::BulkAtRest<SpringLattice2d> {
+    explicit SpringOnLattice(const DrivingSpring::Params& p = {}) : spring(p, context()) {}
 
     void begin_stage(double t_start) {
         spring.begin_stage(StageInfo{"load", 1, t_start, 1.0, true}, view_of(y, layout, t_start));
     }
     /// fx on every node at time t and the current positions.
     Eigen::VectorXd fx(double t) {
-        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
-        ForceView f = forces_of(dy, layout);
-        spring.add_forces(view_of(y, layout, t), f);
-        EXPECT_EQ(dy.segment(3 * layout.nodes, layout.nodes).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
-        return dy.segment(2 * layout.nodes, layout.nodes);
+        const Eigen::VectorXd f = test_support::forces_of_effect(spring, y, layout, t);
+        EXPECT_EQ(f.tail(layout.nodes).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
+        return f.head(layout.nodes);
     }
     double scalar(const char* name) const { return services.quantities.find_scalar(name)->value; }
 
-    test_support::Services services;
-    SpringLattice2d lattice;
-    StateLayout layout;
     DrivingSpring spring;
-    Eigen::VectorXd y;
 };
 
 DrivingSpring::Params at_height(double h, const std::string& attachment = "node") {
@@ -180,6 +168,20 @@ TEST(DrivingSpring, NodeAttachmentRejectsAHeightBetweenNodes) {
     EXPECT_THROW(DrivingSpring(at_height(0.03, "interpolated"), services.context(&lattice.body())), InputError);
     // Within 1e-9 l_s of a node counts as the node.
     EXPECT_NO_THROW(DrivingSpring(at_height(0.005 + 1e-13), services.context(&lattice.body())));
+}
+
+TEST(DrivingSpring, OnAChainDrivesTheTrailingBlockAtAnyHeightUpToTheSlidersHeight) {
+    // A chain's trailing edge is block 0 alone: h = 5 mm of a lattice scene still drives it (its torque
+    // F_S h is not modelled), and h above the slider's height H = 20 mm is refused.
+    test_support::Services services;
+    Chain1d chain(Chain1d::Params{}, services.context());
+    for (double h : {0.0, 0.005, 0.02}) {
+        DrivingSpring spring(at_height(h), services.context(&chain.body()));
+        ASSERT_EQ(spring.attachment().size(), 1u);
+        EXPECT_EQ(spring.attachment()[0].node, 0);
+        EXPECT_EQ(spring.attachment()[0].weight, 1.0);
+    }
+    EXPECT_THROW(DrivingSpring(at_height(0.021), services.context(&chain.body())), InputError);
 }
 
 }  // namespace

@@ -1,0 +1,28 @@
+#pragma once
+#include <string>
+
+#include "frictionlab/effect.hpp"
+
+namespace frictionlab {
+
+/// The internal viscosity of a 1D chain along x (Amundsen et al. 2012): a dashpot eta between
+/// neighbours, so node i feels eta (v_{i+1} - 2 v_i + v_{i-1}). It damps relative motion only:
+/// a rigid translation, and so steady sliding of the whole chain, is free. It removes the
+/// unphysical stress fluctuations of Maegawa's undamped chain.
+///
+/// Amundsen, Scheibert, Thøgersen, Trømborg, Malthe-Sørenssen, Tribol. Lett. 45, 357 (2012),
+/// doi:10.1007/s11249-011-9894-3.
+class ChainDamping final : public Effect {
+public:
+    ChainDamping(Index nodes, double eta);
+
+    std::string describe() const override;
+    std::string key() const override { return "chain_damping"; }
+    void add_forces(const StageView& s, ForceView& f) override;
+
+private:
+    Index nodes_;
+    double eta_;
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,27 @@
+#include "chain_springs.hpp"
+
+#include <fmt/format.h>
+
+namespace frictionlab {
+
+ChainSprings::ChainSprings(Index nodes, double spacing, double stiffness)
+    : nodes_(nodes), spacing_(spacing), stiffness_(stiffness) {}
+
+std::string ChainSprings::describe() const {
+    return fmt::format("chain springs {} nodes, k={:.4g} N/m", nodes_, stiffness_);
+}
+
+void ChainSprings::add_forces(const StageView& s, ForceView& f) {
+    const Index bonds = nodes_ - 1;
+    // Tension of bond i (between nodes i and i+1): + on node i, - on node i+1.
+    const auto tension = stiffness_ * (s.x.tail(bonds) - s.x.head(bonds) - spacing_);
+    f.fx.head(bonds) += tension;
+    f.fx.tail(bonds) -= tension;
+}
+
+double ChainSprings::potential_energy(const StageView& s) const {
+    const Index bonds = nodes_ - 1;
+    return 0.5 * stiffness_ * (s.x.tail(bonds) - s.x.head(bonds) - spacing_).square().sum();
+}
+
+}  // namespace frictionlab

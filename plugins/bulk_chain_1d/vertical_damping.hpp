@@ -1,0 +1,25 @@
+#pragma once
+#include <string>
+
+#include "frictionlab/effect.hpp"
+
+namespace frictionlab {
+
+/// A vertical dashpot from every node of a 1D chain to the (fixed) base: f_z = -eta_z v_z. The chain
+/// has no vertical structure, so nothing else damps a block bouncing on its base contact under the
+/// normal load; this makes the vertical motion settle, so the normal force on each block settles to
+/// its share of the load. It stands for the damping of the bulk modes a 1D chain does not resolve and
+/// acts in z only: the sliding motion (x) never feels it.
+class VerticalDamping final : public Effect {
+public:
+    explicit VerticalDamping(double eta);
+
+    std::string describe() const override;
+    std::string key() const override { return "vertical_damping"; }
+    void add_forces(const StageView& s, ForceView& f) override;
+
+private:
+    double eta_;
+};
+
+}  // namespace frictionlab

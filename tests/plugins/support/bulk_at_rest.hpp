@@ -1,0 +1,33 @@
+#pragma once
+// A bulk model built on test-owned services, with a state vector at its reference positions, for
+// tests that evaluate single effects (loaders, springs) on it.
+#include "frictionlab/effect.hpp"
+#include "plugin_test_support.hpp"
+
+namespace frictionlab::test_support {
+
+template <class Bulk>
+struct BulkAtRest {
+    explicit BulkAtRest(const typename Bulk::Params& p = {})
+        : bulk(p, services.context()), layout{bulk.body().size(), 0} {
+        y = Eigen::VectorXd::Zero(layout.size());
+        y.head(layout.nodes) = bulk.body().x0.matrix();
+        y.segment(layout.nodes, layout.nodes) = bulk.body().z0.matrix();
+    }
+    Context context() { return services.context(&bulk.body()); }
+
+    Services services;
+    Bulk bulk;
+    StateLayout layout;
+    Eigen::VectorXd y;
+};
+
+/// [fx | fz] that one effect alone adds at (t, y).
+inline Eigen::VectorXd forces_of_effect(Effect& e, const Eigen::VectorXd& y, const StateLayout& layout, double t) {
+    Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
+    ForceView f = forces_of(dy, layout);
+    e.add_forces(view_of(y, layout, t), f);
+    return dy.segment(2 * layout.nodes, 2 * layout.nodes);
+}
+
+}  // namespace frictionlab::test_support
