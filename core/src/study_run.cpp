@@ -28,34 +28,54 @@ const std::vector<ErrorColumn> error_columns{
     {"err_event_slip", "slip of first event", &CaseErrors::event_slip},
 };
 
-/// The value at a key path ("integrator.dt", "loaders[2].velocity") of a resolved scene, as YAML
-/// text; "" where the scene has no such key (e.g. a tolerance of a fixed-step integrator).
-std::string value_at(const YAML::Node& root, const std::string& path) {
+/// The node at a key path ("integrator.dt", "loaders[2].velocity") of a resolved scene; an
+/// undefined node where the scene has no such key (e.g. a tolerance of a fixed-step integrator).
+YAML::Node node_at(const YAML::Node& root, const std::string& path) {
     static const std::regex step(R"(([A-Za-z0-9_]+)|\[([0-9]+)\])");
     YAML::Node at;
     at.reset(root);
     for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it) {
         if ((*it)[1].matched) {
-            if (!at.IsMap() || !at[(*it)[1].str()]) return "";
+            if (!at.IsMap() || !at[(*it)[1].str()]) return YAML::Node(YAML::NodeType::Undefined);
             at.reset(at[(*it)[1].str()]);  // `at = ...` would assign into the scene, not move along it
         } else {
             const auto i = std::stoul((*it)[2].str());
-            if (!at.IsSequence() || i >= at.size()) return "";
+            if (!at.IsSequence() || i >= at.size()) return YAML::Node(YAML::NodeType::Undefined);
             at.reset(at[i]);
         }
     }
+    return at;
+}
+
+/// A knob's value as YAML text ("" where the scene has no such key).
+std::string value_at(const YAML::Node& root, const std::string& path) {
+    const YAML::Node at = node_at(root, path);
+    if (!at.IsDefined()) return "";
     if (at.IsScalar()) return at.Scalar();
     YAML::Emitter out;
-    out << YAML::Flow << at;
+    out.SetMapFormat(YAML::Flow);
+    out.SetSeqFormat(YAML::Flow);
+    out << at;
     return out.c_str();
 }
 
-std::vector<std::string> knob_columns(const Study& study) {
+/// integrator.type, then every key path the overrides set; one that sets a whole mapping (such as
+/// `integrator={type: ..., rtol: ...}`) stands for each of its keys in every case.
+std::vector<std::string> knob_columns(const Study& study, const std::vector<YAML::Node>& resolved) {
     std::vector<std::string> columns{"integrator.type"};
+    const auto add = [&](const std::string& key) {
+        if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+    };
     for (const StudyCase* c : study.all_cases())
         for (const auto& o : c->overrides) {
             const std::string key = o.text.substr(0, o.text.find('='));
-            if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+            bool mapping = false;
+            for (const auto& scene : resolved)
+                if (const YAML::Node at = node_at(scene, key); at.IsMap()) {
+                    mapping = true;
+                    for (auto it = at.begin(); it != at.end(); ++it) add(key + "." + it->first.Scalar());
+                }
+            if (!mapping) add(key);
         }
     return columns;
 }
@@ -88,15 +108,16 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
                       const Registry& registry, spdlog::logger& log, bool force) {
     prepare_output_directory(output, force);
     std::filesystem::create_directories(output / "cases");
+    std::vector<YAML::Node> resolved;
+    for (const auto& scene : scenes) resolved.push_back(YAML::Load(scene.resolved_yaml));
     StudyResult result;
-    result.knob_columns = knob_columns(study);
+    result.knob_columns = knob_columns(study, resolved);
     const auto cases = study.all_cases();
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const Scene& scene = scenes.at(k);
         StudyRow row;
         row.name = cases[k]->name;
-        const YAML::Node resolved = YAML::Load(scene.resolved_yaml);
-        for (const auto& key : result.knob_columns) row.knobs.push_back(value_at(resolved, key));
+        for (const auto& key : result.knob_columns) row.knobs.push_back(value_at(resolved[k], key));
         row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
         log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
         try {
