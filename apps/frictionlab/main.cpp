@@ -1,7 +1,9 @@
 // frictionlab: run, check and document FrictionLab scenes.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -16,6 +18,8 @@
 #include "frictionlab/registry.hpp"
 #include "frictionlab/run.hpp"
 #include "frictionlab/scene.hpp"
+#include "frictionlab/study.hpp"
+#include "frictionlab/study_run.hpp"
 
 namespace fl = frictionlab;
 
@@ -98,8 +102,8 @@ std::vector<const fl::TypeInfo*> select_types(const fl::Registry& registry, cons
     throw fl::InputError("no " + kind_name + " type '" + type + "' (available: " + known + ")");
 }
 
-/// Replaces this process by the plotting script on Debian's Python (FRICTIONLAB_PYTHON overrides).
-int plot(const std::vector<std::string>& runs, const std::string& output) {
+/// The plotting script on Debian's Python (FRICTIONLAB_PYTHON overrides) with `arguments`.
+std::vector<std::string> plot_command(const std::vector<std::string>& arguments) {
     const auto share = fl::shipped_data_directory();
     const auto script = share ? *share / "scripts" / "frictionlab_plot.py" : std::filesystem::path();
     if (!share || !std::filesystem::exists(script))
@@ -108,13 +112,69 @@ int plot(const std::vector<std::string>& runs, const std::string& output) {
     const char* env = std::getenv("FRICTIONLAB_PYTHON");
     const std::string python = env ? env : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
     std::vector<std::string> args{python, script.string()};
-    args.insert(args.end(), runs.begin(), runs.end());
-    if (!output.empty()) args.insert(args.end(), {"--output", output});
+    args.insert(args.end(), arguments.begin(), arguments.end());
+    return args;
+}
+
+[[noreturn]] void exec(std::vector<std::string> args) {
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     execvp(argv[0], argv.data());
-    throw fl::InputError("cannot run " + python + ": " + std::strerror(errno));
+    std::fprintf(stderr, "cannot run %s: %s\n", argv[0], std::strerror(errno));
+    std::_Exit(fl::exit_code::run_failure);
+}
+
+/// Replaces this process by the plotting script drawing the figures of runs.
+int plot(const std::vector<std::string>& runs, const std::string& output) {
+    auto args = runs;
+    if (!output.empty()) args.insert(args.end(), {"--output", output});
+    exec(plot_command(args));
+}
+
+/// Runs the plotting script as a child and waits for it: true if it succeeded.
+bool plot_and_wait(const std::vector<std::string>& arguments) {
+    const auto args = plot_command(arguments);
+    const pid_t child = fork();
+    if (child < 0) throw fl::RunError(std::string("cannot start the plotting script: ") + std::strerror(errno));
+    if (child == 0) exec(args);
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {}
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
+int study(const std::filesystem::path& file, std::string output, bool force, bool check_only, const Common& common,
+          fl::Registry& registry, spdlog::logger& log) {
+    fl::Diagnostics diagnostics;
+    const auto spec = fl::read_study(file, diagnostics);
+    std::vector<fl::Scene> scenes;
+    if (diagnostics.empty()) {
+        const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics)
+                                     .plugin_paths(diagnostics);
+        fl::load_plugins(registry, common.directories(scene_paths));
+        if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
+        scenes = fl::study_scenes(spec, output, registry, diagnostics);
+    }
+    if (!diagnostics.empty()) {
+        std::cerr << diagnostics.format();
+        std::cerr << diagnostics.list().size() << (diagnostics.list().size() == 1 ? " error" : " errors") << " in "
+                  << file.string() << "\n";
+        return fl::exit_code::bad_input;
+    }
+    if (check_only) {
+        std::cout << file.string() << ": ok (" << scenes.size() << " scenes)\n";
+        return fl::exit_code::ok;
+    }
+    const auto result = fl::run_study(spec, scenes, output, registry, log, force);
+    fl::write_study_csv(result, spec, std::filesystem::path(output) / "study.csv");
+    fl::write_study_markdown(result, spec, std::filesystem::path(output) / "study.md");
+    log.info("study: {} cases; table in {}", result.rows.size(), (std::filesystem::path(output) / "study.md").string());
+    if (!plot_and_wait({"--study", output})) {
+        log.error("the work-precision plot could not be drawn (see above); study.csv and study.md are written");
+        return fl::exit_code::run_failure;
+    }
+    return fl::exit_code::ok;
 }
 
 }  // namespace
@@ -162,6 +222,16 @@ int main(int argc, char** argv) {
     plot_cmd->add_option("runs", runs, "Run output directories")->required()->check(CLI::ExistingDirectory);
     plot_cmd->add_option("-o,--output", output, "Directory for the figure over all runs (default: first run's plots/)");
 
+    std::filesystem::path study_file;
+    auto* study_cmd = app.add_subcommand(
+        "study", "Run an accuracy study: each case against a converged reference; study.csv, study.md, work-precision plot");
+    study_cmd->add_option("study", study_file, "Study file (YAML)")->required();
+    study_cmd->add_option("-o,--output", output, "Output directory (default: out/<study file name>)");
+    bool check_only = false;
+    study_cmd->add_flag("--check", check_only, "Only validate the study and the scene of every case");
+    study_cmd->add_flag("--force", force, "Replace the output directory if it exists, and run time steps above the estimated stable one");
+    common.attach(*study_cmd);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -187,6 +257,7 @@ int main(int argc, char** argv) {
             return fl::exit_code::ok;
         }
         if (*plot_cmd) return plot(runs, output);
+        if (*study_cmd) return study(study_file, output, force, check_only, common, registry, *log);
         fl::load_plugins(registry, common.directories({}));
         if (*list) {
             for (const auto* t : all_types(registry))

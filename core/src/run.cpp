@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <memory>
 
@@ -33,18 +34,6 @@ void write_atomically(const std::filesystem::path& file, const std::string& text
         if (!out) throw RunError("cannot write " + tmp.string());
     }
     std::filesystem::rename(tmp, file);
-}
-
-std::filesystem::path prepare_output_directory(const std::filesystem::path& dir, bool force) {
-    if (std::filesystem::exists(dir)) {
-        if (!force)
-            throw InputError(fmt::format("output directory '{}' already exists; choose another `output:` or "
-                                         "pass --force to replace it",
-                                         dir.string()));
-        std::filesystem::remove_all(dir);
-    }
-    std::filesystem::create_directories(dir);
-    return dir;
 }
 
 /// One observer with its cadence (design.md §1.7: an observer costs in proportion to its cadence).
@@ -87,8 +76,10 @@ struct RunRecord {
         y << YAML::Key << "scene_hash" << YAML::Value << info.scene_hash;
         y << YAML::Key << "seed" << YAML::Value << info.seed;
         y << YAML::Key << "steps" << YAML::Value << summary.steps;
+        y << YAML::Key << "evaluations" << YAML::Value << summary.evaluations;
         y << YAML::Key << "simulated_time" << YAML::Value << summary.simulated_time;
         y << YAML::Key << "wall_seconds" << YAML::Value << summary.wall_seconds;
+        y << YAML::Key << "cpu_seconds" << YAML::Value << summary.cpu_seconds;
         y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
         for (const auto& p : info.plugins)
             y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key
@@ -170,7 +161,8 @@ public:
         : scene_(scene), registry_(registry), log_(log), options_(options), sim_(scene, registry, log) {
         sim_.refuse_unstable_steps(!options.force);
         // After the components accepted their parameters, so a refusal leaves no directory behind.
-        output_ = prepare_output_directory(scene.output_directory, options.force);
+        prepare_output_directory(scene.output_directory, options.force);
+        output_ = scene.output_directory;
         for (const auto& o : scene.observers)
             observers_.push_back({registry.create<Observer>(o.type, o.values, sim_.context(o.path)), o.path, o.every,
                                   o.every_steps, 0});
@@ -183,9 +175,11 @@ public:
         RunRecord record{sim_.info(), "running", "", {}};
         record.write(output_);
         const auto start = Clock::now();
+        const std::clock_t cpu_start = std::clock();
         const auto summary = [&] {
-            return RunSummary{sim_.system().step_index(), sim_.system().time(),
-                              std::chrono::duration<double>(Clock::now() - start).count()};
+            return RunSummary{sim_.system().step_index(), sim_.system().evaluations(), sim_.system().time(),
+                              std::chrono::duration<double>(Clock::now() - start).count(),
+                              static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC};
         };
         try {
             run_stages();
@@ -289,6 +283,17 @@ private:
 };
 
 }  // namespace
+
+void prepare_output_directory(const std::filesystem::path& dir, bool force) {
+    if (std::filesystem::exists(dir)) {
+        if (!force)
+            throw InputError(fmt::format("output directory '{}' already exists; choose another or pass --force to "
+                                         "replace it",
+                                         dir.string()));
+        std::filesystem::remove_all(dir);
+    }
+    std::filesystem::create_directories(dir);
+}
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {
     return SceneRun(scene, registry, log, options).execute();

@@ -57,8 +57,14 @@ std::optional<std::string> read_file(const std::filesystem::path& file, Diagnost
     return text;
 }
 
+std::vector<SceneOverride> from_command_line(const std::vector<std::string>& texts) {
+    std::vector<SceneOverride> overrides;
+    for (const auto& text : texts) overrides.push_back({text});
+    return overrides;
+}
+
 SceneData read(const std::optional<std::string>& text, const std::string& name, const std::filesystem::path& folder,
-               const std::vector<std::string>& overrides, Diagnostics& diagnostics) {
+               const std::vector<SceneOverride>& overrides, Diagnostics& diagnostics) {
     SceneData data{std::nullopt, detail::SourceMap(name), folder};
     if (!text) return data;
     reporting_failures(name, diagnostics, [&] {
@@ -72,13 +78,18 @@ SceneData read(const std::optional<std::string>& text, const std::string& name, 
 
 SceneDocument SceneDocument::load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                                   Diagnostics& diagnostics) {
+    return load_located(file, from_command_line(overrides), diagnostics);
+}
+
+SceneDocument SceneDocument::load_located(const std::filesystem::path& file, const std::vector<SceneOverride>& overrides,
+                                          Diagnostics& diagnostics) {
     auto data = read(read_file(file, diagnostics), file.string(), file.parent_path(), overrides, diagnostics);
     return SceneDocument(std::make_unique<Impl>(std::move(data)));
 }
 
 SceneDocument SceneDocument::parse(const std::string& text, const std::string& name,
                                    const std::vector<std::string>& overrides, Diagnostics& diagnostics) {
-    auto data = read(text, name, std::filesystem::path(name).parent_path(), overrides, diagnostics);
+    auto data = read(text, name, std::filesystem::path(name).parent_path(), from_command_line(overrides), diagnostics);
     return SceneDocument(std::make_unique<Impl>(std::move(data)));
 }
 

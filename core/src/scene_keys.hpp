@@ -19,4 +19,11 @@ const std::vector<ParamInfo>& stage_params();
 /// Keys beside `type` that the scene, not the plugin, reads: a loader's `stages`, an observer's cadence.
 const std::vector<ParamInfo>& scene_level_params(Kind kind);
 
+/// An accuracy study's keys (study.hpp): title, scene, observe_every, profile_every.
+const std::vector<ParamInfo>& study_params();
+/// reference, cases: read by the study reader itself.
+const std::vector<std::string>& study_sections();
+/// The keys of the reference (set) or of one case (name, family, set).
+const std::vector<ParamInfo>& study_case_params(bool reference);
+
 }  // namespace frictionlab::detail

@@ -9,8 +9,6 @@ namespace frictionlab::detail {
 
 namespace {
 
-SourceLocation at_column(std::size_t offset) { return {command_line, 1, static_cast<int>(offset) + 1}; }
-
 // One step of a key path: a key of a mapping or an index into a list.
 struct Step {
     std::string key;
@@ -22,8 +20,8 @@ bool is_key_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) ||
 
 class Override {
 public:
-    Override(std::string text, SourceMap& sources, Diagnostics& diagnostics)
-        : text_(std::move(text)), sources_(&sources), diagnostics_(&diagnostics) {}
+    Override(const SceneOverride& o, SourceMap& sources, Diagnostics& diagnostics)
+        : text_(o.text), origin_(o.origin), sources_(&sources), diagnostics_(&diagnostics) {}
 
     void apply(YAML::Node& root) {
         const std::size_t equals = text_.find('=');
@@ -36,6 +34,10 @@ public:
     }
 
 private:
+    SourceLocation at_column(std::size_t offset) const {
+        return {origin_.file, origin_.line, origin_.column + static_cast<int>(offset)};
+    }
+
     void fail(std::size_t offset, const std::string& path, const std::string& message) {
         diagnostics_->error(at_column(offset), path, "in --set " + quote(text_) + ": " + message);
     }
@@ -65,7 +67,7 @@ private:
     // The value is YAML of its own; its marks count from the '='.
     bool parse_value() {
         Diagnostics found;
-        auto value = read_yaml(text_.substr(value_offset_), command_line, found);
+        auto value = read_yaml(text_.substr(value_offset_), origin_.file, found);
         for (const auto& d : found.list())
             diagnostics_->error(at_column(value_offset_ + std::max(d.where.column - 1, 0)), d.key_path,
                                 "in --set " + quote(text_) + ": " + d.message);
@@ -151,6 +153,7 @@ private:
 
     static constexpr int max_depth = 4;
     std::string text_;
+    SourceLocation origin_;
     SourceMap* sources_;
     Diagnostics* diagnostics_;
     std::vector<Step> steps_;
@@ -160,9 +163,9 @@ private:
 
 }  // namespace
 
-void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides, SourceMap& sources,
+void apply_overrides(YAML::Node& root, const std::vector<SceneOverride>& overrides, SourceMap& sources,
                      Diagnostics& diagnostics) {
-    for (const auto& text : overrides) Override(text, sources, diagnostics).apply(root);
+    for (const auto& o : overrides) Override(o, sources, diagnostics).apply(root);
 }
 
 }  // namespace frictionlab::detail

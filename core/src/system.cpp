@@ -34,6 +34,11 @@ void System::enable_work_accounting() {
 }
 
 void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
+    evaluate(t, y, dy, work_weight);
+    ++evaluations_;
+}
+
+void System::evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
     const Index n = layout_.nodes;
     dy.head(2 * n) = y.segment(2 * n, 2 * n);
     dy.tail(layout_.size() - 2 * n).setZero();
@@ -55,7 +60,6 @@ void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy,
     }
     f.fx *= inverse_mass_;
     f.fz *= inverse_mass_;
-    ++evaluations_;
 }
 
 void System::effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
@@ -104,7 +108,7 @@ void System::begin_stage(const StageInfo& stage) {
 }
 
 void System::refresh() {
-    derivative(t_, y_, scratch_);
+    evaluate(t_, y_, scratch_, 0);
     const Index n = layout_.nodes;
     net_force_.head(n) = (scratch_.segment(2 * n, n).array() * body_.mass).matrix();
     net_force_.tail(n) = (scratch_.segment(3 * n, n).array() * body_.mass).matrix();

@@ -10,7 +10,7 @@ namespace frictionlab {
 
 ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
     ParamSpec<Params> s("Space-time history of the interface: velocity, slip, pinned fraction and shear/normal "
-                        "ratio of every interface block, one CSV row per observation.");
+                        "ratio of every interface block, and its normal and friction forces, one CSV row per observation.");
     s.add("node_set", &Params::node_set, "Node set to follow, ordered along x.");
     return s;
 }
@@ -38,6 +38,11 @@ void InterfaceHistory::begin(const RunView& view) {
             [counts = *counts](const RunView&, Index b) { return counts.pinned_fraction(b); });
     const auto* friction = q.find_field("friction_force");
     const auto* normal = q.find_field("normal_force");
+    // Forces per block, e.g. the settled profile an accuracy study compares (frictionlab study).
+    for (const auto* field : {normal, friction})
+        if (field && field->node_set == params_.node_set)
+            add(field == normal ? "interface_normal_force.csv" : "interface_friction_force.csv",
+                [field](const RunView&, Index b) { return field->values(b); });
     if (friction && normal && params_.node_set == friction->node_set)
         add("interface_shear_ratio.csv", [friction, normal](const RunView&, Index b) {
             return normal->values(b) > 0 ? friction->values(b) / normal->values(b)

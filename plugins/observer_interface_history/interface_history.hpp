@@ -15,6 +15,8 @@ namespace frictionlab {
 ///   interface_slip.csv             x - x0 of each block (m)
 ///   interface_pinned_fraction.csv  N_p / (N_p + N_s + N_d) of each block (NaN without junctions),
 ///                                  when the friction law publishes junction counts
+///   interface_normal_force.csv     normal_force of each block (N), when the scene publishes it
+///   interface_friction_force.csv   friction_force of each block (N), when the friction law publishes it
 ///   interface_shear_ratio.csv      friction_force / normal_force of each block, when both exist
 /// Rows cost a pass over the interface at the observer's cadence; nothing in between.
 class InterfaceHistory final : public Observer {

@@ -11,9 +11,15 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
   fronts          rupture-front position against time since nucleation, one curve per event
   energy          the energy balance: input, stored, kinetic, dissipated, residual
 and, over all the runs given, precursor_lengths: l/L against F_S/F_N (Li2020 Figs. 7, 8).
+
+    frictionlab_plot.py --study STUDY_DIR      (run by `frictionlab study`)
+
+draws work_precision (PNG and SVG) into STUDY_DIR from its study.csv: each error against wall time,
+log-log, one curve per family of cases.
 Each figure is a short function below: adapt them freely.
 """
 import argparse
+import csv
 import glob
 import os
 import sys
@@ -187,7 +193,58 @@ def energy(run, out_dir):
     save(fig, out_dir, "energy")
 
 
+STUDY_ERRORS = [
+    ("err_settled_normal_force", "settled normal force profile"),
+    ("err_settled_friction_force", "settled friction force profile"),
+    ("err_first_precursor_time", "time of the first precursor"),
+    ("err_first_precursor_force", "$F_S$ of the first precursor"),
+    ("err_global_static_coefficient", "global $F_S/F_N$"),
+    ("err_event_slip", "slip profile of the first event"),
+]
+
+
+def work_precision(study_dir):
+    """Each relative error against wall time, one curve per family, cheapest case first."""
+    with open(os.path.join(study_dir, "study.csv"), newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    cases = [r for r in rows if r["case"] != "reference"]
+    families = list(dict.fromkeys(r["family"] for r in cases))
+    fig, axes = plt.subplots(2, 3, figsize=(13, 7.5))
+    for ax, (column, title) in zip(axes.flat, STUDY_ERRORS):
+        for k, family in enumerate(families):
+            points = sorted((float(r["wall_seconds"]), float(r[column]), r["case"]) for r in cases if r["family"] == family)
+            points = [p for p in points if np.isfinite(p[1]) and p[1] > 0]  # a log axis has no 0 or NaN
+            if points:
+                ax.plot([p[0] for p in points], [p[1] for p in points], "o-", color=f"C{k}", label=family, ms=4)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, which="major", alpha=0.3)
+    for ax in axes[1]:
+        ax.set_xlabel("wall time (s)")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("relative error")
+    handles, labels = axes.flat[0].get_legend_handles_labels()
+    for ax in axes.flat[1:]:
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            if lab not in labels:
+                handles.append(h)
+                labels.append(lab)
+    fig.legend(handles, labels, loc="lower center", ncol=max(1, len(labels)), frameon=False)
+    with open(os.path.join(study_dir, "study.md")) as f:  # its first line is "# <the study's title>"
+        title = f.readline().lstrip("# ").strip()
+    fig.suptitle(f"{title}: relative error against the reference (0 and NaN not drawn)")
+    fig.tight_layout(rect=(0, 0.05, 1, 0.97))
+    save(fig, study_dir, "work_precision")
+
+
 def main(argv):
+    if argv[:1] == ["--study"]:
+        if len(argv) != 2 or not os.path.exists(os.path.join(argv[1], "study.csv")):
+            print("frictionlab_plot.py --study STUDY_DIR: expected a directory with study.csv", file=sys.stderr)
+            return 2
+        work_precision(argv[1])
+        return 0
     parser = argparse.ArgumentParser(prog="frictionlab plot", description=__doc__.split("\n\n")[0])
     parser.add_argument("runs", nargs="+", help="run output directories")
     parser.add_argument("-o", "--output", help="where the figure over all runs goes (default: first run's plots/)")

@@ -111,26 +111,13 @@ TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
     EXPECT_GT(rows, 1u);
 }
 
-bool starts_with_bytes(const fs::path& file, const std::string& magic) {
-    const std::string text = read_text(file);
-    return text.size() > magic.size() && text.compare(0, magic.size(), magic) == 0;
-}
-
 TEST_F(Cli, PlotDrawsEveryFigureAsPngAndSvg) {
     auto r = frictionlab("run -q " + scene("every_observer.yaml"), dir_);
     ASSERT_EQ(r.code, 0) << r.output;
     auto p = frictionlab("plot every_observer_out", dir_);
     ASSERT_EQ(p.code, 0) << p.output;
-    const fs::path plots = dir_ / "every_observer_out" / "plots";
-    for (const char* name : {"loading_curve", "four_phase_5", "spacetime", "fronts", "energy", "precursor_lengths"}) {
-        const fs::path png = plots / (std::string(name) + ".png"), svg = plots / (std::string(name) + ".svg");
-        ASSERT_TRUE(fs::exists(png)) << png << "\n" << p.output;
-        EXPECT_GT(fs::file_size(png), 1000u) << png;
-        EXPECT_TRUE(starts_with_bytes(png, "\x89PNG\r\n\x1a\n")) << png;
-        const std::string text = read_text(svg);
-        EXPECT_NE(text.find("<svg"), std::string::npos) << svg;
-        EXPECT_NE(text.find("</svg>"), std::string::npos) << svg;
-    }
+    for (const char* name : {"loading_curve", "four_phase_5", "spacetime", "fronts", "energy", "precursor_lengths"})
+        frictionlab::testing::expect_figure(dir_ / "every_observer_out" / "plots", name);
 }
 
 TEST_F(Cli, PlotRefusesAFolderThatIsNotARun) {

@@ -39,4 +39,15 @@ std::string read_text(const std::filesystem::path& file) {
     return s.str();
 }
 
+void expect_figure(const std::filesystem::path& dir, const std::string& name) {
+    const auto png = dir / (name + ".png"), svg = dir / (name + ".svg");
+    ASSERT_TRUE(std::filesystem::exists(png)) << png;
+    EXPECT_GT(std::filesystem::file_size(png), 1000u) << png;
+    const std::string magic = "\x89PNG\r\n\x1a\n", image = read_text(png);
+    EXPECT_EQ(image.compare(0, magic.size(), magic), 0) << png;
+    const std::string text = read_text(svg);
+    EXPECT_NE(text.find("<svg"), std::string::npos) << svg;
+    EXPECT_NE(text.find("</svg>"), std::string::npos) << svg;
+}
+
 }  // namespace frictionlab::testing

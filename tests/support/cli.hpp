@@ -19,4 +19,8 @@ std::filesystem::path work_directory();
 /// The whole text of a file ("" if it cannot be read).
 std::string read_text(const std::filesystem::path& file);
 
+/// Checks that `<dir>/<name>.png` is a PNG image of some size and `<dir>/<name>.svg` a whole SVG
+/// document, as the plotting script draws every figure.
+void expect_figure(const std::filesystem::path& dir, const std::string& name);
+
 }  // namespace frictionlab::testing

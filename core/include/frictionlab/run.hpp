@@ -50,11 +50,16 @@ struct RunOptions {
 
 struct RunSummary {
     long long steps = 0;
+    long long evaluations = 0;  // derivative evaluations of the time stepping
     double simulated_time = 0, wall_seconds = 0;
+    double cpu_seconds = 0;  // processor time of the run: what it costs, whatever else shares the machine
 };
 
 /// Throws RunError on failure, after every observer has closed its outputs.
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options);
+
+/// Creates `dir`; one that exists is an InputError unless `force`, which replaces it.
+void prepare_output_directory(const std::filesystem::path& dir, bool force);
 
 /// The framework version, e.g. "0.1.0".
 std::string framework_version();

@@ -60,12 +60,22 @@ struct Scene {
     std::string resolved_yaml;
 };
 
+/// One `key.path=value` override (share/docs/scene-format.md) and where its first character was
+/// written, so that its errors point there: the command line, or a study file (study.hpp).
+struct SceneOverride {
+    std::string text;
+    SourceLocation origin{"<command line>", 1, 1};
+};
+
 class SceneDocument {
 public:
     /// Parses the file and applies `--set key.path=value` overrides. Malformed YAML and duplicate
     /// keys are reported to `diagnostics` with file:line:column.
     static SceneDocument load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                               Diagnostics& diagnostics);
+    /// The same with overrides written elsewhere than on the command line (a study file).
+    static SceneDocument load_located(const std::filesystem::path& file, const std::vector<SceneOverride>& overrides,
+                                      Diagnostics& diagnostics);
     /// The same from text; `name` stands for the file in messages.
     static SceneDocument parse(const std::string& text, const std::string& name,
                                const std::vector<std::string>& overrides, Diagnostics& diagnostics);

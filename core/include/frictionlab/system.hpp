@@ -65,10 +65,13 @@ public:
     /// Work (J) each effect of the pipeline has done on the nodes since accounting began, in the
     /// order of for_each_effect(); empty without accounting.
     const std::vector<double>& work() const { return work_; }
-    /// Number of derivative evaluations so far (for tests and benchmarks).
+    /// Number of derivative evaluations the integrator asked for so far: the cost of the time
+    /// stepping (refresh() for observers is not counted).
     long long evaluations() const { return evaluations_; }
 
 private:
+    void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
+
     struct Slot {
         std::unique_ptr<Effect> effect;
         std::vector<std::string> active_in;

@@ -1,0 +1,47 @@
+#pragma once
+// The errors of an accuracy study, computed from the outputs each case wrote (the precursors and
+// interface_history observers the study adds): what a user would compare by hand, so every number
+// can be checked against the case's files. Profiles of runs at different lattice resolutions are
+// compared on x/L, the case's profile linearly interpolated at the reference's blocks.
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace frictionlab {
+
+/// What one case's outputs say about the quantities a study compares.
+struct CaseOutcome {
+    static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> x_over_length;    // of each interface block, ordered along x
+    /// Normal and friction force of each block at the end of the settling stage, over the mean
+    /// normal force per block (so that profiles at different resolutions compare).
+    std::vector<double> settled_normal, settled_friction;
+    double first_precursor_time = nan;   // start of the first non-global event, since loading began (s)
+    double first_precursor_force = nan;  // F_S at its start (N)
+    double global_static_coefficient = nan;  // F_S/F_N at the first global slip (theory.md B.20)
+    std::vector<double> event_slip;      // slip of each block over the first event (m)
+    bool any_event = false, global_slip = false;
+};
+
+/// Reads a case's output directory. `settle_end` is the end of the settling stage and
+/// `load_start` the start of the loading stage (s).
+CaseOutcome read_case_outcome(const std::filesystem::path& dir, double settle_end, double load_start);
+
+/// Relative errors of a case against the reference: |a - r| / |r| for numbers, relative L2 on x/L
+/// for profiles. NaN where the case lacks what the reference has (named in `note`).
+struct CaseErrors {
+    double settled_normal_force = CaseOutcome::nan, settled_friction_force = CaseOutcome::nan;
+    double first_precursor_time = CaseOutcome::nan, first_precursor_force = CaseOutcome::nan;
+    double global_static_coefficient = CaseOutcome::nan, event_slip = CaseOutcome::nan;
+    std::string note;
+};
+
+CaseErrors compare(const CaseOutcome& reference, const CaseOutcome& outcome);
+
+/// ||f(x_ref) - f_ref|| / ||f_ref|| over the reference points, f linearly interpolated from (x, values)
+/// (x increasing); exactly 0 when the grids and values are equal. NaN if either is empty.
+double relative_l2_on_grid(const std::vector<double>& x_ref, const std::vector<double>& reference,
+                           const std::vector<double>& x, const std::vector<double>& values);
+
+}  // namespace frictionlab

@@ -1,0 +1,44 @@
+#pragma once
+// Runs an accuracy study (study.hpp): the reference and every case one after another, each an
+// ordinary run into <output>/cases/<name>, then the errors of each case against the reference
+// (study_metrics.hpp) into <output>/study.csv and <output>/study.md. One case at a time keeps
+// the wall times comparable and each run bit-reproducible.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <spdlog/logger.h>
+
+#include "frictionlab/run.hpp"
+#include "frictionlab/study.hpp"
+#include "frictionlab/study_metrics.hpp"
+
+namespace frictionlab {
+
+struct StudyRow {
+    std::string name, family;
+    std::vector<std::string> knobs;  // one value per StudyResult::knob_columns ("" where it does not apply)
+    RunSummary summary;
+    CaseOutcome outcome;
+    CaseErrors errors;
+};
+
+struct StudyResult {
+    /// integrator.type, then every key path the study's overrides set, in order of first use.
+    std::vector<std::string> knob_columns;
+    std::vector<StudyRow> rows;  // the reference first
+};
+
+/// The study's output directory is created (replaced with `force`; that also runs a time step
+/// above the estimated stable one). A case that fails is a row of NaN errors with the reason in
+/// its note; a failing reference throws RunError.
+StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
+                      const Registry& registry, spdlog::logger& log, bool force);
+
+/// study.csv: case, family, knobs, wall_seconds, cpu_seconds, steps, evaluations, the errors, note.
+void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);
+/// study.md: the same as a Markdown table, with the reference's values.
+void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file);
+
+}  // namespace frictionlab

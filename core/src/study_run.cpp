@@ -1,0 +1,186 @@
+#include "frictionlab/study_run.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+struct ErrorColumn {
+    const char* name;
+    const char* title;  // in study.md
+    double CaseErrors::*member;
+};
+
+const std::vector<ErrorColumn> error_columns{
+    {"err_settled_normal_force", "settled normal force", &CaseErrors::settled_normal_force},
+    {"err_settled_friction_force", "settled friction force", &CaseErrors::settled_friction_force},
+    {"err_first_precursor_time", "first precursor time", &CaseErrors::first_precursor_time},
+    {"err_first_precursor_force", "first precursor F_S", &CaseErrors::first_precursor_force},
+    {"err_global_static_coefficient", "global F_S/F_N", &CaseErrors::global_static_coefficient},
+    {"err_event_slip", "slip of first event", &CaseErrors::event_slip},
+};
+
+/// The node at a key path ("integrator.dt", "loaders[2].velocity") of a resolved scene; an
+/// undefined node where the scene has no such key (e.g. a tolerance of a fixed-step integrator).
+YAML::Node node_at(const YAML::Node& root, const std::string& path) {
+    static const std::regex step(R"(([A-Za-z0-9_]+)|\[([0-9]+)\])");
+    YAML::Node at;
+    at.reset(root);
+    for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it) {
+        if ((*it)[1].matched) {
+            if (!at.IsMap() || !at[(*it)[1].str()]) return YAML::Node(YAML::NodeType::Undefined);
+            at.reset(at[(*it)[1].str()]);  // `at = ...` would assign into the scene, not move along it
+        } else {
+            const auto i = std::stoul((*it)[2].str());
+            if (!at.IsSequence() || i >= at.size()) return YAML::Node(YAML::NodeType::Undefined);
+            at.reset(at[i]);
+        }
+    }
+    return at;
+}
+
+/// A knob's value as YAML text ("" where the scene has no such key).
+std::string value_at(const YAML::Node& root, const std::string& path) {
+    const YAML::Node at = node_at(root, path);
+    if (!at.IsDefined()) return "";
+    if (at.IsScalar()) return at.Scalar();
+    YAML::Emitter out;
+    out.SetMapFormat(YAML::Flow);
+    out.SetSeqFormat(YAML::Flow);
+    out << at;
+    return out.c_str();
+}
+
+/// integrator.type, then every key path the overrides set; one that sets a whole mapping (such as
+/// `integrator={type: ..., rtol: ...}`) stands for each of its keys in every case.
+std::vector<std::string> knob_columns(const Study& study, const std::vector<YAML::Node>& resolved) {
+    std::vector<std::string> columns{"integrator.type"};
+    const auto add = [&](const std::string& key) {
+        if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+    };
+    for (const StudyCase* c : study.all_cases())
+        for (const auto& o : c->overrides) {
+            const std::string key = o.text.substr(0, o.text.find('='));
+            bool mapping = false;
+            for (const auto& scene : resolved)
+                if (const YAML::Node at = node_at(scene, key); at.IsMap()) {
+                    mapping = true;
+                    for (auto it = at.begin(); it != at.end(); ++it) add(key + "." + it->first.Scalar());
+                }
+            if (!mapping) add(key);
+        }
+    return columns;
+}
+
+double load_start(const Scene& scene) {
+    double t = 0;
+    for (std::size_t i = 0; i + 1 < scene.stages.size(); ++i) t += scene.stages[i].duration;
+    return t;
+}
+
+std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.6g}", v); }
+
+/// A CSV cell: quoted when it holds a comma or a quote (RFC 4180).
+std::string cell(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+void write_file(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::trunc);
+    out << text;
+    if (!out) throw RunError("cannot write " + file.string());
+}
+
+}  // namespace
+
+StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
+                      const Registry& registry, spdlog::logger& log, bool force) {
+    prepare_output_directory(output, force);
+    std::filesystem::create_directories(output / "cases");
+    std::vector<YAML::Node> resolved;
+    for (const auto& scene : scenes) resolved.push_back(YAML::Load(scene.resolved_yaml));
+    StudyResult result;
+    result.knob_columns = knob_columns(study, resolved);
+    const auto cases = study.all_cases();
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Scene& scene = scenes.at(k);
+        StudyRow row;
+        row.name = cases[k]->name;
+        for (const auto& key : result.knob_columns) row.knobs.push_back(value_at(resolved[k], key));
+        row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
+        log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
+        try {
+            row.summary = run_scene(scene, registry, log, {force, false});
+            row.outcome = read_case_outcome(scene.output_directory, scene.stages.front().duration, load_start(scene));
+        } catch (const std::exception& e) {
+            if (k == 0) throw RunError(fmt::format("the reference run failed: {}", e.what()));
+            log.warn("study case {} failed: {}", row.name, e.what());
+            row.errors.note = fmt::format("run failed: {}", e.what());
+            result.rows.push_back(std::move(row));
+            continue;
+        }
+        row.errors = compare(k == 0 ? row.outcome : result.rows.front().outcome, row.outcome);
+        log.info("study case {}: {:.3g} s wall ({:.3g} s CPU), {} steps, {} evaluations", row.name,
+                 row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps, row.summary.evaluations);
+        result.rows.push_back(std::move(row));
+    }
+    return result;
+}
+
+void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
+    std::string text = fmt::format("# frictionlab {} study {}: errors relative to the reference case\n",
+                                   framework_version(), study.file.filename().string());
+    text += "case,family";
+    for (const auto& k : result.knob_columns) text += fmt::format(",{}", cell(k));
+    text += ",wall_seconds,cpu_seconds,steps,evaluations";
+    for (const auto& c : error_columns) text += std::string(",") + c.name;
+    text += ",note\n";
+    for (const auto& row : result.rows) {
+        text += fmt::format("{},{}", row.name, cell(row.family));
+        for (const auto& v : row.knobs) text += fmt::format(",{}", cell(v));
+        text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps,
+                            row.summary.evaluations);
+        for (const auto& c : error_columns) text += fmt::format(",{}", number(row.errors.*c.member));
+        text += fmt::format(",{}\n", cell(row.errors.note));
+    }
+    write_file(file, text);
+}
+
+void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
+    const CaseOutcome& ref = result.rows.front().outcome;
+    std::string text = fmt::format("# {}\n\n", study.title.empty() ? "Accuracy study" : study.title);
+    text += fmt::format("Study `{}` on `{}`. Reference: first precursor {} s after loading began at F_S = {} N; "
+                        "global F_S/F_N = {}. Errors are relative (profiles: relative L2 on x/L).\n\n",
+                        study.file.filename().string(), study.scene.filename().string(),
+                        number(ref.first_precursor_time), number(ref.first_precursor_force),
+                        number(ref.global_static_coefficient));
+    text += "| case | family |";
+    for (const auto& k : result.knob_columns) text += " " + k + " |";
+    text += " wall (s) | CPU (s) | steps | evaluations |";
+    for (const auto& c : error_columns) text += std::string(" ") + c.title + " |";
+    text += " note |\n|";
+    for (std::size_t i = 0; i < 7 + result.knob_columns.size() + error_columns.size(); ++i) text += " --- |";
+    text += "\n";
+    for (const auto& row : result.rows) {
+        text += "| " + row.name + " | " + row.family + " |";
+        for (const auto& v : row.knobs) text += " " + v + " |";
+        text += fmt::format(" {:.3g} | {:.3g} | {} | {} |", row.summary.wall_seconds, row.summary.cpu_seconds,
+                            row.summary.steps, row.summary.evaluations);
+        for (const auto& c : error_columns) text += fmt::format(" {} |", number(row.errors.*c.member));
+        text += " " + row.errors.note + " |\n";
+    }
+    write_file(file, text);
+}
+
+}  // namespace frictionlab

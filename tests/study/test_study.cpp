@@ -1,0 +1,183 @@
+// `frictionlab study` as a user runs it: a tiny study through the real command, its table, its
+// errors against the reference, its plot, and the errors of a bad study file.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using frictionlab::testing::frictionlab;
+using frictionlab::testing::read_text;
+
+using Row = std::map<std::string, std::string>;
+
+/// study.csv as rows of cells by column name, and the header in order (no cell here is quoted).
+std::vector<Row> read_rows(const fs::path& file, std::vector<std::string>& header) {
+    std::ifstream in(file);
+    std::string line, cell;
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::stringstream cells(line);
+        std::vector<std::string> values;
+        while (std::getline(cells, cell, ',')) values.push_back(cell);
+        if (line.back() == ',') values.emplace_back();
+        if (header.empty()) {
+            header = values;
+            continue;
+        }
+        Row row;
+        for (std::size_t k = 0; k < header.size() && k < values.size(); ++k) row[header[k]] = values[k];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+const std::vector<std::string> errors{"err_settled_normal_force",      "err_settled_friction_force",
+                                      "err_first_precursor_time",      "err_first_precursor_force",
+                                      "err_global_static_coefficient", "err_event_slip"};
+
+/// study.csv of the tiny study, by case.
+class StudyTable {
+public:
+    explicit StudyTable(const fs::path& file) : rows_(read_rows(file, header_)) {}
+    const std::vector<std::string>& header() const { return header_; }
+    const std::vector<Row>& rows() const { return rows_; }
+    const Row& row(const std::string& name) const {
+        for (const auto& r : rows_)
+            if (r.at("case") == name) return r;
+        throw std::runtime_error("no row " + name);
+    }
+    double value(const std::string& name, const std::string& column) const { return std::stod(row(name).at(column)); }
+
+private:
+    std::vector<std::string> header_;
+    std::vector<Row> rows_;
+};
+
+// One test, so that the study (~5 s of simulation) runs once.
+TEST(Study, TinyStudyThroughTheCommand) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const auto result = frictionlab("study -q " STUDY_FILES "/tiny_study.yaml -o out", dir);
+    ASSERT_EQ(result.code, 0) << result.output;
+    const StudyTable table(dir / "out" / "study.csv");
+
+    // One row per case, the reference first; knobs as the resolved scene has them, defaults included.
+    std::vector<std::string> expected{"case", "family", "integrator.type", "integrator.dt", "seed",
+                                      "wall_seconds", "cpu_seconds", "steps", "evaluations"};
+    expected.insert(expected.end(), errors.begin(), errors.end());
+    expected.push_back("note");
+    EXPECT_EQ(table.header(), expected);
+    ASSERT_EQ(table.rows().size(), 5u);
+    const std::vector<std::string> names{"reference", "rk4_coarse", "rk4_fine", "verlet", "other_seed"};
+    for (std::size_t k = 0; k < names.size(); ++k) EXPECT_EQ(table.rows()[k].at("case"), names[k]);
+    EXPECT_EQ(table.row("rk4_coarse").at("integrator.dt"), "4e-07");
+    EXPECT_EQ(table.row("verlet").at("integrator.type"), "velocity_verlet");
+    EXPECT_EQ(table.row("verlet").at("family"), "verlet");
+    EXPECT_EQ(table.row("rk4_fine").at("family"), "rk4");
+    EXPECT_EQ(table.row("other_seed").at("seed"), "2");
+    // 15 ms of simulated time in steps of the case; RK4 costs four evaluations a step (plus those
+    // of the stable-step estimates), velocity Verlet fewer.
+    EXPECT_EQ(table.value("rk4_coarse", "steps"), 37500);
+    EXPECT_EQ(table.value("reference", "steps"), 150000);
+    EXPECT_GE(table.value("rk4_coarse", "evaluations"), 4 * 37500);
+    EXPECT_LT(table.value("verlet", "evaluations"), table.value("rk4_fine", "evaluations"));
+    EXPECT_GT(table.value("reference", "wall_seconds"), 0);
+    EXPECT_GT(table.value("reference", "cpu_seconds"), 0);
+    EXPECT_TRUE(fs::exists(dir / "out" / "cases" / "rk4_fine" / "run.yaml"));
+    EXPECT_NE(read_text(dir / "out" / "study.md").find("| rk4_fine | rk4 |"), std::string::npos);
+
+    // The reference against itself.
+    for (const auto& e : errors) EXPECT_EQ(table.row("reference").at(e), "0") << e;
+    // The quantities that vary continuously with the step converge towards the reference (the
+    // time of the first precursor is resolved to observe_every, and equal here).
+    for (const char* e : {"err_settled_normal_force", "err_settled_friction_force", "err_first_precursor_force",
+                          "err_global_static_coefficient", "err_event_slip"}) {
+        EXPECT_LT(table.value("rk4_fine", e), table.value("rk4_coarse", e)) << e;
+        EXPECT_GT(table.value("rk4_coarse", e), 0) << e;
+    }
+    // Junction lifetimes are drawn by key, not in stepping order: runs at different steps draw the
+    // same ones, so the step's error is far below that of drawing others (another seed).
+    for (const char* e : {"err_first_precursor_force", "err_global_static_coefficient", "err_event_slip"})
+        EXPECT_GT(table.value("other_seed", e), 10 * table.value("rk4_coarse", e)) << e;
+
+    frictionlab::testing::expect_figure(dir / "out", "work_precision");
+
+    const auto again = frictionlab("study -q " STUDY_FILES "/tiny_study.yaml -o out", dir);
+    EXPECT_EQ(again.code, 2);
+    EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
+}
+
+class BadStudy : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = frictionlab::testing::work_directory();
+        fs::copy_file(STUDY_FILES "/tiny_scene.yaml", dir_ / "tiny_scene.yaml");
+    }
+    frictionlab::testing::CliResult study(const std::string& text) {
+        std::ofstream(dir_ / "bad.yaml") << text;
+        return frictionlab("study -q bad.yaml -o out", dir_);
+    }
+    fs::path dir_;
+};
+
+TEST_F(BadStudy, EveryErrorOfTheStudyFileAtItsLineAndColumn) {
+    const auto r = study(
+        "scene: tiny_scene.yaml\n"
+        "observe_evry: 1.0e-6\n"
+        "profile_every: -1\n"
+        "reference:\n"
+        "  set: [integrator.dt=1.0e-7]\n"
+        "cases:\n"
+        "  - name: a\n"
+        "  - name: a\n"
+        "  - name: Bad/name\n"
+        "  - {set: [integrator.dt=1e-7]}\n");
+    EXPECT_EQ(r.code, 2) << r.output;
+    for (const char* message :
+         {"bad.yaml:2:1: error: observe_evry: unknown key 'observe_evry'; did you mean 'observe_every'?",
+          "bad.yaml:3:16: error: profile_every: must be > 0, got -1",
+          "bad.yaml:8:5: error: cases[1].name: duplicate case name 'a', first used at line 7",
+          "bad.yaml:9:5: error: cases[2].name: expected a name of a-z, 0-9, _, . and -, starting with a letter, got "
+          "'Bad/name'",
+          "bad.yaml:10:5: error: cases[3].name: required key is missing"})
+        EXPECT_NE(r.output.find(message), std::string::npos) << message << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(BadStudy, ErrorsInACaseOverridePointIntoTheStudyFile) {
+    const auto r = study(
+        "scene: tiny_scene.yaml\n"
+        "reference:\n"
+        "  set: [integrator.dt=1.0e-7]\n"
+        "cases:\n"
+        "  - name: fast\n"
+        "    set: [integrator.dt=fast, \"bulk.nxx=3\"]\n");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("bad.yaml:6:25: error: integrator.dt: expected a number"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bad.yaml:6:37: error: bulk.nxx: unknown key 'nxx'; did you mean 'nx'?"),
+              std::string::npos)
+        << r.output;
+}
+
+TEST_F(BadStudy, MissingBaseSceneAndStudyFile) {
+    const auto r = study("scene: nowhere.yaml\nreference: {set: []}\ncases: [{name: a}]\n");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("nowhere.yaml: error: cannot read the scene file: it does not exist"), std::string::npos)
+        << r.output;
+    const auto none = frictionlab("study no_such_study.yaml", dir_);
+    EXPECT_EQ(none.code, 2);
+    EXPECT_NE(none.output.find("no_such_study.yaml: error: cannot read the study file: it does not exist"),
+              std::string::npos)
+        << none.output;
+}
+
+}  // namespace
