@@ -32,10 +32,11 @@ std::vector<std::string> lines_of(const std::string& text) {
 /// Whether a line opens a top-level key (the end of the block before it).
 bool top_level(const std::string& line) { return !line.empty() && line[0] != ' ' && line[0] != '#'; }
 
-/// [first, last) lines of the scene's top-level `friction:` block.
+/// [first, last) lines of the scene's top-level `friction:` block (empty at the end if it has none).
 std::pair<std::size_t, std::size_t> friction_block(const std::vector<std::string>& lines) {
     std::size_t first = 0;
     while (first < lines.size() && lines[first].rfind("friction:", 0) != 0) ++first;
+    if (first == lines.size()) return {first, first};
     std::size_t last = first + 1;
     while (last < lines.size() && !top_level(lines[last])) ++last;
     return {first, last};
