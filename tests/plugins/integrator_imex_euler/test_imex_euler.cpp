@@ -137,5 +137,32 @@ TEST(ImexEuler, ARateStateBlockStartedAtRestReachesTheClosedFormSteadyFriction) 
     EXPECT_NEAR(mu_ss, p.f0 + (p.a - p.b) * std::log(V / p.v0), 1e-12);  // the classical form, X ~ 1e31
 }
 
+TEST(ImexEuler, ARateStateBlockStopsFromSlidingWithoutOvershoot) {
+    // Sliding at 1 mm/s on a state healed at 1 nm/s, held by a spring at that state's steady
+    // friction: the friction exceeds the spring by f_N a ln 1e6 = 1.1 N, and the velocity must
+    // fall by six decades to 1 nm/s, mostly within the first step (m v / h = 0.16 N). A single
+    // linearly implicit step, Newton's first iterate, overshoots to a negative velocity there (the
+    // force goes as a ln v); the solved step lands inside (0, v_n) and settles on 1 nm/s.
+    const double h = 2e-7, v_start = 1e-3, V = 1e-9;
+    Block block(V, v_start, V);
+    const RateState::Params p;
+    const double psi = block.psi(), m = Block::mass, normal = Block::normal;
+    const double spring = block.law->steady_coefficient(V) * normal;
+    const double force = spring - block.law->coefficient(v_start, psi) * normal;
+    const double jacobian = -block.law->coefficient_slope(v_start, psi) * normal;
+    EXPECT_LT(v_start + h * force / (m - h * jacobian), 0.0) << "the linearly implicit step";
+    Services services;
+    ImexEuler imex({h}, services.context());
+    imex.step(*block.system, 1.0);
+    EXPECT_GT(block.velocity(), 0.0);
+    EXPECT_LT(block.velocity(), v_start);
+    for (int i = 0; i < 1000; ++i) {
+        imex.step(*block.system, 1.0);
+        ASSERT_GT(block.velocity(), 0.0) << "step " << i;
+    }
+    EXPECT_NEAR(block.velocity() / V, 1.0, 0.01);
+    EXPECT_NEAR(block.friction_coefficient(), block.law->steady_coefficient(V), 1e-3 * p.a);
+}
+
 }  // namespace
 }  // namespace frictionlab
