@@ -4,7 +4,8 @@
 namespace frictionlab {
 
 /// Implicit-explicit (IMEX) symplectic Euler with a fixed step, for friction laws that are too stiff
-/// in the slip velocity for an explicit step (rate and state near v = 0, theory.md D.2.4). The
+/// in the slip velocity for an explicit step (rate and state near v = 0, theory.md D.2.4; the
+/// regularised sign tanh(v/v_r) of coulomb and slip_weakening, S/v_r ~ 4e6 N s/m at v = 0). The
 /// forces of effects whose velocity dependence is local (Effect::has_velocity_jacobian: F_L,i
 /// depends on vx_i only) are taken at the new x-velocity, everything else at the step start:
 ///
