@@ -86,7 +86,7 @@ StageInfo Simulation::begin_stage(std::size_t index) {
 void Simulation::check_stability(const StageInfo& stage) {
     const double radius = integrator_->stability_radius(), dt = integrator_->nominal_dt();
     if (!std::isfinite(radius)) return;
-    const StabilityEstimate e = estimate_stability(*system_, radius);
+    const StabilityEstimate e = estimate_stability(*system_, radius, integrator_->implicit_in_local_velocity());
     log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s",
               e.dt_limit, e.lambda_max, e.limiting_effect, dt);
     if (dt <= e.dt_limit) return;

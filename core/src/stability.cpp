@@ -37,16 +37,45 @@ double largest_eigenvalue(const Rate& rate, const Eigen::VectorXd& y0) {
 
 }  // namespace
 
-StabilityEstimate estimate_stability(System& system, double stability_radius) {
+StabilityEstimate estimate_stability(System& system, double stability_radius, bool implicit_local_velocity) {
     StabilityEstimate e;
     system.begin_step();  // effects freeze their discrete state and step-start references, as in a step
     const Eigen::VectorXd y0 = system.y();
     const double t = system.time();
-    e.lambda_max = largest_eigenvalue([&](const auto& y, auto& dy) { system.derivative(t, y, dy); }, y0);
     const auto pipeline = system.pipeline();
+    const Index n = system.layout().nodes, rest = y0.size() - 2 * n;
+    const auto implicit = [&](std::size_t k) { return implicit_local_velocity && system.has_velocity_jacobian(k); };
+    bool any_implicit = false;
+    for (std::size_t k = 0; k < pipeline.size(); ++k) any_implicit = any_implicit || implicit(k);
+
+    // Effect k's dy/dt at y. One whose local velocity dependence the integrator treats implicitly sees
+    // the velocities of y0 instead: what is left is the part the explicit scheme must resolve.
+    Eigen::VectorXd frozen, one(y0.size());
+    const auto effect_rate = [&](std::size_t k, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+        if (!implicit(k)) {
+            system.effect_derivative(k, t, y, dy);
+            return;
+        }
+        frozen = y;
+        frozen.segment(2 * n, n) = y0.segment(2 * n, n);
+        system.effect_derivative(k, t, frozen, dy);
+        dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    };
+    // The whole pipeline, effect by effect in its order (each reads what the earlier ones published).
+    const auto explicit_rate = [&](const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+        dy.setZero(y.size());
+        for (std::size_t k = 0; k < pipeline.size(); ++k) {
+            effect_rate(k, y, one);
+            dy.tail(rest) += one.tail(rest);
+        }
+        dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    };
+    if (any_implicit)
+        e.lambda_max = largest_eigenvalue(explicit_rate, y0);
+    else
+        e.lambda_max = largest_eigenvalue([&](const auto& y, auto& dy) { system.derivative(t, y, dy); }, y0);
     for (std::size_t k = 0; k < pipeline.size(); ++k) {
-        const double lambda =
-            largest_eigenvalue([&](const auto& y, auto& dy) { system.effect_derivative(k, t, y, dy); }, y0);
+        const double lambda = largest_eigenvalue([&](const auto& y, auto& dy) { effect_rate(k, y, dy); }, y0);
         if (lambda > e.limiting_lambda) e.limiting_lambda = lambda, e.limiting_effect = pipeline[k];
     }
     if (e.lambda_max > 0) e.dt_limit = stability_radius / e.lambda_max;

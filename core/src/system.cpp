@@ -72,6 +72,25 @@ void System::effect_derivative(std::size_t active_index, double t, const Eigen::
     f.fz *= inverse_mass_;
 }
 
+bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx) {
+    const Index n = layout_.nodes;
+    fx.setZero(n);
+    dfx_dvx.setZero(n);
+    if (local_scratch_.size() != layout_.size()) local_scratch_.resize(layout_.size());
+    local_scratch_.setZero();
+    const StageView s = view_of(y, layout_, t);
+    ForceView f = forces_of(local_scratch_, layout_);
+    bool any = false;
+    for (Effect* e : active_) {
+        if (!e->has_velocity_jacobian()) continue;
+        any = true;
+        e->add_forces(s, f);
+        e->add_velocity_jacobian(s, dfx_dvx);
+    }
+    fx = f.fx;
+    return any;
+}
+
 void System::begin_step() {
     std::fill(pending_work_.begin(), pending_work_.end(), 0.0);
     const StageView s = state();

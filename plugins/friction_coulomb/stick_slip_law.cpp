@@ -62,6 +62,18 @@ void StickSlipLaw::add_forces(const StageView& s, ForceView& f) {
     }
 }
 
+void StickSlipLaw::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
+    const double v_r = settings_.regularisation_velocity;
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Block& b = blocks_[k];
+        if (b.mode != Mode::slipping) continue;
+        const Index node = nodes_[k];
+        const double normal = std::max(0.0, (*normal_force_)[static_cast<Index>(k)]);
+        const double c = std::cosh(s.vx[node] / v_r);  // inf far from 0: the slope is then 0
+        dfx_dvx[node] -= kinetic_strength(normal, stage_slip(b, s.x[node])) / (v_r * c * c);
+    }
+}
+
 double StickSlipLaw::potential_energy(const StageView& s) const {
     double energy = 0;
     for (std::size_t k = 0; k < nodes_.size(); ++k) {

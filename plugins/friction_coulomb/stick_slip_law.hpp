@@ -91,6 +91,11 @@ public:
     void begin_step(const StageView&) override;
     void commit(const StageView& end, double dt) override;
     double potential_energy(const StageView& s) const override;
+    /// Local in velocity: only a slipping block's force depends on its vx, with
+    /// dF/dv = -(S / v_r) sech^2(v / v_r), a dashpot of up to S / v_r near v = 0 that imex_euler takes
+    /// implicitly (stuck and detached blocks: 0).
+    bool has_velocity_jacobian() const final { return true; }
+    void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const final;
 
     Index blocks() const { return static_cast<Index>(blocks_.size()); }
     const Block& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }

@@ -89,6 +89,19 @@ void RateState::add_forces(const StageView& s, ForceView& f) {
     }
 }
 
+double RateState::coefficient_slope(double v, double psi) const {
+    // w underflows to 0 rather than overflowing where exp(psi/a) would: the slope is then a/|v|.
+    return p_.a / std::hypot(v, 2 * p_.v0 * std::exp(-psi / p_.a));
+}
+
+void RateState::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const auto i = static_cast<Index>(k);
+        const Index node = nodes_[k];
+        dfx_dvx[node] -= coefficient_slope(s.vx[node], s.aux[offset_ + i]) * (*normal_force_)[i];
+    }
+}
+
 void RateState::initialise_aux(Eigen::Ref<Eigen::ArrayXd> aux) const {
     aux.segment(offset_, blocks()).setConstant(steady_state(p_.initial_velocity));
 }

@@ -64,6 +64,13 @@ public:
     std::string describe() const override;
     void add_forces(const StageView& s, ForceView& f) override;
     void initialise_aux(Eigen::Ref<Eigen::ArrayXd> aux) const override;
+    /// The force of block i depends on its own vx only, with dF/dv = -f_N a / sqrt(v^2 + w^2),
+    /// w = 2 v0 exp(-psi/a): f_N a/|v| while sliding, f_N a/w at rest (5e41 N s/m at the defaults, f_N = 10 N).
+    /// imex_euler takes it implicitly; an explicit step would need h f_N a / (m |v|) < ~2.
+    bool has_velocity_jacobian() const override { return true; }
+    void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
+    /// dmu/dv at (v, psi) = a / sqrt(v^2 + w^2).
+    double coefficient_slope(double v, double psi) const;
 
     Index blocks() const { return static_cast<Index>(nodes_.size()); }
     /// First aux slot of this law (block i's psi is aux[aux_offset() + i]).

@@ -41,6 +41,15 @@ public:
     virtual double potential_energy(const StageView&) const { return 0; }
     /// Sets initial values of this effect's aux variables (if it allocated any).
     virtual void initialise_aux(Eigen::Ref<Eigen::ArrayXd> /*aux*/) const {}
+
+    /// Whether this effect's velocity dependence is local and given by add_velocity_jacobian(): its
+    /// x-force on node i depends on the velocities through vx_i only, and its z-force not at all. An
+    /// integrator may then treat that dependence implicitly (a rate-and-state law is far too stiff in
+    /// v for an explicit step near v = 0, theory.md D.2.4), and the stable-step estimate leaves it out.
+    virtual bool has_velocity_jacobian() const { return false; }
+    /// Adds the diagonal d(fx_i)/d(vx_i) of this effect's x-force at a stage (N s/m, <= 0: the force
+    /// resists the velocity) into dfx_dvx (one entry per node). Called only if has_velocity_jacobian().
+    virtual void add_velocity_jacobian(const StageView&, Eigen::Ref<Eigen::ArrayXd> /*dfx_dvx*/) const {}
 };
 
 }  // namespace frictionlab

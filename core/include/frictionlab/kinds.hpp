@@ -61,6 +61,9 @@ public:
     /// linearised system in the closed left half-plane (RK4: 2.785, its real-axis limit, the
     /// smallest along the boundary there). Infinity: no limit known.
     virtual double stability_radius() const { return std::numeric_limits<double>::infinity(); }
+    /// Whether the scheme treats the local velocity dependence of effects that give their velocity
+    /// Jacobian (Effect::has_velocity_jacobian) implicitly, so that it does not limit the step.
+    virtual bool implicit_in_local_velocity() const { return false; }
 };
 
 }  // namespace frictionlab

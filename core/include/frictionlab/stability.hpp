@@ -19,7 +19,10 @@ struct StabilityEstimate {
 
 /// Power iteration on finite-difference Jacobian-vector products of System::derivative (a few
 /// hundred force evaluations). The linearisation is exact for linear effects; for a nonlinear one
-/// (contact at its kink, rate-and-state) it is taken at the current state.
-StabilityEstimate estimate_stability(System& system, double stability_radius);
+/// (contact at its kink, rate-and-state) it is taken at the current state. With
+/// implicit_local_velocity (an integrator that treats local velocity dependence implicitly, e.g.
+/// imex_euler), the velocity dependence of effects with a velocity Jacobian is left out: they are
+/// linearised at the current velocities, in their other variables only.
+StabilityEstimate estimate_stability(System& system, double stability_radius, bool implicit_local_velocity = false);
 
 }  // namespace frictionlab

@@ -40,6 +40,14 @@ public:
     /// dy/dt with only one active effect of the pipeline (index into pipeline()), for diagnostics
     /// such as the stability estimate that names the effect limiting the step.
     void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
+    /// The x-forces and the diagonal d(fx)/d(vx) (both [nodes]) of the active effects whose velocity
+    /// dependence is local (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats
+    /// that dependence implicitly solves with. False, and both zero, when no effect has one. Effects
+    /// read the quantities others published in the last derivative() (a friction law reads the base
+    /// contact's normal force), so call it at the positions of that evaluation.
+    bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx);
+    /// Whether an active effect (index into pipeline()) has a local velocity Jacobian.
+    bool has_velocity_jacobian(std::size_t active_index) const { return active_.at(active_index)->has_velocity_jacobian(); }
     void begin_step();
     /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);
@@ -87,6 +95,7 @@ private:
     std::vector<double> work_, pending_work_;  // per slot; pending = this step's, until accepted
     std::vector<std::size_t> active_slot_;     // slot index of each active effect
     Eigen::VectorXd effect_force_;              // one effect's [fx | fz | aux rate], accounting only
+    Eigen::VectorXd local_scratch_;             // forces of the effects local in velocity
     double t_ = 0;
     long long steps_ = 0, evaluations_ = 0;
 };

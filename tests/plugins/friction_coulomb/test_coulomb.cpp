@@ -84,6 +84,28 @@ TEST(Coulomb, KineticForceOpposesVelocityAndFollowsStageNormalForce) {
     EXPECT_EQ(r.stage_force(0, x, 0.5), -0.17 * 2);
 }
 
+/// The velocity Jacobian imex_euler solves with: the slope of the slipping force's tanh, 0 while stuck.
+TEST(Coulomb, VelocityJacobianIsTheSlopeOfTheKineticForce) {
+    Rig r = pressed();
+    const auto jacobian = [&](double v) {
+        Eigen::ArrayXd j = Eigen::ArrayXd::Zero(2);
+        r.y[2 * r.layout.nodes] = v;
+        r.law->add_velocity_jacobian(r.view(), j);
+        EXPECT_EQ(j[1], 0.0);  // block 1 stays stuck
+        return j[0];
+    };
+    EXPECT_TRUE(r.law->has_velocity_jacobian());
+    EXPECT_EQ(jacobian(0.0), 0.0);  // stuck: the spring depends on x only
+    break_forward(r);
+    const double x = r.x(0), v_r = 1e-6, h = 1e-12;
+    for (double v : {0.0, 3e-7, -2e-6}) {
+        const double fd = (r.stage_force(0, x, v + h) - r.stage_force(0, x, v - h)) / (2 * h);
+        EXPECT_NEAR(jacobian(v), fd, 1e-6 * 0.17 * exact_normal / v_r) << "v = " << v;
+    }
+    EXPECT_DOUBLE_EQ(jacobian(0.0), -0.17 * exact_normal / v_r);
+    EXPECT_EQ(jacobian(0.5), 0.0);  // saturated: tanh(5e5) is flat
+}
+
 TEST(Coulomb, ResticksOnReversalWithTheKineticForceContinued) {
     Rig r = pressed();
     break_forward(r);

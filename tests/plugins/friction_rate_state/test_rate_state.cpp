@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "load_point.hpp"
 #include "plugin_test_support.hpp"
 #include "rate_state.hpp"
 
@@ -86,6 +87,31 @@ TEST_P(BothLaws, FrictionIsOddInVelocity) {
     EXPECT_EQ(s.evaluate(0, psi).first, 0);
 }
 
+/// The velocity Jacobian that imex_euler solves with: dF/dv = -f_N a / sqrt(v^2 + w^2), w = 2 v0 e^(-psi/a),
+/// the derivative of the law's own force, from the stiff dashpot at rest to f_N a / v while sliding.
+TEST(RateState, VelocityJacobianIsTheDerivativeOfItsForce) {
+    Slider s;
+    const RateState::Params p;
+    const double psi = s.law->steady_state(1e-9), normal = 10;
+    const auto jacobian = [&](double v) {
+        const StateLayout layout{1, s.services.aux.count};
+        Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size());
+        y[2] = v;
+        y[4 + s.law->aux_offset()] = psi;
+        Eigen::ArrayXd j = Eigen::ArrayXd::Zero(1);
+        EXPECT_TRUE(s.law->has_velocity_jacobian());
+        s.law->add_velocity_jacobian(view_of(y, layout, 0), j);
+        return j[0];
+    };
+    for (double v : {-1e-3, 1e-9, 1e-6, 1e-3}) {
+        const double h = 1e-6 * std::abs(v);
+        const double fd = (s.evaluate(v + h, psi).first - s.evaluate(v - h, psi).first) / (2 * h);
+        EXPECT_NEAR(jacobian(v) / fd, 1.0, 1e-6) << "v = " << v;
+        EXPECT_NEAR(jacobian(v), -normal * p.a / std::abs(v), 1e-9 * normal * p.a / std::abs(v));
+    }
+    EXPECT_NEAR(jacobian(0) / (-normal * p.a * std::exp(psi / p.a) / (2 * p.v0)), 1.0, 1e-12);
+}
+
 TEST(RateState, VelocityStepGivesTheDirectEffect) {
     Slider s;
     const RateState::Params p;
@@ -145,16 +171,7 @@ TEST(RateState, WritesOnlyItsOwnAuxSlice) {
     EXPECT_DOUBLE_EQ(s.services.quantities.find_field("friction_force")->values[0], f.fx[0] - 7.0);
 }
 
-/// A loading spring k (V t + d - x) on node 0.
-class LoadPoint final : public Effect {
-public:
-    LoadPoint(double k, double V, double d) : k_(k), V_(V), d_(d) {}
-    std::string describe() const override { return "load point"; }
-    void add_forces(const StageView& s, ForceView& f) override { f.fx[0] += k_ * (V_ * s.t + d_ - s.x[0]); }
-
-private:
-    double k_, V_, d_;
-};
+using test_support::LoadPoint;
 
 /// Largest |v/V - 1| in each 10 s window up to t_end of a spring-slider started in steady sliding at
 /// V with a 1 % velocity kick; once the deviation reaches 50 % (stick-slip, out of the linear
