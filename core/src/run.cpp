@@ -163,9 +163,11 @@ public:
         // After the components accepted their parameters, so a refusal leaves no directory behind.
         prepare_output_directory(scene.output_directory, options.force);
         output_ = scene.output_directory;
-        for (const auto& o : scene.observers)
-            observers_.push_back({registry.create<Observer>(o.type, o.values, sim_.context(o.path)), o.path, o.every,
-                                  o.every_steps, 0});
+        for (const auto& o : scene.observers) {
+            auto observer = located_in_scene(
+                o, [&] { return registry.create<Observer>(o.type, o.values, sim_.context(o.path)); });
+            observers_.push_back({std::move(observer), o.path, o.every, o.every_steps, 0});
+        }
         if (std::any_of(observers_.begin(), observers_.end(),
                         [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
             sim_.system().enable_work_accounting();

@@ -26,7 +26,9 @@ std::string locate_non_finite(const System& sys) {
 Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
     : scene_(scene), registry_(registry), log_(log) {
     info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml};
-    bulk_ = registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk"));
+    bulk_ = located_in_scene(scene.bulk, [&] {
+        return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk"));
+    });
     record_plugin(scene.bulk, Kind::bulk_model);
 
     struct Pending {
@@ -38,15 +40,19 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     for (auto& e : bulk_->effects(context("bulk"))) effects.push_back({std::move(e), {}, {}});
     // Loaders come before the friction law: it reads the normal force the base contact publishes.
     for (const auto& l : scene.loaders) {
-        effects.push_back({registry.create<Loader>(l.type, l.values, context(l.path)), l.stages, l.type});
+        auto loader = located_in_scene(l, [&] { return registry.create<Loader>(l.type, l.values, context(l.path)); });
+        effects.push_back({std::move(loader), l.stages, l.type});
         record_plugin(l, Kind::loader);
     }
     if (scene.friction) {
         const auto& f = *scene.friction;
-        effects.push_back({registry.create<FrictionLaw>(f.type, f.values, context(f.path)), {}, f.type});
+        auto law = located_in_scene(f, [&] { return registry.create<FrictionLaw>(f.type, f.values, context(f.path)); });
+        effects.push_back({std::move(law), {}, f.type});
         record_plugin(f, Kind::friction_law);
     }
-    integrator_ = registry.create<Integrator>(scene.integrator.type, scene.integrator.values, context("integrator"));
+    integrator_ = located_in_scene(scene.integrator, [&] {
+        return registry.create<Integrator>(scene.integrator.type, scene.integrator.values, context("integrator"));
+    });
     record_plugin(scene.integrator, Kind::integrator);
     for (const auto& o : scene.observers) record_plugin(o, Kind::observer);
 

@@ -83,6 +83,17 @@ TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
     EXPECT_NE(bad.output.find("integrator.dt"), std::string::npos) << bad.output;
 }
 
+TEST_F(Cli, APluginRefusingItsSetUpIsBadInputNotACrash) {
+    // The driving spring refuses a height between node rows only when it is built, inside its plugin:
+    // the error must reach the command intact after the plugins are unloaded.
+    auto r = frictionlab("run -q " + scene("tiny_lattice.yaml") + " --set loaders[2].height=0.001", dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("tiny_lattice.yaml:16:5: error: loaders[2]: driving_spring: height = 0.001 m is not "
+                            "the height of a node"),
+              std::string::npos)
+        << r.output;
+}
+
 TEST_F(Cli, AStepAboveTheStableLimitIsRefused) {
     auto r = frictionlab("run -q " + scene("unstable.yaml"), dir_);
     EXPECT_EQ(r.code, 2) << r.output;

@@ -6,14 +6,20 @@
 namespace frictionlab {
 
 /// Bad input: a scene, an option, a plugin that cannot be used. Exit code 2.
+///
+/// Both errors have their destructor defined in the core library, so their vtable and type info live
+/// there alone: an error a plugin throws stays valid after the plugin is unloaded while the stack
+/// unwinds to the command's handler.
 struct InputError : std::runtime_error {
     using std::runtime_error::runtime_error;
+    ~InputError() override;
 };
 
 /// A run that cannot go on (non-finite value, runaway, failed stage check). Exit code 1. Outputs
 /// written so far stay valid.
 struct RunError : std::runtime_error {
     using std::runtime_error::runtime_error;
+    ~RunError() override;
 };
 
 namespace exit_code {

@@ -8,6 +8,8 @@
 
 #include <spdlog/logger.h>
 
+#include "frictionlab/diagnostics.hpp"
+#include "frictionlab/errors.hpp"
 #include "frictionlab/kinds.hpp"
 #include "frictionlab/quantities.hpp"
 #include "frictionlab/run.hpp"
@@ -17,6 +19,18 @@
 namespace frictionlab {
 
 class Registry;
+
+/// Runs `make`, which builds the scene component `c`, and reports a refusal it throws (InputError)
+/// at the component's place in the scene: "scene.yaml:16:5: error: loaders[2]: ...". Components
+/// can only judge some set-ups once built (a driving point between node rows, say).
+template <class Make>
+auto located_in_scene(const ComponentSpec& c, Make&& make) -> decltype(make()) {
+    try {
+        return make();
+    } catch (const InputError& e) {
+        throw InputError(Diagnostic{c.where, c.path, e.what()}.format());
+    }
+}
 
 class Simulation {
 public:

@@ -1,0 +1,9 @@
+#include "frictionlab/errors.hpp"
+
+namespace frictionlab {
+
+// The key functions: they anchor the vtables in the core library (errors.hpp says why).
+InputError::~InputError() = default;
+RunError::~RunError() = default;
+
+}  // namespace frictionlab
