@@ -92,15 +92,15 @@ StageInfo Simulation::begin_stage(std::size_t index) {
 void Simulation::check_stability(const StageInfo& stage) {
     const double radius = integrator_->stability_radius(), dt = integrator_->nominal_dt();
     if (!std::isfinite(radius)) return;
-    const StabilityEstimate e = estimate_stability(*system_, radius, integrator_->implicit_in_local_velocity());
+    const StabilityEstimate e = estimate_stable_step(*system_, *integrator_);
     log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s",
               e.dt_limit, e.lambda_max, e.limiting_effect, dt);
     if (dt <= e.dt_limit) return;
     const std::string message = fmt::format(
         "stage '{}': the time step dt = {:.3g} s is above the estimated stable step {:.3g} s of the {} integrator "
-        "for this system (largest |eigenvalue| {:.3g} 1/s, times dt must stay below {:.4g}); the limit is set by "
+        "for this system (largest |eigenvalue| {:.3g} 1/s, which times dt must stay below {:.4g}); the limit is set by "
         "{} (alone: {:.3g} 1/s). Use a smaller integrator.dt, or --force to run anyway",
-        stage.name, dt, e.dt_limit, scene_.integrator.type, e.lambda_max, radius, e.limiting_effect,
+        stage.name, dt, e.dt_limit, scene_.integrator.type, e.lambda_max, e.lambda_max * e.dt_limit, e.limiting_effect,
         e.limiting_lambda);
     if (refuse_unstable_) throw InputError(message);
     log_.warn("{}", message);

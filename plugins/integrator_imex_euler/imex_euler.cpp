@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/errors.hpp"
+#include "frictionlab/partitioned_step.hpp"
 #include "frictionlab/system.hpp"
 
 namespace frictionlab {
@@ -40,14 +41,14 @@ double ImexEuler::step(System& system, double max_dt) {
     if (next_.size() != y.size())
         for (auto* v : {&rate_, &next_, &trial_}) v->resize(y.size());
     // y = [positions (2n) | velocities (2n) | aux (K)].
-    const Index p = 2 * system.layout().nodes, rest = y.size() - p;
+    const Index p = 2 * system.layout().nodes;
 
     system.begin_step();
     system.derivative(t, y, rate_, h);
     next_ = y;
-    next_.tail(rest) += h * rate_.tail(rest);  // explicit: velocities and aux from the state at t
+    kick(next_, rate_, h, p);  // explicit: velocities and aux from the state at t
     if (system.local_velocity_forces(t, y, force0_, jacobian0_)) solve_velocity(system, t, h);
-    next_.head(p) += h * next_.segment(p, p);  // positions with the new velocity
+    drift(next_, h, p);  // positions with the new velocity
     system.accept(t + h, next_);
     return h;
 }
@@ -86,6 +87,14 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
                                        high_[unconverged]));
     }
     v_explicit = v_;
+}
+
+bool ImexEuler::linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
+                                Eigen::VectorXd& out) const {
+    Eigen::VectorXd ju;
+    symplectic_euler_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h,
+                          positions, u, ju, out);
+    return true;
 }
 
 }  // namespace frictionlab

@@ -36,6 +36,9 @@ public:
     double step(System& system, double max_dt) override;
     double stability_radius() const override { return 2.0; }
     bool implicit_in_local_velocity() const override { return true; }
+    /// Symplectic Euler on what the scheme treats explicitly (the estimate leaves the implicit part out).
+    bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
+                         Eigen::VectorXd& out) const override;
 
     /// Newton iterations allowed per step before the run stops.
     static constexpr int max_iterations = 200;

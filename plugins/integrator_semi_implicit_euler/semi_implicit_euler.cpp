@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "frictionlab/partitioned_step.hpp"
 #include "frictionlab/system.hpp"
 
 namespace frictionlab {
@@ -17,16 +18,23 @@ double SemiImplicitEuler::step(System& system, double max_dt) {
     const Eigen::VectorXd& y = system.y();
     if (next_.size() != y.size())
         for (auto* v : {&rate_, &next_}) v->resize(y.size());
-    // y = [positions (2n) | velocities (2n) | aux (K)].
-    const Index p = 2 * system.layout().nodes, rest = y.size() - p;
 
     system.begin_step();
-    system.derivative(t, y, rate_, h);
-    next_ = y;
-    next_.tail(rest) += h * rate_.tail(rest);     // velocities and aux from the state at t
-    next_.head(p) += h * next_.segment(p, p);     // positions with the new velocity
+    // The one evaluation carries weight h in work accounting (left-point rule).
+    const auto rate = [&](double offset, const Eigen::VectorXd& s, Eigen::VectorXd& dy) {
+        system.derivative(t + offset, s, dy, h);
+    };
+    symplectic_euler_step(rate, h, 2 * system.layout().nodes, y, rate_, next_);
     system.accept(t + h, next_);
     return h;
+}
+
+bool SemiImplicitEuler::linearised_step(const JacobianProduct& jacobian, double h, Index positions,
+                                        const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+    Eigen::VectorXd ju;
+    symplectic_euler_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h,
+                          positions, u, ju, out);
+    return true;
 }
 
 }  // namespace frictionlab

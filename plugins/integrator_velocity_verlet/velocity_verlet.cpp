@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "frictionlab/partitioned_step.hpp"
 #include "frictionlab/system.hpp"
 
 namespace frictionlab {
@@ -11,26 +12,46 @@ ParamSpec<VelocityVerlet::Params> VelocityVerlet::spec() { return fixed_step_spe
 
 VelocityVerlet::VelocityVerlet(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 
+namespace {
+/// Kick-drift-kick from y into out; velocity-dependent forces at the end are taken at the
+/// Euler-predicted velocity v_n + h a_n. `rate(t_offset, state, dy)` is dy/dt at t + t_offset.
+template <class Rate>
+void verlet_step(Rate&& rate, double h, Index p, const Eigen::VectorXd& y, Eigen::VectorXd& start,
+                 Eigen::VectorXd& end, Eigen::VectorXd& out) {
+    const Index rest = y.size() - p;  // velocities and aux, whose rates are updated together
+    rate(0.0, y, start);
+    out = y;
+    kick(out, start, 0.5 * h, p);  // v_half (aux: half an Euler step)
+    drift(out, h, p);              // drift with v_half
+    kick(out, start, 0.5 * h, p);  // predictor: v_n + h a_n, psi_n + h g_n
+    rate(h, out, end);
+    out.tail(rest) = y.tail(rest) + (0.5 * h) * (start.tail(rest) + end.tail(rest));  // kick
+}
+}  // namespace
+
 double VelocityVerlet::step(System& system, double max_dt) {
     const double h = std::min(dt_, max_dt);
     const double t = system.time();
     const Eigen::VectorXd& y = system.y();
     if (stage_.size() != y.size())
         for (auto* v : {&start_rate_, &end_rate_, &stage_}) v->resize(y.size());
-    // y = [positions (2n) | velocities (2n) | aux (K)]; the rates of velocities and aux are updated
-    // together, so "rest" is the velocity-and-aux tail.
-    const Index p = 2 * system.layout().nodes, rest = y.size() - p;
 
     system.begin_step();
-    system.derivative(t, y, start_rate_, h / 2);
-    stage_ = y;
-    stage_.tail(rest) += (0.5 * h) * start_rate_.tail(rest);   // kick: v_half (aux: half an Euler step)
-    stage_.head(p) += h * stage_.segment(p, p);                // drift with v_half
-    stage_.tail(rest) += (0.5 * h) * start_rate_.tail(rest);   // predictor: v_n + h a_n, psi_n + h g_n
-    system.derivative(t + h, stage_, end_rate_, h / 2);
-    stage_.tail(rest) = y.tail(rest) + (0.5 * h) * (start_rate_.tail(rest) + end_rate_.tail(rest));  // kick
+    // Each of the two evaluations carries weight h/2 in work accounting (trapezoidal rule).
+    const auto rate = [&](double offset, const Eigen::VectorXd& s, Eigen::VectorXd& dy) {
+        system.derivative(t + offset, s, dy, h / 2);
+    };
+    verlet_step(rate, h, 2 * system.layout().nodes, y, start_rate_, end_rate_, stage_);
     system.accept(t + h, stage_);
     return h;
+}
+
+bool VelocityVerlet::linearised_step(const JacobianProduct& jacobian, double h, Index positions,
+                                     const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+    Eigen::VectorXd start, end;
+    verlet_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h, positions, u,
+                start, end, out);
+    return true;
 }
 
 }  // namespace frictionlab

@@ -1,6 +1,7 @@
 #pragma once
 // The kinds of plugin a scene names. Each is a small interface in the language of the physics.
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -64,6 +65,18 @@ public:
     /// Whether the scheme treats the local velocity dependence of effects that give their velocity
     /// Jacobian (Effect::has_velocity_jacobian) implicitly, so that it does not limit the step.
     virtual bool implicit_in_local_velocity() const { return false; }
+
+    /// u -> J u, J the Jacobian of dy/dt at the state a step starts from (discrete state frozen).
+    using JacobianProduct = std::function<void(const Eigen::VectorXd& u, Eigen::VectorXd& ju)>;
+    /// One step h of the scheme applied to the linearised system du/dt = J u: out = G(h) u, with
+    /// u = [positions (first `positions` entries) | velocities | aux]. Partitioned schemes provide it
+    /// (symplectic Euler, velocity Verlet): under damping, |h lambda| alone does not decide their
+    /// stability, a mode's stiffness and damping together do, so the stable step is found from G
+    /// itself (stability.hpp). Returns false if the scheme does not provide it.
+    virtual bool linearised_step(const JacobianProduct& /*jacobian*/, double /*h*/, Index /*positions*/,
+                                 const Eigen::VectorXd& /*u*/, Eigen::VectorXd& /*out*/) const {
+        return false;
+    }
 };
 
 }  // namespace frictionlab

@@ -8,6 +8,7 @@
 
 namespace frictionlab {
 
+class Integrator;
 class System;
 
 struct StabilityEstimate {
@@ -24,5 +25,11 @@ struct StabilityEstimate {
 /// imex_euler), the velocity dependence of effects with a velocity Jacobian is left out: they are
 /// linearised at the current velocities, in their other variables only.
 StabilityEstimate estimate_stability(System& system, double stability_radius, bool implicit_local_velocity = false);
+
+/// The stable step for this integrator: estimate_stability() with its stability radius and
+/// implicitness; for a scheme that gives its linearised step G(h) (Integrator::linearised_step),
+/// dt_limit is then the largest h at which G(h) has no multiplier beyond the unit circle, found by
+/// bisection (the radius alone would miss how damping and stiffness combine for such a scheme).
+StabilityEstimate estimate_stable_step(System& system, const Integrator& integrator);
 
 }  // namespace frictionlab
