@@ -21,6 +21,11 @@ std::string locate_non_finite(const System& sys) {
         if (!std::isfinite(s.aux(i))) return fmt::format("auxiliary variable {} is {}", i, s.aux(i));
     return "a value is not finite";
 }
+
+/// Whether every value of y is finite. A NaN or an infinity makes the sum non-finite, so the sum
+/// (one vectorised pass) decides; a non-finite sum, which large finite values could also overflow
+/// to, is confirmed value by value.
+bool all_finite(const Eigen::VectorXd& y) { return std::isfinite(y.sum()) || y.allFinite(); }
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
@@ -102,7 +107,7 @@ void Simulation::check_stability(const StageInfo& stage) {
 
 double Simulation::step(double max_dt) {
     const double dt = integrator_->step(*system_, max_dt);
-    if (!system_->y().allFinite())
+    if (!all_finite(system_->y()))
         throw RunError(fmt::format("step {}, t = {:.9g} s: {}", system_->step_index(), system_->time(),
                                    locate_non_finite(*system_)));
     // A finite but exploding state (an unstable step) is caught long before it overflows.

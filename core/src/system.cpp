@@ -36,9 +36,14 @@ void System::enable_work_accounting() {
 void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
     const Index n = layout_.nodes;
     dy.head(2 * n) = y.segment(2 * n, 2 * n);
-    dy.tail(layout_.size() - 2 * n).setZero();
+    accelerations(t, y, dy.tail(layout_.size() - 2 * n), work_weight);
+}
+
+void System::accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
+    const Index n = layout_.nodes;
+    a.setZero();
     const StageView s = view_of(y, layout_, t);
-    ForceView f = forces_of(dy, layout_);
+    ForceView f = forces_at(a.data(), layout_);
     if (work_accounting() && work_weight != 0) {
         // Each effect alone into a scratch vector, to know its power at this stage.
         const auto velocity = y.segment(2 * n, 2 * n);
@@ -48,7 +53,7 @@ void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy,
             active_[k]->add_forces(s, fe);
             const auto force = effect_force_.segment(2 * n, 2 * n);
             pending_work_[active_slot_[k]] += work_weight * force.dot(velocity);
-            dy.tail(layout_.size() - 2 * n) += effect_force_.tail(layout_.size() - 2 * n);
+            a += effect_force_.tail(layout_.size() - 2 * n);
         }
     } else {
         for (Effect* e : active_) e->add_forces(s, f);

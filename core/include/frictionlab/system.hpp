@@ -37,6 +37,10 @@ public:
     /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
     /// to its work with that weight, so the work is integrated to the integrator's own order.
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
+    /// The rest of dy/dt after the velocities: [F/m | aux rates], layout().size() - 2N values,
+    /// i.e. derivative() without the copy of y's velocities into dy's first half. For integrators
+    /// that read those velocities from y itself (RK4's fused stages); same arguments, same values.
+    void accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight = 0);
     /// dy/dt with only one active effect of the pipeline (index into pipeline()), for diagnostics
     /// such as the stability estimate that names the effect limiting the step.
     void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
