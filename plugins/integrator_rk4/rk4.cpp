@@ -74,7 +74,7 @@ double Rk4::step(System& system, double max_dt) {
     combine(middle_stage, stage + half, h);
     system.accelerations(t + h, stage_, rate_, h / 6);
     combine(last_stage, stage + half, h / 6.0);
-    system.accept(t + h, stage_);
+    system.accept_swap(t + h, stage_);  // stage_ is all overwritten at the next step
     return h;
 }
 
