@@ -2,7 +2,17 @@
 
 #include <algorithm>
 
+#include "frictionlab/hot_kernel.hpp"
+
 namespace frictionlab {
+
+namespace {
+/// f *= inverse_mass, node by node.
+FRICTIONLAB_HOT_KERNEL
+void scale(double* __restrict f, const double* __restrict inverse_mass, Index n) {
+    for (Index i = 0; i < n; ++i) f[i] *= inverse_mass[i];
+}
+}  // namespace
 
 System::System(const Body& body, Index aux_size)
     : body_(body), layout_{body.size(), aux_size}, inverse_mass_(body.mass.inverse()) {
@@ -60,8 +70,7 @@ void System::accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen:
         if (e.fused) active_[e.first]->add_forces_with(*active_[e.first + 1], s, f);
         else active_[e.first]->add_forces(s, f);
     }
-    f.fx *= inverse_mass_;
-    f.fz *= inverse_mass_;
+    divide_by_mass(f);
     ++evaluations_;
 }
 
@@ -82,8 +91,12 @@ void System::effect_derivative(std::size_t active_index, double t, const Eigen::
     dy.tail(layout_.size() - 2 * n).setZero();
     ForceView f = forces_of(dy, layout_);
     active_.at(active_index)->add_forces(view_of(y, layout_, t), f);
-    f.fx *= inverse_mass_;
-    f.fz *= inverse_mass_;
+    divide_by_mass(f);
+}
+
+void System::divide_by_mass(ForceView& f) const {
+    scale(f.fx.data(), inverse_mass_.data(), layout_.nodes);
+    scale(f.fz.data(), inverse_mass_.data(), layout_.nodes);
 }
 
 void System::begin_step() {

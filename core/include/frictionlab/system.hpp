@@ -79,6 +79,8 @@ public:
 private:
     /// Pairs each active effect with the next one where it fuses_with() it.
     void plan_evaluations();
+    /// Forces to accelerations, F/m.
+    void divide_by_mass(ForceView& f) const;
     /// After the accepted state is in y_: time, work and the effects' commits for the step to t.
     void commit_step(double t);
     /// Adds the work of active effect `active_index` over this evaluation, with the quadrature weight.
