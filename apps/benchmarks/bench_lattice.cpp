@@ -43,6 +43,12 @@ struct Bench {
     Eigen::VectorXd y, dy;
 };
 
+void per_node_counter(benchmark::State& state, const Bench& b) {
+    state.counters["per_node"] = benchmark::Counter(static_cast<double>(b.layout.nodes),
+                                                    benchmark::Counter::kIsIterationInvariantRate |
+                                                        benchmark::Counter::kInvert);
+}
+
 void run(benchmark::State& state, const std::string& springs, const std::string& damping_mode,
          std::size_t first_effect, std::size_t last_effect) {
     Bench b(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), springs, damping_mode);
@@ -54,12 +60,23 @@ void run(benchmark::State& state, const std::string& springs, const std::string&
         benchmark::DoNotOptimize(b.dy.data());
         benchmark::ClobberMemory();
     }
-    state.counters["per_node"] = benchmark::Counter(static_cast<double>(b.layout.nodes),
-                                                    benchmark::Counter::kIsIterationInvariantRate |
-                                                        benchmark::Counter::kInvert);
+    per_node_counter(state, b);
 }
 
 void springs_and_damping(benchmark::State& s) { run(s, "geometric", "full_vector", 0, 1); }
+/// The two in one pass over the bonds, as the system evaluates them (Effect::add_forces_with).
+void springs_and_damping_fused(benchmark::State& state) {
+    Bench b(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), "geometric", "full_vector");
+    const StageView s = view_of(b.y, b.layout, 0.0);
+    for (auto _ : state) {
+        b.dy.setZero();
+        ForceView f = forces_of(b.dy, b.layout);
+        b.effects[0]->add_forces_with(*b.effects[1], s, f);
+        benchmark::DoNotOptimize(b.dy.data());
+        benchmark::ClobberMemory();
+    }
+    per_node_counter(state, b);
+}
 void springs_geometric(benchmark::State& s) { run(s, "geometric", "full_vector", 0, 0); }
 void springs_small_strain(benchmark::State& s) { run(s, "small_strain", "full_vector", 0, 0); }
 void damping_full_vector(benchmark::State& s) { run(s, "geometric", "full_vector", 1, 1); }
@@ -68,6 +85,7 @@ void damping_bond_projected(benchmark::State& s) { run(s, "geometric", "bond_pro
 void lattice_sizes(benchmark::internal::Benchmark* b) { b->Args({41, 9})->Args({81, 17}); }
 
 BENCHMARK(springs_and_damping)->Apply(lattice_sizes);
+BENCHMARK(springs_and_damping_fused)->Apply(lattice_sizes);
 BENCHMARK(springs_geometric)->Apply(lattice_sizes);
 BENCHMARK(springs_small_strain)->Apply(lattice_sizes);
 BENCHMARK(damping_full_vector)->Apply(lattice_sizes);

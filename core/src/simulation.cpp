@@ -1,8 +1,12 @@
 #include "frictionlab/simulation.hpp"
 
+#include <bit>
+#include <cstdint>
+
 #include <fmt/format.h>
 
 #include "frictionlab/errors.hpp"
+#include "frictionlab/hot_kernel.hpp"
 #include "frictionlab/registry.hpp"
 #include "frictionlab/stability.hpp"
 
@@ -20,6 +24,17 @@ std::string locate_non_finite(const System& sys) {
     for (Index i = 0; i < s.aux.size(); ++i)
         if (!std::isfinite(s.aux(i))) return fmt::format("auxiliary variable {} is {}", i, s.aux(i));
     return "a value is not finite";
+}
+
+/// Whether every value of y is finite: none has an all-ones exponent (NaN, infinity). Adding 1 to
+/// the exponent field carries into the sign bit exactly then; integer and, add and or make one
+/// vectorised pass with no branch, where allFinite() tests value by value.
+FRICTIONLAB_HOT_KERNEL
+bool all_finite(const double* __restrict y, Index n) {
+    constexpr std::uint64_t exponent = 0x7ff0'0000'0000'0000, exponent_one = 0x0010'0000'0000'0000;
+    std::uint64_t carries = 0;
+    for (Index i = 0; i < n; ++i) carries |= (std::bit_cast<std::uint64_t>(y[i]) & exponent) + exponent_one;
+    return (carries >> 63) == 0;
 }
 }  // namespace
 
@@ -108,7 +123,7 @@ void Simulation::check_stability(const StageInfo& stage) {
 
 double Simulation::step(double max_dt) {
     const double dt = integrator_->step(*system_, max_dt);
-    if (!system_->y().allFinite())
+    if (!all_finite(system_->y().data(), system_->y().size()))
         throw RunError(fmt::format("step {}, t = {:.9g} s: {}", system_->step_index(), system_->time(),
                                    locate_non_finite(*system_)));
     // A finite but exploding state (an unstable step) is caught long before it overflows.

@@ -2,7 +2,17 @@
 
 #include <algorithm>
 
+#include "frictionlab/hot_kernel.hpp"
+
 namespace frictionlab {
+
+namespace {
+/// f *= inverse_mass, node by node.
+FRICTIONLAB_HOT_KERNEL
+void scale(double* __restrict f, const double* __restrict inverse_mass, Index n) {
+    for (Index i = 0; i < n; ++i) f[i] *= inverse_mass[i];
+}
+}  // namespace
 
 System::System(const Body& body, Index aux_size)
     : body_(body), layout_{body.size(), aux_size}, inverse_mass_(body.mass.inverse()) {
@@ -25,6 +35,16 @@ void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string>
     active_.push_back(slots_.back().effect.get());
     active_slot_.push_back(slots_.size() - 1);
     if (work_accounting()) work_.push_back(0), pending_work_.push_back(0);
+    plan_evaluations();
+}
+
+void System::plan_evaluations() {
+    plan_.clear();
+    for (std::size_t k = 0; k < active_.size(); ++k) {
+        const bool fused = k + 1 < active_.size() && active_[k]->fuses_with(*active_[k + 1]);
+        plan_.push_back({k, fused});
+        if (fused) ++k;
+    }
 }
 
 void System::enable_work_accounting() {
@@ -41,25 +61,38 @@ void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy,
 void System::evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
     const Index n = layout_.nodes;
     dy.head(2 * n) = y.segment(2 * n, 2 * n);
-    dy.tail(layout_.size() - 2 * n).setZero();
+    compute_accelerations(t, y, dy.tail(layout_.size() - 2 * n), work_weight);
+}
+
+void System::accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
+    compute_accelerations(t, y, a, work_weight);
+    ++evaluations_;
+}
+
+void System::compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a,
+                                   double work_weight) {
+    a.setZero();
     const StageView s = view_of(y, layout_, t);
-    ForceView f = forces_of(dy, layout_);
-    if (work_accounting() && work_weight != 0) {
-        // Each effect alone into a scratch vector, to know its power at this stage.
-        const auto velocity = y.segment(2 * n, 2 * n);
-        for (std::size_t k = 0; k < active_.size(); ++k) {
-            effect_force_.tail(layout_.size() - 2 * n).setZero();
-            ForceView fe = forces_of(effect_force_, layout_);
-            active_[k]->add_forces(s, fe);
-            const auto force = effect_force_.segment(2 * n, 2 * n);
-            pending_work_[active_slot_[k]] += work_weight * force.dot(velocity);
-            dy.tail(layout_.size() - 2 * n) += effect_force_.tail(layout_.size() - 2 * n);
-        }
-    } else {
-        for (Effect* e : active_) e->add_forces(s, f);
+    ForceView f = forces_at(a.data(), layout_);
+    const bool accounting = work_accounting() && work_weight != 0;
+    for (const Evaluation& e : plan_) {
+        if (accounting)
+            for (std::size_t k = e.first; k <= e.first + e.fused; ++k) add_work(k, s, work_weight);
+        if (e.fused) active_[e.first]->add_forces_with(*active_[e.first + 1], s, f);
+        else active_[e.first]->add_forces(s, f);
     }
-    f.fx *= inverse_mass_;
-    f.fz *= inverse_mass_;
+    divide_by_mass(f);
+}
+
+void System::add_work(std::size_t active_index, const StageView& s, double weight) {
+    // The effect alone into a scratch vector, to know its power F_e . v at this stage. The forces
+    // that move the state are summed apart, as without accounting, so accounting changes no result.
+    const Index n = layout_.nodes;
+    effect_force_.tail(layout_.size() - 2 * n).setZero();
+    ForceView fe = forces_of(effect_force_, layout_);
+    active_[active_index]->add_forces(s, fe);
+    const Eigen::Map<const Eigen::VectorXd> velocity(s.vx.data(), 2 * n);  // [vx | vz]
+    pending_work_[active_slot_[active_index]] += weight * effect_force_.segment(2 * n, 2 * n).dot(velocity);
 }
 
 void System::effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
@@ -68,8 +101,12 @@ void System::effect_derivative(std::size_t active_index, double t, const Eigen::
     dy.tail(layout_.size() - 2 * n).setZero();
     ForceView f = forces_of(dy, layout_);
     active_.at(active_index)->add_forces(view_of(y, layout_, t), f);
-    f.fx *= inverse_mass_;
-    f.fz *= inverse_mass_;
+    divide_by_mass(f);
+}
+
+void System::divide_by_mass(ForceView& f) const {
+    scale(f.fx.data(), inverse_mass_.data(), layout_.nodes);
+    scale(f.fz.data(), inverse_mass_.data(), layout_.nodes);
 }
 
 bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx) {
@@ -98,8 +135,17 @@ void System::begin_step() {
 }
 
 void System::accept(double t, const Eigen::VectorXd& y) {
-    const double dt = t - t_;
     y_ = y;
+    commit_step(t);
+}
+
+void System::accept_swap(double t, Eigen::VectorXd& y) {
+    y_.swap(y);
+    commit_step(t);
+}
+
+void System::commit_step(double t) {
+    const double dt = t - t_;
     t_ = t;
     ++steps_;
     for (std::size_t k = 0; k < work_.size(); ++k) work_[k] += pending_work_[k];
@@ -122,6 +168,7 @@ void System::begin_stage(const StageInfo& stage) {
                       std::find(slot.active_in.begin(), slot.active_in.end(), stage.name) != slot.active_in.end();
         if (slot.active) active_.push_back(slot.effect.get()), active_slot_.push_back(k);
     }
+    plan_evaluations();
     const StageView s = state();
     for (Effect* e : active_) e->begin_stage(stage, s);
 }

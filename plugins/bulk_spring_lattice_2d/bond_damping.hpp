@@ -27,6 +27,11 @@ public:
     std::string key() const override { return "bond_damping"; }
     void add_forces(const StageView& s, ForceView& f) override;
 
+    Mode mode() const { return mode_; }
+    const LatticeGrid& grid() const { return grid_; }
+    /// Full vector: the coefficient of each bond of family f (lattice_grid.hpp), eta or 0 on a masked pair.
+    const double* coefficients(std::size_t f) const { return stencil_.coefficients(f); }
+
 private:
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;

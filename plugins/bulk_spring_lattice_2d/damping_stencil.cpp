@@ -57,13 +57,12 @@ void DampingStencil::add_forces(const double* vx, const double* vz, double* fx, 
     double* pz = px + stride_;
     std::copy(vx, vx + nodes_, px);
     std::copy(vz, vz + nodes_, pz);
-    const double* c = coefficients_.data() + pad_;
     const auto& o = offsets_;
     // The first and last rows, and the end nodes of the rows between, lack some neighbours: they
     // take the coefficients; the rest, nodes 1 .. nx-2 of the inner rows, have all eight.
     auto edge = [&](Index from, Index count) {
-        stencil(px + from, pz + from, c + from, c + stride_ + from, c + 2 * stride_ + from, c + 3 * stride_ + from,
-                o[0], o[1], o[2], o[3], count, fx + from, fz + from);
+        stencil(px + from, pz + from, coefficients(0) + from, coefficients(1) + from, coefficients(2) + from,
+                coefficients(3) + from, o[0], o[1], o[2], o[3], count, fx + from, fz + from);
     };
     if (nz_ < 3 || nx_ < 3) return edge(0, nodes_);
     edge(0, nx_ + 1);

@@ -19,6 +19,8 @@ public:
 
     /// fx += the damping force on every node, and the same for z.
     void add_forces(const double* vx, const double* vz, double* fx, double* fz);
+    /// c_f for the bonds i = 0 .. count_f - 1 of family f.
+    const double* coefficients(std::size_t f) const { return coefficients_.data() + f * stride_ + pad_; }
 
 private:
     Index nx_, nz_, nodes_, pad_, stride_;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "bond_damping.hpp"
 #include "bond_strain.hpp"
 
 namespace frictionlab {
@@ -14,27 +15,54 @@ namespace {
 // The force on each bond's "from" node is t Delta, t = k (1 - l/r) (Li2020 Eq. 1), and 0 on masked
 // pairs (delta = 0 gives t = 0 in both forms below).
 
-/// With the series for 1 - l/r, for every bond; writes delta too. Returns whether some |delta|
-/// exceeds the series' bound (those bonds are then redone by exact_beyond_bound()).
+/// What the series form needs of one bond family.
+struct SeriesFamily {
+    double ref_x, ref_z, rest_defect, inverse_l2, k;
+};
+
+/// t of bond i with the series for 1 - l/r; writes its delta, and flags in `beyond` a |delta| over
+/// the series' bound (those bonds are then redone by exact_beyond_bound()).
+inline double series_tension(const double* x, const double* z, const double* mask, Index offset, Index i,
+                             const SeriesFamily& c, double* delta_out, std::int64_t& beyond) {
+    const double dx = x[i + offset] - x[i], dz = z[i + offset] - z[i];
+    const double delta = mask[i] * squared_stretch(dx, dz, c.ref_x, c.ref_z, c.rest_defect, c.inverse_l2);
+    beyond |= !(std::abs(delta) <= series_bound);  // NaN counts as beyond
+    delta_out[i] = delta;
+    return c.k * tension_factor_series(delta);
+}
+
+/// The series form for every bond; writes delta too. Returns whether some |delta| exceeds the bound.
 FRICTIONLAB_HOT_KERNEL
 bool geometric_series(const double* __restrict x, const double* __restrict z, const double* __restrict mask,
-                      Index offset, Index count, double ref_x, double ref_z, double rest_defect, double inverse_l2,
-                      double k, double* __restrict fx, double* __restrict fz, double* __restrict delta_out) {
+                      Index offset, Index count, SeriesFamily c, double* __restrict fx, double* __restrict fz,
+                      double* __restrict delta_out) {
     std::int64_t beyond = 0;  // as wide as a double, so the vectorised reduction needs no lane shuffles
     for (Index i = 0; i < count; ++i) {
-        const double dx = x[i + offset] - x[i], dz = z[i + offset] - z[i];
-        const double delta = mask[i] * squared_stretch(dx, dz, ref_x, ref_z, rest_defect, inverse_l2);
-        beyond |= !(std::abs(delta) <= series_bound);  // NaN counts as beyond
-        delta_out[i] = delta;
-        const double t = k * tension_factor_series(delta);
-        fx[i] = t * dx;
-        fz[i] = t * dz;
+        const double t = series_tension(x, z, mask, offset, i, c, delta_out, beyond);
+        fx[i] = t * (x[i + offset] - x[i]);
+        fz[i] = t * (z[i + offset] - z[i]);
     }
     return beyond != 0;
 }
 
-/// The bonds geometric_series() could not do, with a square root and a division each. They are few
-/// (a point load's neighbourhood at high load): a scan of the stored deltas finds them.
+/// The same with each bond's full-vector dashpot added: t Delta + eta_i (v_j - v_i), eta_i the
+/// bond's coefficient (0 on masked pairs, BondDamping).
+FRICTIONLAB_HOT_KERNEL
+bool geometric_series_damped(const double* __restrict x, const double* __restrict z, const double* __restrict vx,
+                             const double* __restrict vz, const double* __restrict mask,
+                             const double* __restrict dashpot, Index offset, Index count, SeriesFamily c,
+                             double* __restrict fx, double* __restrict fz, double* __restrict delta_out) {
+    std::int64_t beyond = 0;
+    for (Index i = 0; i < count; ++i) {
+        const double t = series_tension(x, z, mask, offset, i, c, delta_out, beyond);
+        fx[i] = t * (x[i + offset] - x[i]) + dashpot[i] * (vx[i + offset] - vx[i]);
+        fz[i] = t * (z[i + offset] - z[i]) + dashpot[i] * (vz[i + offset] - vz[i]);
+    }
+    return beyond != 0;
+}
+
+/// The bonds the series could not do, with a square root and a division each. They are few (a
+/// point load's neighbourhood at high load): a scan of the stored deltas finds them.
 void exact_beyond_bound(const double* x, const double* z, const double* delta, Index offset, Index count, double k,
                         double* fx, double* fz) {
     for (Index i = 0; i < count; ++i) {
@@ -42,6 +70,16 @@ void exact_beyond_bound(const double* x, const double* z, const double* delta, I
         const double t = k * tension_factor_exact(delta[i]);
         fx[i] = t * (x[i + offset] - x[i]);
         fz[i] = t * (z[i + offset] - z[i]);
+    }
+}
+
+/// Adds the dashpots of those bonds again, as geometric_series_damped() does for the others.
+void damp_beyond_bound(const double* vx, const double* vz, const double* dashpot, const double* delta, Index offset,
+                       Index count, double* fx, double* fz) {
+    for (Index i = 0; i < count; ++i) {
+        if (std::abs(delta[i]) <= series_bound) continue;
+        fx[i] = fx[i] + dashpot[i] * (vx[i + offset] - vx[i]);
+        fz[i] = fz[i] + dashpot[i] * (vz[i + offset] - vz[i]);
     }
 }
 
@@ -69,18 +107,37 @@ std::string LatticeSprings::describe() const {
                        law_ == Law::geometric ? "geometric" : "small strain");
 }
 
-void LatticeSprings::add_forces(const StageView& s, ForceView& f) {
-    const double *x = s.x.data(), *z = s.z.data();
+void LatticeSprings::add_forces(const StageView& s, ForceView& f) { add_bond_forces(s, nullptr, f); }
+
+bool LatticeSprings::fuses_with(const Effect& next) const {
+    const auto* damping = dynamic_cast<const BondDamping*>(&next);
+    return law_ == Law::geometric && damping && damping->mode() == BondDamping::Mode::full_vector &&
+           damping->grid().nx == grid_.nx && damping->grid().nz == grid_.nz;
+}
+
+void LatticeSprings::add_forces_with(Effect& next, const StageView& s, ForceView& f) {
+    add_bond_forces(s, &static_cast<const BondDamping&>(next), f);
+}
+
+void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f) {
+    const double *x = s.x.data(), *z = s.z.data(), *vx = s.vx.data(), *vz = s.vz.data();
     for (std::size_t n = 0; n < families_.size(); ++n) {
         const BondFamily& b = families_[n];
         const double k = stiffness_ * b.relative_stiffness, l = b.rest_length;
+        double *px = pair_.x(n), *pz = pair_.z(n);
         if (law_ == Law::small_strain) {
-            small_strain(x, z, b.mask.data(), b.offset, b.count, b.ex, b.ez, l, k, pair_.x(n), pair_.z(n));
+            small_strain(x, z, b.mask.data(), b.offset, b.count, b.ex, b.ez, l, k, px, pz);
             continue;
         }
-        if (geometric_series(x, z, b.mask.data(), b.offset, b.count, b.ref_x, b.ref_z, b.rest_defect, 1 / (l * l), k,
-                             pair_.x(n), pair_.z(n), delta_.data()))
-            exact_beyond_bound(x, z, delta_.data(), b.offset, b.count, k, pair_.x(n), pair_.z(n));
+        const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, 1 / (l * l), k};
+        const double* dashpot = damping ? damping->coefficients(n) : nullptr;
+        const bool beyond =
+            dashpot ? geometric_series_damped(x, z, vx, vz, b.mask.data(), dashpot, b.offset, b.count, c, px, pz,
+                                              delta_.data())
+                    : geometric_series(x, z, b.mask.data(), b.offset, b.count, c, px, pz, delta_.data());
+        if (!beyond) continue;
+        exact_beyond_bound(x, z, delta_.data(), b.offset, b.count, k, px, pz);
+        if (dashpot) damp_beyond_bound(vx, vz, dashpot, delta_.data(), b.offset, b.count, px, pz);
     }
     pair_.add_to(f.fx.data(), f.fz.data());
 }

@@ -8,6 +8,8 @@
 
 namespace frictionlab {
 
+class BondDamping;
+
 /// The central springs of the square lattice: straight bonds of stiffness K and rest length l_s,
 /// diagonal bonds of stiffness K/2 and rest length sqrt(2) l_s (Li2020 Sec. 2.1, Eq. 1).
 ///
@@ -19,6 +21,11 @@ namespace frictionlab {
 /// elastic constants, but a rigid rotation by phi stretches every bond by l (cos phi - 1), so it is
 /// only for small rotations.
 ///
+/// Followed in the pipeline by the full-vector bond damping of the same lattice, the geometric
+/// springs evaluate it with their own pass (fuses_with): each bond's force is then
+/// k (r - l) Delta / r + eta (v_j - v_i), one load of the bond's nodes and one sum on the nodes for
+/// both effects; alone (work accounting, the stability estimate) each keeps its own pass.
+///
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class LatticeSprings final : public Effect {
 public:
@@ -29,9 +36,14 @@ public:
     std::string describe() const override;
     std::string key() const override { return "lattice_springs"; }
     void add_forces(const StageView& s, ForceView& f) override;
+    bool fuses_with(const Effect& next) const override;
+    void add_forces_with(Effect& next, const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override;
 
 private:
+    /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given.
+    void add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f);
+
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;
     double stiffness_;

@@ -10,17 +10,8 @@
 #include <array>
 #include <vector>
 
+#include "frictionlab/hot_kernel.hpp"
 #include "lattice_grid.hpp"
-
-// Hot loops on raw pointers get AVX-512 and AVX2 clones next to the baseline one, picked once per
-// process by the CPU (GCC function multiversioning). The plugin itself stays built for the baseline
-// ISA, so Eigen's alignment, and hence the plugin ABI fingerprint, is unchanged. The plugin is built
-// with -ffp-contract=off (CMakeLists.txt): no clone forms FMAs, so all of them round identically.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define FRICTIONLAB_HOT_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define FRICTIONLAB_HOT_KERNEL
-#endif
 
 namespace frictionlab {
 

@@ -27,9 +27,7 @@ DislocatedForce BlockJunctions::dislocated_force(double tan_phi) const {
     return {c_.mu_d * c_.p / denominator, c_.p * tan_phi / denominator};
 }
 
-double BlockJunctions::force(double x, double x_start) const {
-    double f = b_sum_ + static_cast<double>(pinned_) * c_.k_s * (x - x_ref_) + off_sum_;
-    const double kdx = c_.k_s * (x - x_start);
+double BlockJunctions::active_force(double kdx) const {
     const double* base = base_.data();
     const double* lo = lo_.data();
     const double* hi = hi_.data();
@@ -44,7 +42,7 @@ double BlockJunctions::force(double x, double x_start) const {
         a3 += clamp(base[j + 3] + kdx, lo[j + 3], hi[j + 3]);
     }
     for (; j < n; ++j) a0 += clamp(base[j] + kdx, lo[j], hi[j]);
-    return f + ((a0 + a1) + (a2 + a3));
+    return (a0 + a1) + (a2 + a3);
 }
 
 double BlockJunctions::junction_force(Index j, double x, double x_start) const {

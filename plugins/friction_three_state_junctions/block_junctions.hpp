@@ -71,8 +71,12 @@ public:
     DislocatedForce dislocated_force(double tan_phi) const;
 
     /// Sum of the junction forces (> 0 resists motion in +x) at stage position x; x_start is the
-    /// position the active forces were last advanced to.
-    double force(double x, double x_start) const;
+    /// position the active forces were last advanced to. Inline: while every junction is pinned
+    /// (most of a run), this is all a force evaluation does per block.
+    double force(double x, double x_start) const {
+        const double f = b_sum_ + static_cast<double>(pinned_) * c_.k_s * (x - x_ref_) + off_sum_;
+        return f + (pinned_ < size() ? active_force(c_.k_s * (x - x_start)) : 0.0);
+    }
     /// Force of one junction at stage position x, from the same representation as force().
     double junction_force(Index j, double x, double x_start) const;
     /// Signed tangential part (sliding: f, dislocated: s g) as last advanced.
@@ -107,6 +111,8 @@ public:
     double next_deadline() const { return next_deadline_; }
 
 private:
+    /// Sum of the clamped active forces, each advanced by kdx = k_s (x - x_start).
+    double active_force(double kdx) const;
     void swap(Index a, Index b);
     void set_pinned_force(Index j, double f0, double x);
     void set_bounds(Index j);

@@ -139,6 +139,7 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
         x_start_.push_back(ctx.body->x0[node]);
     }
     removal_draws_.assign(nodes_.size(), 0);
+    for (Index i = 0; i < n; ++i) publish_counts(i);
 }
 
 std::string ThreeStateJunctions::describe() const {
@@ -148,14 +149,17 @@ std::string ThreeStateJunctions::describe() const {
 void ThreeStateJunctions::add_forces(const StageView& s, ForceView& f) {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         const Index node = nodes_[i];
-        const BlockJunctions& b = blocks_[i];
-        const double force = -b.force(s.x[node], x_start_[i]);
+        const double force = -blocks_[i].force(s.x[node], x_start_[i]);
         f.fx[node] += force;
         (*friction_force_)[static_cast<Index>(i)] = force;
-        (*pinned_count_)[static_cast<Index>(i)] = static_cast<double>(b.pinned());
-        (*sliding_count_)[static_cast<Index>(i)] = static_cast<double>(b.sliding());
-        (*dislocated_count_)[static_cast<Index>(i)] = static_cast<double>(b.dislocated());
     }
+}
+
+void ThreeStateJunctions::publish_counts(Index i) {
+    const BlockJunctions& b = blocks_[static_cast<std::size_t>(i)];
+    (*pinned_count_)[i] = static_cast<double>(b.pinned());
+    (*sliding_count_)[i] = static_cast<double>(b.sliding());
+    (*dislocated_count_)[i] = static_cast<double>(b.dislocated());
 }
 
 double ThreeStateJunctions::potential_energy(const StageView& s) const {
@@ -200,6 +204,7 @@ void ThreeStateJunctions::commit_block(Index i, double x, double t) {
     follow_normal_force(b, i, x);
     b.refresh_active();
     b.refresh_pinned(x);
+    publish_counts(i);
 }
 
 void ThreeStateJunctions::break_pinned(BlockJunctions& b, Index i, double x, double t) const {
@@ -264,6 +269,10 @@ void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double
         throw RunError(fmt::format("{}: block {} has a normal force of {:.3g} N, which would need {:.3g} junctions "
                                    "(more than {:.0e}): the run is unstable, or p is far too small",
                                    name_, i, (*normal_force_)[i], ratio, max_junctions_per_block));
+    // The count n stays when floor(ratio + tol) <= n <= ceil(ratio - tol), i.e. (exactly, n being an
+    // integer) ratio + tol < n + 1 and ratio - tol > n - 1: the common case, without floor and ceil.
+    const auto n = static_cast<double>(b.size());
+    if (ratio + count_tolerance < n + 1 && ratio - count_tolerance > n - 1) return;
     const auto low = static_cast<Index>(std::floor(ratio + count_tolerance));
     const auto high = static_cast<Index>(std::ceil(ratio - count_tolerance));
     while (b.size() < low) b.add_pinned(x);

@@ -128,6 +128,9 @@ private:
     Index removal_choice(const BlockJunctions& b, Index i, double x);
     Index random_index(Index i, Index first, Index end);
     void check_settled(const StageInfo&, const StageView&) const;
+    /// Writes block i's junction counts to the published fields. They change only at commits, so
+    /// they are published there, not at every force evaluation.
+    void publish_counts(Index i);
 
     std::string name_;
     std::uint64_t seed_;

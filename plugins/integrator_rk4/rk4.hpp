@@ -22,7 +22,9 @@ public:
     double stability_radius() const override { return 2.785; }
 
 private:
-    Eigen::VectorXd k1_, k2_, k3_, k4_, stage_;  // sized at the first step, reused after
+    // Sized at the first step, reused after: the stage state, the running sum of the rates k1 +
+    // 2 k2 + ..., and the latest accelerations and aux rates.
+    Eigen::VectorXd stage_, sum_, rate_;
 };
 
 }  // namespace frictionlab

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <regex>
 
 #include <gtest/gtest.h>
 
@@ -106,6 +107,25 @@ TEST(OnlyWhatTheSceneNames, NoFrictionNoDampingMeansNoSuchWork) {
     EXPECT_EQ(f.sim().quantities().find_field("friction_force"), nullptr);
     EXPECT_EQ(f.sim().system().step_index(), 1000);
     EXPECT_EQ(f.sim().system().evaluations() - before, 4 * f.sim().system().step_index());
+}
+
+/// A value of the state that stops being finite stops the run at that step, and the message says
+/// the step, the time, the block and the quantity (checked after every step, not every few).
+TEST(OnlyWhatTheSceneNames, ANonFiniteStateStopsTheRunNamingStepTimeBlockAndQuantity) {
+    for (const double poison : {std::nan(""), HUGE_VAL}) {
+        SceneFixture f(scene("bare_lattice.yaml"));
+        f.sim().begin_stage(0);
+        for (int i = 0; i < 5; ++i) f.sim().step(1.0);
+        f.sim().system().initial_state()(3 * f.sim().system().layout().nodes + 200) = poison;  // vz of block 200
+        try {
+            f.sim().step(1.0);
+            FAIL() << "a non-finite state went on";
+        } catch (const RunError& e) {
+            const std::string message = e.what();
+            const std::regex format(R"(step 6, t = [0-9.e+-]+ s: (x|z|vx|vz) of block \d+ is -?(nan|inf))");
+            EXPECT_TRUE(std::regex_search(message, format)) << message;
+        }
+    }
 }
 
 /// The baseline slider loaded at 20 mm/s through settling, one precursor and the first global slip

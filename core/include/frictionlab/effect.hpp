@@ -26,6 +26,16 @@ public:
 
     /// Adds this effect's forces at one state (whole arrays; no allocation, no I/O).
     virtual void add_forces(const StageView& s, ForceView& f) = 0;
+    /// Whether add_forces_with(next, ...) adds this effect's and `next`'s forces in one pass (e.g.
+    /// springs and dashpots on the same bonds: one load of each bond's nodes). The system then
+    /// evaluates the pair that way whenever `next` follows this effect in the pipeline.
+    virtual bool fuses_with(const Effect& /*next*/) const { return false; }
+    /// Adds this effect's and `next`'s forces (called only if fuses_with(next)): their sum as
+    /// add_forces() of each would give it, up to rounding.
+    virtual void add_forces_with(Effect& next, const StageView& s, ForceView& f) {
+        add_forces(s, f);
+        next.add_forces(s, f);
+    }
 
     /// Called at the start of every stage of the run, before any step of it.
     virtual void begin_stage(const StageInfo&, const StageView&) {}

@@ -34,11 +34,13 @@ inline StageView view_of(const Eigen::VectorXd& y, const StateLayout& l, double 
     return {t, {p, n}, {p + n, n}, {p + 2 * n, n}, {p + 3 * n, n}, {p + 4 * n, l.aux}};
 }
 
-/// Forces are written into the velocity half of a derivative vector dy, before division by mass.
-inline ForceView forces_of(Eigen::VectorXd& dy, const StateLayout& l) {
-    double* p = dy.data();
+/// Forces in an array laid out as dy's second part, [fx | fz | aux_rate] (layout.size() - 2N values).
+inline ForceView forces_at(double* p, const StateLayout& l) {
     const Index n = l.nodes;
-    return {{p + 2 * n, n}, {p + 3 * n, n}, {p + 4 * n, l.aux}};
+    return {{p, n}, {p + n, n}, {p + 2 * n, l.aux}};
 }
+
+/// Forces are written into the velocity half of a derivative vector dy, before division by mass.
+inline ForceView forces_of(Eigen::VectorXd& dy, const StateLayout& l) { return forces_at(dy.data() + 2 * l.nodes, l); }
 
 }  // namespace frictionlab

@@ -37,6 +37,10 @@ public:
     /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
     /// to its work with that weight, so the work is integrated to the integrator's own order.
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
+    /// The rest of dy/dt after the velocities: [F/m | aux rates], layout().size() - 2N values,
+    /// i.e. derivative() without the copy of y's velocities into dy's first half. For integrators
+    /// that read those velocities from y itself (RK4's fused stages); same arguments, same values.
+    void accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight = 0);
     /// dy/dt with only one active effect of the pipeline (index into pipeline()), for diagnostics
     /// such as the stability estimate that names the effect limiting the step.
     void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
@@ -51,6 +55,9 @@ public:
     void begin_step();
     /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);
+    /// accept(t, y) that takes y's storage instead of copying it: y is left holding the previous
+    /// accepted state (for integrators that overwrite their stage vector at the next step anyway).
+    void accept_swap(double t, Eigen::VectorXd& y);
     double next_event_time() const;
 
     void begin_stage(const StageInfo& stage);
@@ -66,8 +73,9 @@ public:
     void for_each_effect(F&& visit) const {
         for (const Slot& slot : slots_) visit(*slot.effect);
     }
-    /// Work accounting (energy bookkeeping) costs one extra pass over the forces per effect and
-    /// evaluation, so it is off unless an observer asks for it.
+    /// Work accounting (energy bookkeeping) evaluates every effect once more, alone, to know its
+    /// power, so it is off unless an observer asks for it. The state advances with the forces summed
+    /// exactly as without accounting (fused pairs included): switching it on changes no result.
     void enable_work_accounting();
     bool work_accounting() const { return !work_.empty(); }
     /// Work (J) each effect of the pipeline has done on the nodes since accounting began, in the
@@ -78,7 +86,17 @@ public:
     long long evaluations() const { return evaluations_; }
 
 private:
+    /// derivative() and accelerations() without counting an evaluation (refresh() uses them).
     void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
+    void compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight);
+    /// Pairs each active effect with the next one where it fuses_with() it.
+    void plan_evaluations();
+    /// Forces to accelerations, F/m.
+    void divide_by_mass(ForceView& f) const;
+    /// After the accepted state is in y_: time, work and the effects' commits for the step to t.
+    void commit_step(double t);
+    /// Adds the work of active effect `active_index` over this evaluation, with the quadrature weight.
+    void add_work(std::size_t active_index, const StageView& s, double weight);
 
     struct Slot {
         std::unique_ptr<Effect> effect;
@@ -91,6 +109,12 @@ private:
     std::vector<Slot> slots_;
     std::vector<std::string> labels_;
     std::vector<Effect*> active_;  // the current stage's pipeline, evaluation order
+    /// How the pipeline is evaluated: active_[first] alone, or fused with active_[first + 1].
+    struct Evaluation {
+        std::size_t first;
+        bool fused;
+    };
+    std::vector<Evaluation> plan_;
     Eigen::VectorXd y_, scratch_, net_force_;
     std::vector<double> work_, pending_work_;  // per slot; pending = this step's, until accepted
     std::vector<std::size_t> active_slot_;     // slot index of each active effect

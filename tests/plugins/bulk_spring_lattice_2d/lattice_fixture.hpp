@@ -42,9 +42,17 @@ struct LatticeFixture {
 
     /// [fx | fz] of one effect at state y.
     Eigen::VectorXd forces(Effect& e, const Eigen::VectorXd& y) const {
+        return evaluated(y, [&](const StageView& s, ForceView& f) { e.add_forces(s, f); });
+    }
+    /// [fx | fz] of the springs and the damping in their fused pass (Effect::add_forces_with).
+    Eigen::VectorXd fused_forces(const Eigen::VectorXd& y) {
+        return evaluated(y, [&](const StageView& s, ForceView& f) { springs().add_forces_with(damping(), s, f); });
+    }
+    template <class Evaluate>
+    Eigen::VectorXd evaluated(const Eigen::VectorXd& y, Evaluate evaluate) const {
         Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout().size());
         ForceView f = forces_of(dy, layout());
-        e.add_forces(view_of(y, layout(), 0.0), f);
+        evaluate(view_of(y, layout(), 0.0), f);
         return dy.segment(2 * nodes(), 2 * nodes());
     }
 

@@ -154,5 +154,40 @@ TEST(LatticeSprings, BondFamiliesEqualThePerBondLoopOnAnotherShape) {
     EXPECT_LE((F - ref).cwiseAbs().maxCoeff(), 1e-12 * ref.cwiseAbs().maxCoeff());
 }
 
+/// Springs and full-vector dashpots in one pass over the bonds give the two effects' sum, where the
+/// series serves (small strain) and where bonds take the exact law (strains of ~10 %).
+TEST(LatticeSprings, FusedWithTheBondDampingEqualsBothPasses) {
+    LatticeFixture f;
+    ASSERT_TRUE(f.springs().fuses_with(f.damping()));
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(-0.01, 0.01);
+    for (double amplitude : {1e-4, 0.1}) {
+        Eigen::VectorXd y = randomly_deformed(f, amplitude * f.body().spacing, 13);
+        for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = u(rng);  // m/s
+        const Eigen::VectorXd damping = f.forces(f.damping(), y), both = f.forces(f.springs(), y) + damping;
+        const Eigen::VectorXd fused = f.fused_forces(y);
+        // Round-off of the sum only; leaving out the dashpots would be off by |damping|.
+        EXPECT_LE((fused - both).cwiseAbs().maxCoeff(), 1e-13 * both.cwiseAbs().maxCoeff()) << amplitude;
+        EXPECT_GT(damping.cwiseAbs().maxCoeff(), 1e-6 * both.cwiseAbs().maxCoeff()) << amplitude;
+    }
+}
+
+TEST(LatticeSprings, FuseOnlyGeometricSpringsWithFullVectorDampingAfterThem) {
+    LatticeFixture geometric;
+    EXPECT_FALSE(geometric.damping().fuses_with(geometric.springs()));  // the order of the pipeline counts
+    EXPECT_FALSE(geometric.springs().fuses_with(geometric.springs()));
+    LatticeFixture small_strain(with_springs("small_strain"));
+    EXPECT_FALSE(small_strain.springs().fuses_with(small_strain.damping()));
+    SpringLattice2d::Params projected;
+    projected.damping_mode = "bond_projected";
+    LatticeFixture bond_projected(projected);
+    EXPECT_FALSE(bond_projected.springs().fuses_with(bond_projected.damping()));
+    SpringLattice2d::Params other_shape;
+    other_shape.nx = 21;
+    other_shape.height = 0.1 / 20 * 8;
+    LatticeFixture other(other_shape);
+    EXPECT_FALSE(geometric.springs().fuses_with(other.damping()));  // another lattice's dashpots
+}
+
 }  // namespace
 }  // namespace frictionlab
