@@ -10,6 +10,27 @@ function(run)
   endif()
 endfunction()
 
+# Runs the installed frictionlab on a scene written in ${WORK}/scene, into a fresh output folder.
+function(run_scene scene output)
+  file(REMOVE_RECURSE ${WORK}/scene/${output})
+  execute_process(
+    COMMAND ${PREFIX}/${BINDIR}/frictionlab run -q ${scene}
+    WORKING_DIRECTORY ${WORK}/scene
+    RESULT_VARIABLE result OUTPUT_VARIABLE run_log ERROR_VARIABLE run_log)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "frictionlab run of ${scene} failed (${result}):\n${run_log}")
+  endif()
+endfunction()
+
+# Whether the run in ${WORK}/scene/<output> records the plugin library in its run.yaml.
+function(expect_recorded output plugin)
+  file(READ ${WORK}/scene/${output}/run.yaml record)
+  string(FIND "${record}" "${plugin}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "run.yaml of ${output} does not record ${plugin}:\n${record}")
+  endif()
+endfunction()
+
 set(configure_options -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 if(MAKE_PROGRAM)
   list(APPEND configure_options -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM})
@@ -47,33 +68,50 @@ endforeach()
 
 # Through a scene, as a user would: the installed frictionlab runs a small lattice whose scene names
 # the template's directory in plugin_paths (relative to the scene file) and its observer by type.
-file(WRITE ${WORK}/scene/uses_template.yaml "output: out
-plugin_paths: [../my_plugin/build/plugins]
+set(small_slider "plugin_paths: [../my_plugin/build/plugins]
 bulk: {type: spring_lattice_2d, nx: 11, nz: 3, length: 0.025, height: 0.005}
+integrator: {type: rk4, dt: 2.0e-7}
 loaders:
   - {type: rigid_base_contact}
   - {type: normal_load, total_force: 100, ramp_time: 1.0e-4}
-integrator: {type: rk4, dt: 2.0e-7}
+")
+file(WRITE ${WORK}/scene/uses_template.yaml "output: out
+${small_slider}
 stages:
   - {name: settle, duration: 2.0e-4}
 observers:
   - {type: max_speed_csv, every: 2.0e-5, file_name: max_speed.csv}
 ")
-file(REMOVE_RECURSE ${WORK}/scene/out)
-execute_process(
-  COMMAND ${PREFIX}/${BINDIR}/frictionlab run -q uses_template.yaml
-  WORKING_DIRECTORY ${WORK}/scene
-  RESULT_VARIABLE result OUTPUT_VARIABLE run_log ERROR_VARIABLE run_log)
-if(NOT result EQUAL 0)
-  message(FATAL_ERROR "frictionlab run of a scene using the template failed (${result}):\n${run_log}")
-endif()
+run_scene(uses_template.yaml out)
 file(STRINGS ${WORK}/scene/out/max_speed.csv rows REGEX "^[0-9]")
 list(LENGTH rows row_count)
 if(NOT row_count EQUAL 11)
   message(FATAL_ERROR "max_speed.csv has ${row_count} rows, expected 11 (t = 0, 2e-5, ..., 2e-4)")
 endif()
-file(READ ${WORK}/scene/out/run.yaml record)
-string(FIND "${record}" "observer_max_speed_csv" at)
-if(at EQUAL -1)
-  message(FATAL_ERROR "run.yaml does not record the template plugin:\n${record}")
+expect_recorded(out observer_max_speed_csv)
+
+# The template's friction law, swapped into a scene by its `friction:` block: pulled at 0.05 m/s,
+# far above its regularisation speed 5 mm/s, the slider slides steadily and the base's total
+# friction is -mu F_N tanh(10) = -30 N (within 0.01 N), as the law states.
+set(friction_plugin ${WORK}/my_plugin/build/plugins/friction_viscous_coulomb.so)
+if(NOT EXISTS ${friction_plugin})
+  message(FATAL_ERROR "the template did not produce ${friction_plugin}")
 endif()
+file(WRITE ${WORK}/scene/uses_template_law.yaml "output: out_law
+${small_slider}  - {type: driving_spring, stages: [load], velocity: 0.05, height: 0.0025}
+friction: {type: viscous_coulomb, mu: 0.3, regularisation_velocity: 5.0e-3}
+stages:
+  - {name: settle, duration: 2.0e-4, friction_events: false}
+  - {name: load, duration: 0.01}
+observers:
+  - {type: loading_curve, every: 1.0e-4}
+")
+run_scene(uses_template_law.yaml out_law)
+file(STRINGS ${WORK}/scene/out_law/loading_curve.csv rows REGEX "^[0-9]")
+list(GET rows -1 last)
+string(REPLACE "," ";" last "${last}")
+list(GET last 7 total_friction)  # time,step,stage,driving_force,...,normal_load,total_friction_force
+if(NOT (total_friction GREATER -30.01 AND total_friction LESS -29.99))
+  message(FATAL_ERROR "total friction ${total_friction} N, expected -mu F_N = -30 N")
+endif()
+expect_recorded(out_law friction_viscous_coulomb)

@@ -1,0 +1,78 @@
+// An out-of-tree FrictionLab plugin with one friction law: Coulomb friction smoothed near zero slip
+// velocity, F_i = -mu f_N,i tanh(v_i / v_r) on each interface block. A friction law is an Effect:
+// add_forces() is a pure function of the stage state (the integrator calls it several times per
+// step); discrete transitions, if a law has any, go in commit(), once per accepted step.
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include <frictionlab/errors.hpp>
+#include <frictionlab/kinds.hpp>
+#include <frictionlab/param_spec.hpp>
+#include <frictionlab/plugin.hpp>
+#include <frictionlab/quantities.hpp>
+#include <frictionlab/registry.hpp>
+
+namespace {
+
+using frictionlab::Index;
+
+class ViscousCoulomb final : public frictionlab::FrictionLaw {
+public:
+    struct Params {
+        double mu = 0.3;
+        double regularisation_velocity = 1e-4;
+        std::string node_set = "interface";
+    };
+    static constexpr std::string_view type = "viscous_coulomb";
+
+    static frictionlab::ParamSpec<Params> spec() {
+        frictionlab::ParamSpec<Params> s("Coulomb friction smoothed near rest: F = -mu f_N tanh(v / v_r) per block.");
+        s.add("mu", &Params::mu, "Friction coefficient.").unit("1").greater_than(0);
+        s.add("regularisation_velocity", &Params::regularisation_velocity,
+              "Slip speed v_r over which the force reaches mu f_N (a dashpot mu f_N / v_r near rest).")
+            .unit("m/s")
+            .greater_than(0);
+        s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
+        return s;
+    }
+
+    ViscousCoulomb(const Params& params, const frictionlab::Context& ctx) : p_(params) {
+        if (!ctx.body || !ctx.quantities)
+            throw frictionlab::InputError("viscous_coulomb: needs the bulk model's body and the run's quantities");
+        nodes_ = ctx.body->nodes(p_.node_set);
+        const Index n = static_cast<Index>(nodes_.size());
+        // The base contact (a loader, evaluated before the friction law) publishes the normal force
+        // of each interface block; declaring the same field here gives this law read access to it.
+        normal_force_ = &ctx.quantities->field("normal_force", p_.node_set, n, "N", "Normal contact force.");
+        friction_force_ = &ctx.quantities->field("friction_force", p_.node_set, n, "N", "x-force from friction.");
+    }
+
+    std::string describe() const override {
+        return fmt::format("viscous Coulomb friction (mu={:g}, v_r={:g} m/s)", p_.mu, p_.regularisation_velocity);
+    }
+
+    void add_forces(const frictionlab::StageView& s, frictionlab::ForceView& f) override {
+        for (std::size_t k = 0; k < nodes_.size(); ++k) {
+            const Index node = nodes_[k];
+            const double force =
+                -p_.mu * (*normal_force_)(k) * std::tanh(s.vx(node) / p_.regularisation_velocity);
+            (*friction_force_)(k) = force;  // published for observers
+            f.fx(node) += force;
+        }
+    }
+
+private:
+    Params p_;
+    frictionlab::NodeSet nodes_;
+    const Eigen::ArrayXd* normal_force_ = nullptr;
+    Eigen::ArrayXd* friction_force_ = nullptr;
+};
+
+void register_types(frictionlab::Registry& registry) { registry.add<ViscousCoulomb>(); }
+
+}  // namespace
+
+FRICTIONLAB_PLUGIN("friction_viscous_coulomb", "0.1.0", register_types)
