@@ -111,12 +111,14 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
     std::vector<YAML::Node> resolved;
     for (const auto& scene : scenes) resolved.push_back(YAML::Load(scene.resolved_yaml));
     StudyResult result;
+    result.seed = scenes.front().seed;
     result.knob_columns = knob_columns(study, resolved);
     const auto cases = study.all_cases();
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const Scene& scene = scenes.at(k);
         StudyRow row;
         row.name = cases[k]->name;
+        row.scene_hash = scene.hash;
         for (const auto& key : result.knob_columns) row.knobs.push_back(value_at(resolved[k], key));
         row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
         log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
@@ -139,15 +141,17 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
 }
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
-    std::string text = fmt::format("# frictionlab {} study {}: errors relative to the reference case\n",
-                                   framework_version(), study.file.filename().string());
-    text += "case,family";
+    std::string text = fmt::format(
+        "# frictionlab {} study {}: errors relative to the reference case; seed {} unless a case sets it; each "
+        "case's run.yaml in cases/ records its resolved scene and plugins\n",
+        framework_version(), study.file.filename().string(), result.seed);
+    text += "case,family,scene_hash";
     for (const auto& k : result.knob_columns) text += fmt::format(",{}", cell(k));
     text += ",wall_seconds,cpu_seconds,steps,evaluations";
     for (const auto& c : error_columns) text += std::string(",") + c.name;
     text += ",note\n";
     for (const auto& row : result.rows) {
-        text += fmt::format("{},{}", row.name, cell(row.family));
+        text += fmt::format("{},{},{}", row.name, cell(row.family), row.scene_hash);
         for (const auto& v : row.knobs) text += fmt::format(",{}", cell(v));
         text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps,
                             row.summary.evaluations);

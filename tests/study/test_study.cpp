@@ -2,6 +2,7 @@
 // errors against the reference, its plot, and the errors of a bad study file.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -71,7 +72,7 @@ TEST(Study, TinyStudyThroughTheCommand) {
     const StudyTable table(dir / "out" / "study.csv");
 
     // One row per case, the reference first; knobs as the resolved scene has them, defaults included.
-    std::vector<std::string> expected{"case", "family", "integrator.type", "integrator.dt", "seed",
+    std::vector<std::string> expected{"case", "family", "scene_hash", "integrator.type", "integrator.dt", "seed",
                                       "wall_seconds", "cpu_seconds", "steps", "evaluations"};
     expected.insert(expected.end(), errors.begin(), errors.end());
     expected.push_back("note");
@@ -84,6 +85,14 @@ TEST(Study, TinyStudyThroughTheCommand) {
     EXPECT_EQ(table.row("verlet").at("family"), "verlet");
     EXPECT_EQ(table.row("rk4_fine").at("family"), "rk4");
     EXPECT_EQ(table.row("other_seed").at("seed"), "2");
+    // Each row names its case's scene by the hash its run.yaml records.
+    for (const auto& name : names) {
+        std::ifstream record(dir / "out" / "cases" / name / "run.yaml");
+        const std::string text((std::istreambuf_iterator<char>(record)), std::istreambuf_iterator<char>());
+        const std::string hash = table.row(name).at("scene_hash");
+        EXPECT_EQ(hash.size(), 16u) << name;
+        EXPECT_NE(text.find(hash), std::string::npos) << name;
+    }
     // 15 ms of simulated time in steps of the case; RK4 costs four evaluations a step (plus those
     // of the stable-step estimates), velocity Verlet fewer.
     EXPECT_EQ(table.value("rk4_coarse", "steps"), 37500);

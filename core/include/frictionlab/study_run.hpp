@@ -3,6 +3,7 @@
 // ordinary run into <output>/cases/<name>, then the errors of each case against the reference
 // (study_metrics.hpp) into <output>/study.csv and <output>/study.md. One case at a time keeps
 // the wall times comparable and each run bit-reproducible.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -18,6 +19,7 @@ namespace frictionlab {
 
 struct StudyRow {
     std::string name, family;
+    std::string scene_hash;  // of the case's resolved scene (seed included), as its run.yaml records it
     std::vector<std::string> knobs;  // one value per StudyResult::knob_columns ("" where it does not apply)
     RunSummary summary;
     CaseOutcome outcome;
@@ -28,6 +30,7 @@ struct StudyResult {
     /// integrator.type, then every key path the study's overrides set, in order of first use.
     std::vector<std::string> knob_columns;
     std::vector<StudyRow> rows;  // the reference first
+    std::uint64_t seed = 0;      // the base scene's (a case may set its own)
 };
 
 /// The study's output directory is created (replaced with `force`; that also runs a time step
