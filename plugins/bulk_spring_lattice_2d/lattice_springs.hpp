@@ -49,7 +49,7 @@ private:
     double stiffness_;
     Law law_;
     PairForces pair_;            // scratch: this evaluation's per-bond forces
-    std::vector<double> delta_;  // scratch: r^2/l^2 - 1 of one family's bonds
+    std::array<std::vector<double>, 4> inverse_l2_;  // per family: 1/l^2 of each bond, 0 on masked pairs
 };
 
 }  // namespace frictionlab
