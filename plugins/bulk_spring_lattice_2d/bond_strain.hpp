@@ -12,10 +12,25 @@
 
 namespace frictionlab {
 
+/// Which components of a bond's rest vector may be non-zero: a straight bond lies along x or z with
+/// no rest defect, and squared_stretch<>() then leaves out the terms of the zero component (they
+/// add or multiply exact zeros: the result has the same bits, in fewer operations).
+enum class RestVector { along_x, along_z, any };
+
+template <RestVector R = RestVector::any>
 inline double squared_stretch(double dx, double dz, double ref_x, double ref_z, double rest_defect,
                               double inverse_square_length) {
     const double ux = dx - ref_x, uz = dz - ref_z;  // exact while Delta is within a factor 2 of ref (Sterbenz)
-    return ((2 * ref_x + ux) * ux + (2 * ref_z + uz) * uz + rest_defect) * inverse_square_length;
+    const double x_term = R == RestVector::along_z ? dx * dx : (2 * ref_x + ux) * ux;
+    const double z_term = R == RestVector::along_x ? dz * dz : (2 * ref_z + uz) * uz;
+    if constexpr (R == RestVector::any) return (x_term + z_term + rest_defect) * inverse_square_length;
+    return (x_term + z_term) * inverse_square_length;
+}
+
+/// The RestVector a bond's rest vector fits.
+inline RestVector rest_vector_of(double ref_x, double ref_z, double rest_defect) {
+    if (rest_defect != 0) return RestVector::any;
+    return ref_z == 0 ? RestVector::along_x : ref_x == 0 ? RestVector::along_z : RestVector::any;
 }
 
 /// |delta| bound of TensionSeries: bond strains up to ~0.2 %. The Li2020 scenes stay below ~1e-3

@@ -22,17 +22,20 @@ struct SeriesFamily {
 };
 
 /// delta of bond i; 0 on masked pairs, whose `inverse_l2` (1/l^2 times the mask) is 0.
-inline double bond_delta(const double* x, const double* z, const double* inverse_l2, Index offset, Index i,
-                         const SeriesFamily& c) {
+template <RestVector R = RestVector::any>
+[[gnu::always_inline]] inline double bond_delta(const double* x, const double* z, const double* inverse_l2,
+                                                Index offset, Index i, const SeriesFamily& c) {
     const double dx = x[i + offset] - x[i], dz = z[i + offset] - z[i];
-    return squared_stretch(dx, dz, c.ref_x, c.ref_z, c.rest_defect, inverse_l2[i]);
+    return squared_stretch<R>(dx, dz, c.ref_x, c.ref_z, c.rest_defect, inverse_l2[i]);
 }
 
 /// t of bond i with the series for k (1 - l/r); flags in `beyond` a |delta| over the series' bound
 /// (those bonds are then redone by exact_beyond_bound()).
-inline double series_tension(const double* x, const double* z, const double* inverse_l2, Index offset, Index i,
-                             const SeriesFamily& c, std::int64_t& beyond) {
-    const double delta = bond_delta(x, z, inverse_l2, offset, i, c);
+template <RestVector R = RestVector::any>
+[[gnu::always_inline]] inline double series_tension(const double* x, const double* z, const double* inverse_l2,
+                                                    Index offset, Index i, const SeriesFamily& c,
+                                                    std::int64_t& beyond) {
+    const double delta = bond_delta<R>(x, z, inverse_l2, offset, i, c);
     beyond |= !(std::abs(delta) <= series_bound);  // NaN counts as beyond
     return c.tension(delta);
 }
@@ -51,19 +54,45 @@ bool geometric_series(const double* __restrict x, const double* __restrict z, co
 }
 
 /// The same with each bond's full-vector dashpot added: t Delta + eta_i (v_j - v_i), eta_i the
-/// bond's coefficient (0 on masked pairs, BondDamping).
-FRICTIONLAB_HOT_KERNEL
-bool geometric_series_damped(const double* __restrict x, const double* __restrict z, const double* __restrict vx,
-                             const double* __restrict vz, const double* __restrict inverse_l2,
-                             const double* __restrict dashpot, Index offset, Index count, SeriesFamily c,
-                             double* __restrict fx, double* __restrict fz) {
+/// bond's coefficient (0 on masked pairs, BondDamping). The hot loop of a run: one version per
+/// RestVector, each cloned per ISA (the body is inlined into each clone).
+template <RestVector R>
+[[gnu::always_inline]] inline bool series_damped(const double* __restrict x, const double* __restrict z,
+                                                 const double* __restrict vx, const double* __restrict vz,
+                                                 const double* __restrict inverse_l2,
+                                                 const double* __restrict dashpot, Index offset, Index count,
+                                                 const SeriesFamily& c, double* __restrict fx,
+                                                 double* __restrict fz) {
     std::int64_t beyond = 0;
     for (Index i = 0; i < count; ++i) {
-        const double t = series_tension(x, z, inverse_l2, offset, i, c, beyond);
+        const double t = series_tension<R>(x, z, inverse_l2, offset, i, c, beyond);
         fx[i] = t * (x[i + offset] - x[i]) + dashpot[i] * (vx[i + offset] - vx[i]);
         fz[i] = t * (z[i + offset] - z[i]) + dashpot[i] * (vz[i + offset] - vz[i]);
     }
     return beyond != 0;
+}
+
+#define FRICTIONLAB_SERIES_DAMPED(name, rest_vector)                                                                  \
+    FRICTIONLAB_HOT_KERNEL                                                                                            \
+    bool name(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2,          \
+              const double* dashpot, Index offset, Index count, SeriesFamily c, double* fx, double* fz) {              \
+        return series_damped<rest_vector>(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);              \
+    }
+FRICTIONLAB_SERIES_DAMPED(series_damped_along_x, RestVector::along_x)
+FRICTIONLAB_SERIES_DAMPED(series_damped_along_z, RestVector::along_z)
+FRICTIONLAB_SERIES_DAMPED(series_damped_any, RestVector::any)
+#undef FRICTIONLAB_SERIES_DAMPED
+
+/// geometric_series() with the dashpots, in the version for the family's rest vector.
+bool geometric_series_damped(const double* x, const double* z, const double* vx, const double* vz,
+                             const double* inverse_l2, const double* dashpot, Index offset, Index count,
+                             const SeriesFamily& c, double* fx, double* fz) {
+    switch (rest_vector_of(c.ref_x, c.ref_z, c.rest_defect)) {
+    case RestVector::along_x: return series_damped_along_x(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
+    case RestVector::along_z: return series_damped_along_z(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
+    case RestVector::any: break;
+    }
+    return series_damped_any(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
 }
 
 /// The bonds the series could not do, with a square root and a division each (and their dashpots

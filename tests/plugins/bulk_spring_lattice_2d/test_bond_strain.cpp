@@ -2,6 +2,7 @@
 // displacement relative to the rest vector, and 1 - l/r by a polynomial within its bound or by
 // the cancellation-free closed form beyond it, against Li2020 Eq. 1 evaluated in quad precision.
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -112,6 +113,30 @@ TEST(BondStrain, RestDefectMakesTheRestVectorExactlyRestLength) {
         // At the rest vector the law gives no force, to round-off of the rest length.
         EXPECT_LE(std::abs(tension_factor(b.ref_x, b.ref_z, b)), 4 * eps);
     }
+}
+
+/// The straight families' shortcut (RestVector::along_x / along_z) leaves out only exact zeros: the
+/// same bits as the general form, for any displacement.
+TEST(BondStrain, StraightBondShortcutGivesTheSameBits) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-1e-3, 1e-3);
+    int straight = 0;
+    for (const BondFamily& b : LatticeGrid{41, 9, 0.0025}.families()) {
+        const RestVector shape = rest_vector_of(b.ref_x, b.ref_z, b.rest_defect);
+        if (shape == RestVector::any) continue;
+        ++straight;
+        const double l = b.rest_length, inverse_l2 = 1 / (l * l);
+        for (int n = 0; n < 10000; ++n) {
+            const double dx = b.ref_x + u(rng) * l, dz = b.ref_z + u(rng) * l;
+            const double general = squared_stretch(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2);
+            const double shortcut =
+                shape == RestVector::along_x
+                    ? squared_stretch<RestVector::along_x>(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2)
+                    : squared_stretch<RestVector::along_z>(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2);
+            ASSERT_EQ(std::memcmp(&general, &shortcut, sizeof(double)), 0) << dx << ", " << dz;
+        }
+    }
+    EXPECT_EQ(straight, 2) << "the horizontal and vertical families";
 }
 
 TEST(BondStrain, StretchIsRMinusL) {
