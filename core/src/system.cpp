@@ -69,8 +69,19 @@ void System::accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen:
     ++evaluations_;
 }
 
+void System::forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
+    compute_forces(t, y, f, work_weight);
+    ++evaluations_;
+}
+
 void System::compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a,
                                    double work_weight) {
+    compute_forces(t, y, a, work_weight);
+    ForceView f = forces_at(a.data(), layout_);
+    divide_by_mass(f);
+}
+
+void System::compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
     a.setZero();
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_at(a.data(), layout_);
@@ -81,7 +92,6 @@ void System::compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Re
         if (e.fused) active_[e.first]->add_forces_with(*active_[e.first + 1], s, f);
         else active_[e.first]->add_forces(s, f);
     }
-    divide_by_mass(f);
 }
 
 void System::add_work(std::size_t active_index, const StageView& s, double weight) {
