@@ -159,7 +159,11 @@ void LatticeSprings::add_forces_with(Effect& next, const StageView& s, ForceView
     add_bond_forces(s, &static_cast<const BondDamping&>(next), f);
 }
 
-void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f) {
+void LatticeSprings::set_forces_with(Effect* next, const StageView& s, ForceView& f) {
+    add_bond_forces(s, next ? &static_cast<const BondDamping&>(*next) : nullptr, f, true);
+}
+
+void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f, bool overwrite) {
     const double *x = s.x.data(), *z = s.z.data(), *vx = s.vx.data(), *vz = s.vz.data();
     for (std::size_t n = 0; n < families_.size(); ++n) {
         const BondFamily& b = families_[n];
@@ -177,7 +181,8 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
                                     : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
         if (beyond) exact_beyond_bound(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, k, px, pz);
     }
-    pair_.add_to(f.fx.data(), f.fz.data());
+    if (overwrite) pair_.write_to(f.fx.data(), f.fz.data());
+    else pair_.add_to(f.fx.data(), f.fz.data());
 }
 
 double LatticeSprings::potential_energy(const StageView& s) const {
