@@ -69,19 +69,34 @@ void System::accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen:
     ++evaluations_;
 }
 
+void System::forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
+    compute_forces(t, y, f, work_weight);
+    ++evaluations_;
+}
+
 void System::compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a,
                                    double work_weight) {
-    a.setZero();
+    compute_forces(t, y, a, work_weight);
+    ForceView f = forces_at(a.data(), layout_);
+    divide_by_mass(f);
+}
+
+void System::compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
+    // The first evaluation writes the forces (Effect::set_forces_with): only the aux rates need zeros.
+    const Index n = layout_.nodes;
+    if (plan_.empty()) a.setZero();
+    else a.tail(a.size() - 2 * n).setZero();
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_at(a.data(), layout_);
     const bool accounting = work_accounting() && work_weight != 0;
     for (const Evaluation& e : plan_) {
         if (accounting)
             for (std::size_t k = e.first; k <= e.first + e.fused; ++k) add_work(k, s, work_weight);
-        if (e.fused) active_[e.first]->add_forces_with(*active_[e.first + 1], s, f);
+        Effect* next = e.fused ? active_[e.first + 1] : nullptr;
+        if (&e == &plan_.front()) active_[e.first]->set_forces_with(next, s, f);
+        else if (next) active_[e.first]->add_forces_with(*next, s, f);
         else active_[e.first]->add_forces(s, f);
     }
-    divide_by_mass(f);
 }
 
 void System::add_work(std::size_t active_index, const StageView& s, double weight) {

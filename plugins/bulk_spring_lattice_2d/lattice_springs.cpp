@@ -17,28 +17,36 @@ namespace {
 
 /// What the series form needs of one bond family.
 struct SeriesFamily {
-    double ref_x, ref_z, rest_defect, inverse_l2, k;
+    double ref_x, ref_z, rest_defect;
+    TensionSeries tension;  // k (1 - l/r) of delta
 };
 
-/// t of bond i with the series for 1 - l/r; writes its delta, and flags in `beyond` a |delta| over
-/// the series' bound (those bonds are then redone by exact_beyond_bound()).
-inline double series_tension(const double* x, const double* z, const double* mask, Index offset, Index i,
-                             const SeriesFamily& c, double* delta_out, std::int64_t& beyond) {
+/// delta of bond i; 0 on masked pairs, whose `inverse_l2` (1/l^2 times the mask) is 0.
+template <RestVector R = RestVector::any>
+[[gnu::always_inline]] inline double bond_delta(const double* x, const double* z, const double* inverse_l2,
+                                                Index offset, Index i, const SeriesFamily& c) {
     const double dx = x[i + offset] - x[i], dz = z[i + offset] - z[i];
-    const double delta = mask[i] * squared_stretch(dx, dz, c.ref_x, c.ref_z, c.rest_defect, c.inverse_l2);
-    beyond |= !(std::abs(delta) <= series_bound);  // NaN counts as beyond
-    delta_out[i] = delta;
-    return c.k * tension_factor_series(delta);
+    return squared_stretch<R>(dx, dz, c.ref_x, c.ref_z, c.rest_defect, inverse_l2[i]);
 }
 
-/// The series form for every bond; writes delta too. Returns whether some |delta| exceeds the bound.
+/// t of bond i with the series for k (1 - l/r); flags in `beyond` a |delta| over the series' bound
+/// (those bonds are then redone by exact_beyond_bound()).
+template <RestVector R = RestVector::any>
+[[gnu::always_inline]] inline double series_tension(const double* x, const double* z, const double* inverse_l2,
+                                                    Index offset, Index i, const SeriesFamily& c,
+                                                    std::int64_t& beyond) {
+    const double delta = bond_delta<R>(x, z, inverse_l2, offset, i, c);
+    beyond |= !(std::abs(delta) <= series_bound);  // NaN counts as beyond
+    return c.tension(delta);
+}
+
+/// The series form for every bond. Returns whether some |delta| exceeds the bound.
 FRICTIONLAB_HOT_KERNEL
-bool geometric_series(const double* __restrict x, const double* __restrict z, const double* __restrict mask,
-                      Index offset, Index count, SeriesFamily c, double* __restrict fx, double* __restrict fz,
-                      double* __restrict delta_out) {
+bool geometric_series(const double* __restrict x, const double* __restrict z, const double* __restrict inverse_l2,
+                      Index offset, Index count, SeriesFamily c, double* __restrict fx, double* __restrict fz) {
     std::int64_t beyond = 0;  // as wide as a double, so the vectorised reduction needs no lane shuffles
     for (Index i = 0; i < count; ++i) {
-        const double t = series_tension(x, z, mask, offset, i, c, delta_out, beyond);
+        const double t = series_tension(x, z, inverse_l2, offset, i, c, beyond);
         fx[i] = t * (x[i + offset] - x[i]);
         fz[i] = t * (z[i + offset] - z[i]);
     }
@@ -46,38 +54,60 @@ bool geometric_series(const double* __restrict x, const double* __restrict z, co
 }
 
 /// The same with each bond's full-vector dashpot added: t Delta + eta_i (v_j - v_i), eta_i the
-/// bond's coefficient (0 on masked pairs, BondDamping).
-FRICTIONLAB_HOT_KERNEL
-bool geometric_series_damped(const double* __restrict x, const double* __restrict z, const double* __restrict vx,
-                             const double* __restrict vz, const double* __restrict mask,
-                             const double* __restrict dashpot, Index offset, Index count, SeriesFamily c,
-                             double* __restrict fx, double* __restrict fz, double* __restrict delta_out) {
+/// bond's coefficient (0 on masked pairs, BondDamping). The hot loop of a run: one version per
+/// RestVector, each cloned per ISA (the body is inlined into each clone).
+template <RestVector R>
+[[gnu::always_inline]] inline bool series_damped(const double* __restrict x, const double* __restrict z,
+                                                 const double* __restrict vx, const double* __restrict vz,
+                                                 const double* __restrict inverse_l2,
+                                                 const double* __restrict dashpot, Index offset, Index count,
+                                                 const SeriesFamily& c, double* __restrict fx,
+                                                 double* __restrict fz) {
     std::int64_t beyond = 0;
     for (Index i = 0; i < count; ++i) {
-        const double t = series_tension(x, z, mask, offset, i, c, delta_out, beyond);
+        const double t = series_tension<R>(x, z, inverse_l2, offset, i, c, beyond);
         fx[i] = t * (x[i + offset] - x[i]) + dashpot[i] * (vx[i + offset] - vx[i]);
         fz[i] = t * (z[i + offset] - z[i]) + dashpot[i] * (vz[i + offset] - vz[i]);
     }
     return beyond != 0;
 }
 
-/// The bonds the series could not do, with a square root and a division each. They are few (a
-/// point load's neighbourhood at high load): a scan of the stored deltas finds them.
-void exact_beyond_bound(const double* x, const double* z, const double* delta, Index offset, Index count, double k,
-                        double* fx, double* fz) {
-    for (Index i = 0; i < count; ++i) {
-        if (std::abs(delta[i]) <= series_bound) continue;
-        const double t = k * tension_factor_exact(delta[i]);
-        fx[i] = t * (x[i + offset] - x[i]);
-        fz[i] = t * (z[i + offset] - z[i]);
+#define FRICTIONLAB_SERIES_DAMPED(name, rest_vector)                                                                  \
+    FRICTIONLAB_HOT_KERNEL                                                                                            \
+    bool name(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2,          \
+              const double* dashpot, Index offset, Index count, SeriesFamily c, double* fx, double* fz) {              \
+        return series_damped<rest_vector>(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);              \
     }
+FRICTIONLAB_SERIES_DAMPED(series_damped_along_x, RestVector::along_x)
+FRICTIONLAB_SERIES_DAMPED(series_damped_along_z, RestVector::along_z)
+FRICTIONLAB_SERIES_DAMPED(series_damped_any, RestVector::any)
+#undef FRICTIONLAB_SERIES_DAMPED
+
+/// geometric_series() with the dashpots, in the version for the family's rest vector.
+bool geometric_series_damped(const double* x, const double* z, const double* vx, const double* vz,
+                             const double* inverse_l2, const double* dashpot, Index offset, Index count,
+                             const SeriesFamily& c, double* fx, double* fz) {
+    switch (rest_vector_of(c.ref_x, c.ref_z, c.rest_defect)) {
+    case RestVector::along_x: return series_damped_along_x(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
+    case RestVector::along_z: return series_damped_along_z(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
+    case RestVector::any: break;
+    }
+    return series_damped_any(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
 }
 
-/// Adds the dashpots of those bonds again, as geometric_series_damped() does for the others.
-void damp_beyond_bound(const double* vx, const double* vz, const double* dashpot, const double* delta, Index offset,
-                       Index count, double* fx, double* fz) {
+/// The bonds the series could not do, with a square root and a division each (and their dashpots
+/// again if `dashpot` is given). They are few (a point load's neighbourhood at high load): a second
+/// pass finds them by their delta.
+void exact_beyond_bound(const double* x, const double* z, const double* vx, const double* vz,
+                        const double* inverse_l2, const double* dashpot, Index offset, Index count,
+                        const SeriesFamily& c, double k, double* fx, double* fz) {
     for (Index i = 0; i < count; ++i) {
-        if (std::abs(delta[i]) <= series_bound) continue;
+        const double delta = bond_delta(x, z, inverse_l2, offset, i, c);
+        if (std::abs(delta) <= series_bound) continue;
+        const double t = k * tension_factor_exact(delta);
+        fx[i] = t * (x[i + offset] - x[i]);
+        fz[i] = t * (z[i + offset] - z[i]);
+        if (!dashpot) continue;
         fx[i] = fx[i] + dashpot[i] * (vx[i + offset] - vx[i]);
         fz[i] = fz[i] + dashpot[i] * (vz[i + offset] - vz[i]);
     }
@@ -96,11 +126,21 @@ void small_strain(const double* __restrict x, const double* __restrict z, const 
     }
 }
 
+/// mask / l^2 of every bond of each family.
+std::array<std::vector<double>, 4> inverse_square_lengths(const std::array<BondFamily, 4>& families) {
+    std::array<std::vector<double>, 4> out;
+    for (std::size_t n = 0; n < families.size(); ++n) {
+        const double l = families[n].rest_length, inverse_l2 = 1 / (l * l);
+        for (const double m : families[n].mask) out[n].push_back(m * inverse_l2);
+    }
+    return out;
+}
+
 }  // namespace
 
 LatticeSprings::LatticeSprings(const LatticeGrid& grid, double bond_stiffness, Law law)
     : grid_(grid), families_(grid.families()), stiffness_(bond_stiffness), law_(law), pair_(families_, grid.size()),
-      delta_(static_cast<std::size_t>(grid.size())) {}
+      inverse_l2_(inverse_square_lengths(families_)) {}
 
 std::string LatticeSprings::describe() const {
     return fmt::format("lattice springs {}x{} ({})", grid_.nx, grid_.nz,
@@ -119,7 +159,11 @@ void LatticeSprings::add_forces_with(Effect& next, const StageView& s, ForceView
     add_bond_forces(s, &static_cast<const BondDamping&>(next), f);
 }
 
-void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f) {
+void LatticeSprings::set_forces_with(Effect* next, const StageView& s, ForceView& f) {
+    add_bond_forces(s, next ? &static_cast<const BondDamping&>(*next) : nullptr, f, true);
+}
+
+void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f, bool overwrite) {
     const double *x = s.x.data(), *z = s.z.data(), *vx = s.vx.data(), *vz = s.vz.data();
     for (std::size_t n = 0; n < families_.size(); ++n) {
         const BondFamily& b = families_[n];
@@ -129,17 +173,16 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
             small_strain(x, z, b.mask.data(), b.offset, b.count, b.ex, b.ez, l, k, px, pz);
             continue;
         }
-        const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, 1 / (l * l), k};
+        const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, TensionSeries(k)};
         const double* dashpot = damping ? damping->coefficients(n) : nullptr;
-        const bool beyond =
-            dashpot ? geometric_series_damped(x, z, vx, vz, b.mask.data(), dashpot, b.offset, b.count, c, px, pz,
-                                              delta_.data())
-                    : geometric_series(x, z, b.mask.data(), b.offset, b.count, c, px, pz, delta_.data());
-        if (!beyond) continue;
-        exact_beyond_bound(x, z, delta_.data(), b.offset, b.count, k, px, pz);
-        if (dashpot) damp_beyond_bound(vx, vz, dashpot, delta_.data(), b.offset, b.count, px, pz);
+        const double* inverse_l2 = inverse_l2_[n].data();
+        const bool beyond = dashpot ? geometric_series_damped(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c,
+                                                              px, pz)
+                                    : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
+        if (beyond) exact_beyond_bound(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, k, px, pz);
     }
-    pair_.add_to(f.fx.data(), f.fz.data());
+    if (overwrite) pair_.write_to(f.fx.data(), f.fz.data());
+    else pair_.add_to(f.fx.data(), f.fz.data());
 }
 
 double LatticeSprings::potential_energy(const StageView& s) const {

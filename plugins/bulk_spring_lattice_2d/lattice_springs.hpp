@@ -38,18 +38,21 @@ public:
     void add_forces(const StageView& s, ForceView& f) override;
     bool fuses_with(const Effect& next) const override;
     void add_forces_with(Effect& next, const StageView& s, ForceView& f) override;
+    /// Writes the summed bond forces on the nodes instead of adding them (no zeroing needed).
+    void set_forces_with(Effect* next, const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override;
 
 private:
-    /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given.
-    void add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f);
+    /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given, added
+    /// onto f or written into it (`overwrite`).
+    void add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f, bool overwrite = false);
 
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;
     double stiffness_;
     Law law_;
     PairForces pair_;            // scratch: this evaluation's per-bond forces
-    std::vector<double> delta_;  // scratch: r^2/l^2 - 1 of one family's bonds
+    std::array<std::vector<double>, 4> inverse_l2_;  // per family: 1/l^2 of each bond, 0 on masked pairs
 };
 
 }  // namespace frictionlab

@@ -10,36 +10,64 @@ namespace frictionlab {
 namespace {
 
 // The stage combinations, one pass each over one part of the state: the positions (whose rate k is
-// the stage's velocities) or the rest (whose rate is System::accelerations()). The sum is formed
-// as ((k1 + 2 k2) + 2 k3) + k4, in the order the textbook expression y + h/6 (k1 + 2 k2 + 2 k3 + k4)
-// evaluates left to right, so the step rounds exactly like it.
+// the stage's velocities), the velocities (whose rate is System::forces() times the inverse masses,
+// formed here as accelerations() would form it) or the aux variables (whose rate is System::forces()
+// as it is). The sum is formed as ((k1 + 2 k2) + 2 k3) + k4, in the order the textbook expression
+// y + h/6 (k1 + 2 k2 + 2 k3 + k4) evaluates left to right, so the step rounds exactly like it.
+
+/// k[i], or the force k[i] times inverse_mass[i] (per_mass).
+template <bool per_mass>
+[[gnu::always_inline]] inline double rate(const double* __restrict k, const double* __restrict inverse_mass, Index i) {
+    if constexpr (per_mass) return k[i] * inverse_mass[i];
+    return k[i];
+}
 
 /// sum = k1, stage = y + c k1.
-FRICTIONLAB_HOT_KERNEL
-void first_stage(const double* __restrict y, const double* __restrict k, double c, Index n, double* __restrict stage,
-                 double* __restrict sum) {
+template <bool per_mass>
+[[gnu::always_inline]] inline void first(const double* __restrict y, const double* __restrict k,
+                                         const double* __restrict inverse_mass, double c, Index n,
+                                         double* __restrict stage, double* __restrict sum) {
     for (Index i = 0; i < n; ++i) {
-        sum[i] = k[i];
-        stage[i] = y[i] + c * k[i];
+        const double r = rate<per_mass>(k, inverse_mass, i);
+        sum[i] = r;
+        stage[i] = y[i] + c * r;
     }
 }
 
 /// sum += 2 k, stage = y + c k.
-FRICTIONLAB_HOT_KERNEL
-void middle_stage(const double* __restrict y, const double* __restrict k, double c, Index n, double* __restrict stage,
-                  double* __restrict sum) {
+template <bool per_mass>
+[[gnu::always_inline]] inline void middle(const double* __restrict y, const double* __restrict k,
+                                          const double* __restrict inverse_mass, double c, Index n,
+                                          double* __restrict stage, double* __restrict sum) {
     for (Index i = 0; i < n; ++i) {
-        sum[i] = sum[i] + 2.0 * k[i];
-        stage[i] = y[i] + c * k[i];
+        const double r = rate<per_mass>(k, inverse_mass, i);
+        sum[i] = sum[i] + 2.0 * r;
+        stage[i] = y[i] + c * r;
     }
 }
 
 /// stage = y + c (sum + k4).
-FRICTIONLAB_HOT_KERNEL
-void last_stage(const double* __restrict y, const double* __restrict k, double c, Index n, double* __restrict stage,
-                const double* __restrict sum) {
-    for (Index i = 0; i < n; ++i) stage[i] = y[i] + c * (sum[i] + k[i]);
+template <bool per_mass>
+[[gnu::always_inline]] inline void last(const double* __restrict y, const double* __restrict k,
+                                        const double* __restrict inverse_mass, double c, Index n,
+                                        double* __restrict stage, double* __restrict sum) {
+    for (Index i = 0; i < n; ++i) stage[i] = y[i] + c * (sum[i] + rate<per_mass>(k, inverse_mass, i));
 }
+
+// Each combination in both forms, cloned per ISA (the bodies are inlined into each clone).
+#define FRICTIONLAB_RK4_STAGE(name, body, per_mass)                                                          \
+    FRICTIONLAB_HOT_KERNEL                                                                                \
+    void name(const double* y, const double* k, const double* inverse_mass, double c, Index n, double* stage, \
+              double* sum) {                                                                              \
+        body<per_mass>(y, k, inverse_mass, c, n, stage, sum);                                             \
+    }
+FRICTIONLAB_RK4_STAGE(first_stage, first, false)
+FRICTIONLAB_RK4_STAGE(first_stage_per_mass, first, true)
+FRICTIONLAB_RK4_STAGE(middle_stage, middle, false)
+FRICTIONLAB_RK4_STAGE(middle_stage_per_mass, middle, true)
+FRICTIONLAB_RK4_STAGE(last_stage, last, false)
+FRICTIONLAB_RK4_STAGE(last_stage_per_mass, last, true)
+#undef FRICTIONLAB_RK4_STAGE
 
 }  // namespace
 
@@ -51,29 +79,32 @@ double Rk4::step(System& system, double max_dt) {
     const double h = std::min(dt_, max_dt);
     const double t = system.time();
     const Eigen::VectorXd& y = system.y();
-    // k = [velocities of the stage | accelerations and aux rates]: the positions' rate is read
-    // from the stage itself, never copied. Positions are y[0, half), the rest y[half, size).
-    const Index size = y.size(), half = 2 * system.layout().nodes, rest = size - half;
+    // k = [velocities of the stage | forces and aux rates]: the positions' rate is read from the
+    // stage itself, never copied, and the forces become accelerations within the stage passes.
+    // Positions are y[0, 2N), velocities y[2N, 4N), aux variables y[4N, size).
+    const Index n = system.layout().nodes, size = y.size(), half = 2 * n, rest = size - half, aux = rest - half;
     if (stage_.size() != size) stage_.resize(size), sum_.resize(size), rate_.resize(rest);
-    const double* y0 = y.data();
+    const double *y0 = y.data(), *inverse_mass = system.inverse_mass().data();
     double *stage = stage_.data(), *sum = sum_.data(), *rate = rate_.data();
-    // One stage: positions with the stage's velocities `v`, then the rest with the new rates (in this
-    // order, as the rest overwrites the stage's velocities).
-    auto combine = [&](auto kernel, const double* v, double c) {
-        kernel(y0, v, c, half, stage, sum);
-        kernel(y0 + half, rate, c, rest, stage + half, sum + half);
+    // One stage: positions with the stage's velocities `v`, then the velocities (x, then z) and the
+    // aux variables with the new rates (in this order, as the rest overwrites the stage's velocities).
+    auto combine = [&](auto kernel, auto kernel_per_mass, const double* v, double c) {
+        kernel(y0, v, nullptr, c, half, stage, sum);
+        for (Index p = half; p < 2 * half; p += n)
+            kernel_per_mass(y0 + p, rate + (p - half), inverse_mass, c, n, stage + p, sum + p);
+        kernel(y0 + 2 * half, rate + half, nullptr, c, aux, stage + 2 * half, sum + 2 * half);
     };
 
     // The last argument is each stage's quadrature weight, for work accounting (energy bookkeeping).
     system.begin_step();
-    system.accelerations(t, y, rate_, h / 6);
-    combine(first_stage, y0 + half, 0.5 * h);
-    system.accelerations(t + 0.5 * h, stage_, rate_, h / 3);
-    combine(middle_stage, stage + half, 0.5 * h);
-    system.accelerations(t + 0.5 * h, stage_, rate_, h / 3);
-    combine(middle_stage, stage + half, h);
-    system.accelerations(t + h, stage_, rate_, h / 6);
-    combine(last_stage, stage + half, h / 6.0);
+    system.forces(t, y, rate_, h / 6);
+    combine(first_stage, first_stage_per_mass, y0 + half, 0.5 * h);
+    system.forces(t + 0.5 * h, stage_, rate_, h / 3);
+    combine(middle_stage, middle_stage_per_mass, stage + half, 0.5 * h);
+    system.forces(t + 0.5 * h, stage_, rate_, h / 3);
+    combine(middle_stage, middle_stage_per_mass, stage + half, h);
+    system.forces(t + h, stage_, rate_, h / 6);
+    combine(last_stage, last_stage_per_mass, stage + half, h / 6.0);
     system.accept_swap(t + h, stage_);  // stage_ is all overwritten at the next step
     return h;
 }

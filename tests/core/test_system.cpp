@@ -116,6 +116,21 @@ TEST(System, AccelerationsAreTheDerivativeAfterTheVelocities) {
     EXPECT_EQ(p.system.evaluations(), 2);
 }
 
+TEST(System, ForcesAreTheAccelerationsTimesTheMasses) {
+    Pipeline p(false);
+    Eigen::VectorXd a(3), f = Eigen::VectorXd::Constant(3, 99.0);  // not zeroed by the caller
+    p.system.accelerations(0.5, p.y, a);
+    p.system.forces(0.5, p.y, f);
+    ASSERT_EQ(p.system.inverse_mass().size(), 1);
+    EXPECT_EQ(p.system.inverse_mass()(0), 0.5);
+    // The product an integrator forms is accelerations() bit for bit; aux rates are as they are.
+    EXPECT_EQ(f(0) * p.system.inverse_mass()(0), a(0));
+    EXPECT_EQ(f(1) * p.system.inverse_mass()(0), a(1));
+    EXPECT_NE(f(0), a(0));
+    EXPECT_EQ(f(2), a(2));
+    EXPECT_EQ(p.system.evaluations(), 2);
+}
+
 TEST(System, WorkAccountingSplitsAFusedPairAndChangesNoForce) {
     Pipeline plain(false), accounted(true);
     plain.system.derivative(0, plain.y, plain.dy, 0.25);

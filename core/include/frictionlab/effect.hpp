@@ -36,6 +36,17 @@ public:
         add_forces(s, f);
         next.add_forces(s, f);
     }
+    /// The first evaluation of the pipeline: this effect's forces (with `next`'s, fused, if it is
+    /// given: only if fuses_with(*next)) written into f.fx and f.fz whatever they hold, and its aux
+    /// rates added onto f.aux_rate, which holds zeros. The same values as add_forces() (or
+    /// add_forces_with()) onto zeroed arrays, so an effect that covers every node may write instead
+    /// of adding and spare the system the zeroing. Default: zero them, then add.
+    virtual void set_forces_with(Effect* next, const StageView& s, ForceView& f) {
+        f.fx.setZero();
+        f.fz.setZero();
+        if (next) add_forces_with(*next, s, f);
+        else add_forces(s, f);
+    }
 
     /// Called at the start of every stage of the run, before any step of it.
     virtual void begin_stage(const StageInfo&, const StageView&) {}

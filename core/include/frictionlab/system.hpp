@@ -41,6 +41,12 @@ public:
     /// i.e. derivative() without the copy of y's velocities into dy's first half. For integrators
     /// that read those velocities from y itself (RK4's fused stages); same arguments, same values.
     void accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight = 0);
+    /// accelerations() before the division by the masses: [F | aux rates], the forces in N. For
+    /// integrators that divide by the masses (inverse_mass()) within their own pass over the rates;
+    /// F_i * inverse_mass()(i) is then exactly what accelerations() gives. Counts as an evaluation.
+    void forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight = 0);
+    /// 1/m of every node.
+    const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
     /// dy/dt with only one active effect of the pipeline (index into pipeline()), for diagnostics
     /// such as the stability estimate that names the effect limiting the step.
     void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
@@ -89,6 +95,8 @@ private:
     /// derivative() and accelerations() without counting an evaluation (refresh() uses them).
     void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
     void compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight);
+    /// compute_accelerations() before the division by the masses.
+    void compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
     /// Pairs each active effect with the next one where it fuses_with() it.
     void plan_evaluations();
     /// Forces to accelerations, F/m.

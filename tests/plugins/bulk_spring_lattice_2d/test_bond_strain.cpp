@@ -1,7 +1,8 @@
 // The geometric spring law as the lattice evaluates it (bond_strain.hpp): the stretch from the
-// displacement relative to the rest vector, and 1 - l/r by a Taylor series within its bound or by
+// displacement relative to the rest vector, and 1 - l/r by a polynomial within its bound or by
 // the cancellation-free closed form beyond it, against Li2020 Eq. 1 evaluated in quad precision.
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -32,22 +33,44 @@ double reference_tension_factor(double dx, double dz, double l) {
 double tension_factor(double dx, double dz, const BondFamily& b) {
     const double l = b.rest_length;
     const double delta = squared_stretch(dx, dz, b.ref_x, b.ref_z, b.rest_defect, 1 / (l * l));
-    return std::abs(delta) <= series_bound ? tension_factor_series(delta) : tension_factor_exact(delta);
+    return std::abs(delta) <= series_bound ? TensionSeries(1.0)(delta) : tension_factor_exact(delta);
 }
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
-TEST(BondStrain, SeriesMatchesTheClosedFormWithinItsBound) {
+/// k (1 - l/r) in quad precision from delta.
+double exact_tension(double delta, double k) {
+    const Quad w = 1 / inverse_sqrt(1 + Quad(delta));  // sqrt(1 + delta)
+    return static_cast<double>(Quad(k) * Quad(delta) / (w * (1 + w)));
+}
+
+/// Worst relative error of TensionSeries(k) against the exact law on n + 1 deltas spanning the bound.
+double worst_series_error(double k, int n) {
+    const TensionSeries series(k);
     double worst = 0;
-    for (int i = -4000; i <= 4000; ++i) {
-        const double delta = series_bound * i / 4000.0;
+    for (int i = -n / 2; i <= n / 2; ++i) {
+        const double delta = series_bound * (2.0 * i / n);
         if (delta == 0) continue;
-        const Quad w = 1 / inverse_sqrt(1 + Quad(delta));  // sqrt(1 + delta)
-        const double exact = static_cast<double>(Quad(delta) / (w * (1 + w)));
-        worst = std::max(worst, std::abs(tension_factor_series(delta) - exact) / std::abs(exact));
+        const double exact = exact_tension(delta, k);
+        worst = std::max(worst, std::abs(series(delta) - exact) / std::abs(exact));
     }
-    EXPECT_LE(worst, 4 * eps);  // truncation 0.05 ulp, the rest Horner rounding
-    EXPECT_EQ(tension_factor_series(0.0), 0.0);
+    return worst;
+}
+
+TEST(BondStrain, SeriesMatchesTheClosedFormWithinItsBound) {
+    // Truncation 0.42 ulp at most, the rest Horner rounding; the whole range, densely.
+    EXPECT_LE(worst_series_error(1.0, 2'000'000), 4 * eps);
+    EXPECT_EQ(TensionSeries(1.0)(0.0), 0.0);
+    // Near the bound, where the truncation error peaks, and at the smallest strains.
+    for (const double delta : {series_bound, -series_bound, std::nextafter(series_bound, 0.0), 1e-300, -1e-12})
+        EXPECT_LE(std::abs(TensionSeries(1.0)(delta) - exact_tension(delta, 1.0)),
+                  4 * eps * std::abs(exact_tension(delta, 1.0))) << delta;
+}
+
+/// The stiffness folded into the coefficients (as the lattice uses it: K and K/2) costs at most one
+/// more rounding of each.
+TEST(BondStrain, SeriesWithStiffnessFoldedIn) {
+    for (const double k : {2.6e7, 1.3e7, 3.0, 1e-3}) EXPECT_LE(worst_series_error(k, 200'000), 5 * eps) << k;
 }
 
 /// Bonds of every family with random displacements u of relative size 10^[-9, log10(max)]: the
@@ -90,6 +113,30 @@ TEST(BondStrain, RestDefectMakesTheRestVectorExactlyRestLength) {
         // At the rest vector the law gives no force, to round-off of the rest length.
         EXPECT_LE(std::abs(tension_factor(b.ref_x, b.ref_z, b)), 4 * eps);
     }
+}
+
+/// The straight families' shortcut (RestVector::along_x / along_z) leaves out only exact zeros: the
+/// same bits as the general form, for any displacement.
+TEST(BondStrain, StraightBondShortcutGivesTheSameBits) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-1e-3, 1e-3);
+    int straight = 0;
+    for (const BondFamily& b : LatticeGrid{41, 9, 0.0025}.families()) {
+        const RestVector shape = rest_vector_of(b.ref_x, b.ref_z, b.rest_defect);
+        if (shape == RestVector::any) continue;
+        ++straight;
+        const double l = b.rest_length, inverse_l2 = 1 / (l * l);
+        for (int n = 0; n < 10000; ++n) {
+            const double dx = b.ref_x + u(rng) * l, dz = b.ref_z + u(rng) * l;
+            const double general = squared_stretch(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2);
+            const double shortcut =
+                shape == RestVector::along_x
+                    ? squared_stretch<RestVector::along_x>(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2)
+                    : squared_stretch<RestVector::along_z>(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2);
+            ASSERT_EQ(std::memcmp(&general, &shortcut, sizeof(double)), 0) << dx << ", " << dz;
+        }
+    }
+    EXPECT_EQ(straight, 2) << "the horizontal and vertical families";
 }
 
 TEST(BondStrain, StretchIsRMinusL) {

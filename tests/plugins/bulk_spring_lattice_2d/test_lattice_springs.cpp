@@ -172,6 +172,22 @@ TEST(LatticeSprings, FusedWithTheBondDampingEqualsBothPasses) {
     }
 }
 
+/// As the first effect of the pipeline the springs write the node forces (Effect::set_forces_with):
+/// whatever the arrays held, they then hold the values adding onto zeros gives, alone and fused.
+TEST(LatticeSprings, WrittenForcesEqualThoseAddedOntoZeros) {
+    LatticeFixture f;
+    Eigen::VectorXd y = randomly_deformed(f, 1e-4 * f.body().spacing, 5);
+    for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+    const auto written = [&](Effect* next) {
+        Eigen::VectorXd dy = Eigen::VectorXd::Constant(f.layout().size(), 7.5);  // not zeroed
+        ForceView fv = forces_of(dy, f.layout());
+        f.springs().set_forces_with(next, view_of(y, f.layout(), 0.0), fv);
+        return Eigen::VectorXd(dy.segment(2 * f.nodes(), 2 * f.nodes()));
+    };
+    EXPECT_EQ(written(nullptr), f.forces(f.springs(), y));
+    EXPECT_EQ(written(&f.damping()), f.fused_forces(y));
+}
+
 TEST(LatticeSprings, FuseOnlyGeometricSpringsWithFullVectorDampingAfterThem) {
     LatticeFixture geometric;
     EXPECT_FALSE(geometric.damping().fuses_with(geometric.springs()));  // the order of the pipeline counts
