@@ -144,7 +144,7 @@ bool plot_and_wait(const std::vector<std::string>& arguments) {
 }
 
 /// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
-int study(const std::filesystem::path& file, std::string output, bool force, bool check_only, const Common& common,
+int study(const std::filesystem::path& file, std::string output, const fl::RunOptions& options, bool check_only, const Common& common,
           fl::Registry& registry, spdlog::logger& log) {
     fl::Diagnostics diagnostics;
     const auto spec = fl::read_study(file, diagnostics);
@@ -166,7 +166,7 @@ int study(const std::filesystem::path& file, std::string output, bool force, boo
         std::cout << file.string() << ": ok (" << scenes.size() << " scenes)\n";
         return fl::exit_code::ok;
     }
-    const auto result = fl::run_study(spec, scenes, output, registry, log, force);
+    const auto result = fl::run_study(spec, scenes, output, registry, log, options);
     fl::write_study_csv(result, spec, std::filesystem::path(output) / "study.csv");
     fl::write_study_markdown(result, spec, std::filesystem::path(output) / "study.md");
     log.info("study: {} cases; table in {}", result.rows.size(), (std::filesystem::path(output) / "study.md").string());
@@ -175,6 +175,16 @@ int study(const std::filesystem::path& file, std::string output, bool force, boo
         return fl::exit_code::run_failure;
     }
     return fl::exit_code::ok;
+}
+
+/// The flags that decide what a run may replace and risk; `--force` once meant both and is refused.
+void attach_run_flags(CLI::App& cmd, fl::RunOptions& options, bool& removed_force) {
+    cmd.add_flag("--overwrite", options.overwrite,
+                 "Replace the output directory if it exists and FrictionLab created it (never the working "
+                 "directory, a parent of the scene, a file or a device)");
+    cmd.add_flag("--allow-unstable-step", options.allow_unstable_step,
+                 "Run a time step above the estimated stable one");
+    cmd.add_flag("--force", removed_force)->group("");  // hidden: explained when given
 }
 
 }  // namespace
@@ -190,14 +200,15 @@ int main(int argc, char** argv) {
     std::filesystem::path scene_file;
     std::vector<std::string> overrides;
     std::string output;
-    bool force = false;
+    fl::RunOptions options;
+    bool removed_force = false;
     std::string selector, format = "text";
 
     auto* run = app.add_subcommand("run", "Run a scene");
     run->add_option("scene", scene_file, "Scene file (YAML)")->required();
     run->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
-    run->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
-    run->add_flag("--force", force, "Replace the output directory if it exists, and run a time step above the estimated stable one");
+    auto* run_output = run->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
+    attach_run_flags(*run, options, removed_force);
     common.attach(*run);
 
     auto* check = app.add_subcommand("check", "Validate a scene; report every error with file:line:column");
@@ -226,10 +237,10 @@ int main(int argc, char** argv) {
     auto* study_cmd = app.add_subcommand(
         "study", "Run an accuracy study: each case against a converged reference; study.csv, study.md, work-precision plot");
     study_cmd->add_option("study", study_file, "Study file (YAML)")->required();
-    study_cmd->add_option("-o,--output", output, "Output directory (default: out/<study file name>)");
+    auto* study_output = study_cmd->add_option("-o,--output", output, "Output directory (default: out/<study file name>)");
     bool check_only = false;
     study_cmd->add_flag("--check", check_only, "Only validate the study and the scene of every case");
-    study_cmd->add_flag("--force", force, "Replace the output directory if it exists, and run time steps above the estimated stable one");
+    attach_run_flags(*study_cmd, options, removed_force);
     common.attach(*study_cmd);
 
     try {
@@ -239,6 +250,15 @@ int main(int argc, char** argv) {
     }
 
     auto log = common.logger();
+    if (removed_force) {
+        log->error("--force is gone: --overwrite replaces an output directory FrictionLab created, "
+                   "--allow-unstable-step runs a time step above the estimated stable one");
+        return fl::exit_code::bad_input;
+    }
+    if ((run_output->count() > 0 || study_output->count() > 0) && output.empty()) {
+        log->error("-o/--output is empty: name an output directory");
+        return fl::exit_code::bad_input;
+    }
     try {
         fl::Registry registry;
         if (*run || *check) {
@@ -249,15 +269,15 @@ int main(int argc, char** argv) {
                 std::cout << scene_file.string() << ": ok\n";
                 return fl::exit_code::ok;
             }
-            const bool live = isatty(STDERR_FILENO) && !common.quiet;
-            const auto summary = fl::run_scene(*scene, registry, *log, {force, live});
+            options.live_progress = isatty(STDERR_FILENO) && !common.quiet;
+            const auto summary = fl::run_scene(*scene, registry, *log, options);
             log->info("done: {} steps, {:.6g} s simulated in {:.3g} s wall ({:.3g} steps/s); outputs in {}",
                       summary.steps, summary.simulated_time, summary.wall_seconds,
                       summary.steps / std::max(summary.wall_seconds, 1e-9), scene->output_directory.string());
             return fl::exit_code::ok;
         }
         if (*plot_cmd) return plot(runs, output);
-        if (*study_cmd) return study(study_file, output, force, check_only, common, registry, *log);
+        if (*study_cmd) return study(study_file, output, options, check_only, common, registry, *log);
         fl::load_plugins(registry, common.directories({}));
         if (*list) {
             for (const auto* t : all_types(registry))

@@ -15,6 +15,7 @@
 
 #include "frictionlab/errors.hpp"
 #include "frictionlab/json.hpp"
+#include "frictionlab/output_directory.hpp"
 #include "frictionlab/registry.hpp"
 #include "frictionlab/simulation.hpp"
 #include "frictionlab/system.hpp"
@@ -159,9 +160,9 @@ class SceneRun {
 public:
     SceneRun(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options)
         : scene_(scene), registry_(registry), log_(log), options_(options), sim_(scene, registry, log) {
-        sim_.refuse_unstable_steps(!options.force);
+        sim_.refuse_unstable_steps(!options.allow_unstable_step);
         // After the components accepted their parameters, so a refusal leaves no directory behind.
-        prepare_output_directory(scene.output_directory, options.force);
+        prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
         output_ = scene.output_directory;
         for (const auto& o : scene.observers) {
             auto observer = located_in_scene(
@@ -285,17 +286,6 @@ private:
 };
 
 }  // namespace
-
-void prepare_output_directory(const std::filesystem::path& dir, bool force) {
-    if (std::filesystem::exists(dir)) {
-        if (!force)
-            throw InputError(fmt::format("output directory '{}' already exists; choose another or pass --force to "
-                                         "replace it",
-                                         dir.string()));
-        std::filesystem::remove_all(dir);
-    }
-    std::filesystem::create_directories(dir);
-}
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {
     return SceneRun(scene, registry, log, options).execute();

@@ -114,7 +114,7 @@ void Simulation::check_stability(const StageInfo& stage) {
     const std::string message = fmt::format(
         "stage '{}': the time step dt = {:.3g} s is above the estimated stable step {:.3g} s of the {} integrator "
         "for this system (largest |eigenvalue| {:.3g} 1/s, which times dt must stay below {:.4g}); the limit is set by "
-        "{} (alone: {:.3g} 1/s). Use a smaller integrator.dt, or --force to run anyway",
+        "{} (alone: {:.3g} 1/s). Use a smaller integrator.dt, or --allow-unstable-step to run anyway",
         stage.name, dt, e.dt_limit, scene_.integrator.type, e.lambda_max, e.lambda_max * e.dt_limit, e.limiting_effect,
         e.limiting_lambda);
     if (refuse_unstable_) throw InputError(message);

@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/errors.hpp"
+#include "frictionlab/output_directory.hpp"
 
 namespace frictionlab {
 
@@ -105,8 +106,8 @@ void write_file(const std::filesystem::path& file, const std::string& text) {
 }  // namespace
 
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
-                      const Registry& registry, spdlog::logger& log, bool force) {
-    prepare_output_directory(output, force);
+                      const Registry& registry, spdlog::logger& log, const RunOptions& options) {
+    prepare_output_directory(output, options.overwrite, {study.scene});
     std::filesystem::create_directories(output / "cases");
     std::vector<YAML::Node> resolved;
     for (const auto& scene : scenes) resolved.push_back(YAML::Load(scene.resolved_yaml));
@@ -123,7 +124,7 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
         row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
         log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
         try {
-            row.summary = run_scene(scene, registry, log, {force, false});
+            row.summary = run_scene(scene, registry, log, {false, options.allow_unstable_step, false});
             row.outcome = read_case_outcome(scene.output_directory, scene.stages.front().duration, load_start(scene));
         } catch (const std::exception& e) {
             if (k == 0) throw RunError(fmt::format("the reference run failed: {}", e.what()));

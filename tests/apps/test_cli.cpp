@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "cli.hpp"
+#include "frictionlab/output_directory.hpp"
 
 namespace {
 
@@ -15,6 +16,8 @@ namespace fs = std::filesystem;
 
 using frictionlab::testing::frictionlab;
 using frictionlab::testing::read_text;
+
+std::string run_marker() { return frictionlab::output_marker_file; }
 
 class Cli : public ::testing::Test {
 protected:
@@ -72,8 +75,57 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
 
     auto again = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
     EXPECT_EQ(again.code, 2);
-    EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
-    EXPECT_EQ(frictionlab("run -q --force " + scene("tiny_lattice.yaml"), dir_).code, 0);
+    EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
+    EXPECT_EQ(frictionlab("run -q --overwrite " + scene("tiny_lattice.yaml"), dir_).code, 0);
+}
+
+TEST_F(Cli, OverwriteReplacesOnlyWhatFrictionLabCreated) {
+    const std::string tiny = scene("tiny_lattice.yaml");
+    // The working directory, even with a FrictionLab run.yaml in it: nothing is deleted.
+    fs::copy_file(tiny, dir_ / "scene.yaml");
+    std::ofstream(dir_ / "run.yaml") << "framework: frictionlab\n";
+    auto here = frictionlab("run -q scene.yaml -o . --overwrite", dir_);
+    EXPECT_EQ(here.code, 2) << here.output;
+    EXPECT_NE(here.output.find("holds the working directory"), std::string::npos) << here.output;
+    EXPECT_TRUE(fs::exists(dir_ / "scene.yaml"));
+
+    // A parent of the scene, and a folder of the user's: refused, left as they were.
+    fs::create_directories(dir_ / "mine" / "scenes");
+    fs::copy_file(tiny, dir_ / "mine" / "scenes" / "s.yaml");
+    std::ofstream(dir_ / "mine" / "notes.txt") << "keep me\n";
+    std::ofstream(dir_ / "mine" / run_marker()) << "\n";
+    auto parent = frictionlab("run -q mine/scenes/s.yaml -o mine --overwrite", dir_);
+    EXPECT_EQ(parent.code, 2) << parent.output;
+    EXPECT_NE(parent.output.find("holds 'mine/scenes/s.yaml'"), std::string::npos) << parent.output;
+    fs::remove(dir_ / "mine" / run_marker());
+    auto foreign = frictionlab("run -q scene.yaml -o mine --overwrite", dir_);
+    EXPECT_EQ(foreign.code, 2) << foreign.output;
+    EXPECT_NE(foreign.output.find("FrictionLab did not create it"), std::string::npos) << foreign.output;
+    EXPECT_EQ(read_text(dir_ / "mine" / "notes.txt"), "keep me\n");
+
+    // A file or a device is never replaced by a directory.
+    std::ofstream(dir_ / "plain") << "data\n";
+    auto file = frictionlab("run -q scene.yaml -o plain --overwrite", dir_);
+    EXPECT_EQ(file.code, 2) << file.output;
+    EXPECT_NE(file.output.find("is not a directory"), std::string::npos) << file.output;
+    EXPECT_EQ(frictionlab("run -q scene.yaml -o /dev/null --overwrite", dir_).code, 2);
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));
+
+    // Its own output is replaced, and an empty -o does not fall back to the scene's output.
+    EXPECT_EQ(frictionlab("run -q scene.yaml -o out", dir_).code, 0);
+    EXPECT_EQ(frictionlab("run -q scene.yaml -o out --overwrite", dir_).code, 0);
+    EXPECT_TRUE(fs::exists(dir_ / "out" / run_marker()));
+    auto empty = frictionlab("run -q scene.yaml -o ''", dir_);
+    EXPECT_EQ(empty.code, 2) << empty.output;
+    EXPECT_FALSE(fs::exists(dir_ / "tiny_out"));
+}
+
+TEST_F(Cli, TheOldForceFlagIsRefusedNamingItsTwoSuccessors) {
+    auto r = frictionlab("run -q --force " + scene("tiny_lattice.yaml"), dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("--overwrite"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--allow-unstable-step"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "tiny_out"));
 }
 
 TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
@@ -102,8 +154,8 @@ TEST_F(Cli, AStepAboveTheStableLimitIsRefused) {
 }
 
 TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
-    // --force runs the refused step anyway, so the run itself fails.
-    auto r = frictionlab("run -q --force " + scene("unstable.yaml"), dir_);
+    // --allow-unstable-step runs the refused step anyway, so the run itself fails.
+    auto r = frictionlab("run -q --allow-unstable-step " + scene("unstable.yaml"), dir_);
     EXPECT_EQ(r.code, 1) << r.output;
     EXPECT_NE(r.output.find("block"), std::string::npos) << r.output;  // says where it went wrong
     EXPECT_NE(r.output.find("step"), std::string::npos) << r.output;

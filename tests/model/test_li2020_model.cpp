@@ -221,7 +221,7 @@ TEST_F(StableStep, AStepAboveTheLimitIsRefusedNamingTheEffectThatSetsIt) {
     } catch (const InputError& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("bond damping"), std::string::npos) << message;
-        EXPECT_NE(message.find("--force"), std::string::npos) << message;
+        EXPECT_NE(message.find("--allow-unstable-step"), std::string::npos) << message;
     }
 }
 

@@ -122,7 +122,7 @@ TEST(Study, TinyStudyThroughTheCommand) {
 
     const auto again = frictionlab("study -q " STUDY_FILES "/tiny_study.yaml -o out", dir);
     EXPECT_EQ(again.code, 2);
-    EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
+    EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
 }
 
 class BadStudy : public ::testing::Test {

@@ -44,8 +44,9 @@ struct RunView {
 };
 
 struct RunOptions {
-    bool force = false;         // replace an existing output directory
-    bool live_progress = false; // one live progress line (terminal); else periodic log lines
+    bool overwrite = false;            // replace an existing output directory that FrictionLab created
+    bool allow_unstable_step = false;  // run a time step above the estimated stable one
+    bool live_progress = false;        // one live progress line (terminal); else periodic log lines
 };
 
 struct RunSummary {
@@ -57,9 +58,6 @@ struct RunSummary {
 
 /// Throws RunError on failure, after every observer has closed its outputs.
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options);
-
-/// Creates `dir`; one that exists is an InputError unless `force`, which replaces it.
-void prepare_output_directory(const std::filesystem::path& dir, bool force);
 
 /// The framework version, e.g. "0.1.0".
 std::string framework_version();

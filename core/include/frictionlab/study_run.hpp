@@ -33,11 +33,11 @@ struct StudyResult {
     std::uint64_t seed = 0;      // the base scene's (a case may set its own)
 };
 
-/// The study's output directory is created (replaced with `force`; that also runs a time step
-/// above the estimated stable one). A case that fails is a row of NaN errors with the reason in
+/// The study's output directory is created (replaced with `options.overwrite`); each case runs
+/// into a new directory below it, above the estimated stable step with `options.allow_unstable_step`. A case that fails is a row of NaN errors with the reason in
 /// its note; a failing reference throws RunError.
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
-                      const Registry& registry, spdlog::logger& log, bool force);
+                      const Registry& registry, spdlog::logger& log, const RunOptions& options);
 
 /// study.csv: case, family, knobs, wall_seconds, cpu_seconds, steps, evaluations, the errors, note.
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);

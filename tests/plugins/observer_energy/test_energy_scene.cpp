@@ -25,9 +25,9 @@ namespace {
 namespace fs = std::filesystem;
 const std::string scene_file = std::string(ENERGY_SCENES) + "/energy_balance.yaml";
 
-/// `frictionlab run -q --force <scene> <args>` in dir; returns the energy table.
+/// `frictionlab run -q --overwrite --allow-unstable-step <scene> <args>` in dir; returns the energy table.
 testing::Columns run_cli(const fs::path& dir, const std::string& args, const std::string& output) {
-    const auto r = testing::frictionlab("run -q --force '" + scene_file + "' --set output=" + output + " " + args, dir);
+    const auto r = testing::frictionlab("run -q --overwrite --allow-unstable-step '" + scene_file + "' --set output=" + output + " " + args, dir);
     EXPECT_EQ(r.code, 0) << r.output;
     return testing::read_csv(dir / output / "energy.csv");
 }
@@ -166,7 +166,7 @@ std::vector<bool> work_accounting_seen(bool with_energy_observer) {
     if (with_energy_observer) s.scene.observers.push_back(spec);
     else s.scene.observers = {spec};
     s.scene.output_directory = testing::work_directory() / "out";
-    run_scene(s.scene, s.registry, s.log, RunOptions{true, false});
+    run_scene(s.scene, s.registry, s.log, RunOptions{true, true, false});
     return seen;
 }
 
