@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -18,8 +19,14 @@
 #include "frictionlab/registry.hpp"
 #include "frictionlab/run.hpp"
 #include "frictionlab/scene.hpp"
+#include "frictionlab/campaign_file.hpp"
+#include "frictionlab/campaign_mpi.hpp"
+#include "frictionlab/campaign_runner.hpp"
+#include "frictionlab/output_directory.hpp"
 #include "frictionlab/study.hpp"
 #include "frictionlab/study_run.hpp"
+#include "frictionlab/sweep.hpp"
+#include "frictionlab/sweep_tables.hpp"
 
 namespace fl = frictionlab;
 
@@ -52,6 +59,14 @@ struct Common {
     }
 };
 
+/// Prints every diagnostic of a file that has errors.
+int report_errors(const fl::Diagnostics& diagnostics, const std::filesystem::path& file) {
+    std::cerr << diagnostics.format();
+    std::cerr << diagnostics.list().size() << (diagnostics.list().size() == 1 ? " error" : " errors") << " in "
+              << file.string() << "\n";
+    return fl::exit_code::bad_input;
+}
+
 /// Reads and validates a scene, loading the plugins it needs. Prints every diagnostic and returns
 /// nothing if the scene has any error.
 std::optional<fl::Scene> read_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
@@ -62,9 +77,7 @@ std::optional<fl::Scene> read_scene(const std::filesystem::path& file, const std
     fl::load_plugins(registry, common.directories(scene_paths));
     fl::Scene scene = document.validate(registry, diagnostics);
     if (!diagnostics.empty()) {
-        std::cerr << diagnostics.format();
-        std::cerr << diagnostics.list().size() << (diagnostics.list().size() == 1 ? " error" : " errors") << " in "
-                  << file.string() << "\n";
+        report_errors(diagnostics, file);
         return std::nullopt;
     }
     return scene;
@@ -128,6 +141,8 @@ std::vector<std::string> plot_command(const std::vector<std::string>& arguments)
 /// Replaces this process by the plotting script drawing the figures of runs.
 int plot(const std::vector<std::string>& runs, const std::string& output) {
     auto args = runs;
+    if (runs.size() == 1 && std::filesystem::exists(std::filesystem::path(runs.front()) / "sweep.csv"))
+        args = {"--sweep", runs.front()};
     if (!output.empty()) args.insert(args.end(), {"--output", output});
     exec(plot_command(args));
 }
@@ -143,6 +158,48 @@ bool plot_and_wait(const std::vector<std::string>& arguments) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+/// Runs a sweep (`check_only`: validates it), every case an ordinary run, locally on `jobs` cores
+/// or, under an MPI launcher, over the ranks; sweep.csv and events.csv on rank 0.
+int sweep(const std::filesystem::path& file, std::string output, int jobs, const fl::RunOptions& options,
+          bool check_only, const Common& common, fl::Registry& registry, spdlog::logger& log) {
+    const fl::MpiSession mpi;
+    const bool root = fl::mpi_rank() == 0;
+    fl::Diagnostics diagnostics;
+    const auto spec = fl::read_sweep(file, diagnostics);
+    std::vector<fl::CampaignCase> cases;
+    if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
+    if (diagnostics.empty()) {
+        const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics).plugin_paths(diagnostics);
+        fl::load_plugins(registry, common.directories(scene_paths));
+        cases = fl::sweep_cases(spec, output, registry, diagnostics);
+    }
+    if (!diagnostics.empty()) return root ? report_errors(diagnostics, file) : fl::exit_code::bad_input;
+    if (check_only) {
+        if (root) std::cout << file.string() << ": ok (sweep of " << cases.size() << " cases)\n";
+        return fl::exit_code::ok;
+    }
+    if (root) {
+        // A sweep run again into its own directory goes on where it stopped; --overwrite starts afresh.
+        if (options.overwrite || !std::filesystem::exists(output) || !fl::created_by_frictionlab(output))
+            fl::prepare_output_directory(output, options.overwrite, {spec.scene, file});
+    }
+    fl::CampaignOptions campaign;
+    campaign.jobs = jobs > 0 ? jobs : fl::mpi_size() > 1 ? 1 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    campaign.allow_unstable_step = options.allow_unstable_step;
+    campaign.live_progress = root && isatty(STDERR_FILENO) && !common.quiet;
+    if (root)
+        log.info("sweep {}: {} cases, {} at a time{}", file.filename().string(), cases.size(), campaign.jobs,
+                 fl::mpi_size() > 1 ? fmt::format(" on rank 0 and one on each of {} other ranks", fl::mpi_size() - 1) : "");
+    const auto records = fl::run_campaign(cases, output, registry, log, campaign);
+    if (!root) return fl::exit_code::ok;
+    fl::write_sweep_tables(spec, cases, records, output);
+    const auto failed = std::count_if(records.begin(), records.end(), [](const auto& r) { return r.status != "done"; });
+    const auto reused = std::count_if(records.begin(), records.end(), [](const auto& r) { return r.reused; });
+    log.info("sweep: {} cases, {} failed, {} finished earlier; tables in {}", records.size(), failed, reused,
+             (std::filesystem::path(output) / "sweep.csv").string());
+    return failed > 0 ? fl::exit_code::run_failure : fl::exit_code::ok;
+}
+
 /// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
 int study(const std::filesystem::path& file, std::string output, const fl::RunOptions& options, bool check_only, const Common& common,
           fl::Registry& registry, spdlog::logger& log) {
@@ -156,14 +213,9 @@ int study(const std::filesystem::path& file, std::string output, const fl::RunOp
         if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
         scenes = fl::study_scenes(spec, output, registry, diagnostics);
     }
-    if (!diagnostics.empty()) {
-        std::cerr << diagnostics.format();
-        std::cerr << diagnostics.list().size() << (diagnostics.list().size() == 1 ? " error" : " errors") << " in "
-                  << file.string() << "\n";
-        return fl::exit_code::bad_input;
-    }
+    if (!diagnostics.empty()) return report_errors(diagnostics, file);
     if (check_only) {
-        std::cout << file.string() << ": ok (" << scenes.size() << " scenes)\n";
+        std::cout << file.string() << ": ok (study of " << scenes.size() << " scenes)\n";
         return fl::exit_code::ok;
     }
     const auto result = fl::run_study(spec, scenes, output, registry, log, options);
@@ -211,8 +263,8 @@ int main(int argc, char** argv) {
     attach_run_flags(*run, options, removed_force);
     common.attach(*run);
 
-    auto* check = app.add_subcommand("check", "Validate a scene; report every error with file:line:column");
-    check->add_option("scene", scene_file, "Scene file (YAML)")->required();
+    auto* check = app.add_subcommand("check", "Validate a scene, study or sweep; report every error with file:line:column");
+    check->add_option("scene", scene_file, "Scene, study or sweep file (YAML)")->required();
     check->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
     common.attach(*check);
 
@@ -243,6 +295,21 @@ int main(int argc, char** argv) {
     attach_run_flags(*study_cmd, options, removed_force);
     common.attach(*study_cmd);
 
+    std::filesystem::path sweep_file;
+    int jobs = 0;
+    auto* sweep_cmd = app.add_subcommand(
+        "sweep", "Run a campaign: a base scene over a grid, listed cases and seeds; sweep.csv, events.csv. "
+                 "Under mpirun or srun the cases are spread over the ranks");
+    sweep_cmd->add_option("sweep", sweep_file, "Sweep file (YAML)")->required();
+    auto* sweep_output = sweep_cmd->add_option("-o,--output", output,
+                                               "Output directory (default: out/<sweep file name>); run again into "
+                                               "it, finished cases are not run again");
+    sweep_cmd->add_option("-j,--jobs", jobs, "Cases at once on this machine (default: all cores; 1 per MPI rank)")
+        ->check(CLI::PositiveNumber);
+    sweep_cmd->add_flag("--check", check_only, "Only validate the sweep and the scene of every case");
+    attach_run_flags(*sweep_cmd, options, removed_force);
+    common.attach(*sweep_cmd);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -255,12 +322,17 @@ int main(int argc, char** argv) {
                    "--allow-unstable-step runs a time step above the estimated stable one");
         return fl::exit_code::bad_input;
     }
-    if ((run_output->count() > 0 || study_output->count() > 0) && output.empty()) {
+    if ((run_output->count() > 0 || study_output->count() > 0 || sweep_output->count() > 0) && output.empty()) {
         log->error("-o/--output is empty: name an output directory");
         return fl::exit_code::bad_input;
     }
     try {
         fl::Registry registry;
+        if (*check && fl::campaign_file_kind(scene_file) == fl::CampaignFileKind::study)
+            return study(scene_file, output, options, true, common, registry, *log);
+        if (*check && fl::campaign_file_kind(scene_file) == fl::CampaignFileKind::sweep)
+            return sweep(scene_file, output, 0, options, true, common, registry, *log);
+        if (*sweep_cmd) return sweep(sweep_file, output, jobs, options, check_only, common, registry, *log);
         if (*run || *check) {
             if (!output.empty()) overrides.push_back("output=" + output);
             auto scene = read_scene(scene_file, overrides, common, registry);

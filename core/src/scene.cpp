@@ -8,7 +8,7 @@
 #include "frictionlab/registry.hpp"
 #include "scene_overrides.hpp"
 #include "scene_validator.hpp"
-#include "scene_yaml.hpp"
+#include "frictionlab/scene_yaml.hpp"
 
 namespace frictionlab {
 

@@ -8,7 +8,7 @@
 
 #include "frictionlab/diagnostics.hpp"
 #include "frictionlab/scene.hpp"
-#include "scene_yaml.hpp"
+#include "frictionlab/scene_yaml.hpp"
 
 namespace frictionlab::detail {
 

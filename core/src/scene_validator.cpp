@@ -8,8 +8,8 @@
 
 #include "frictionlab/registry.hpp"
 #include "scene_emit.hpp"
-#include "scene_keys.hpp"
-#include "scene_values.hpp"
+#include "frictionlab/scene_keys.hpp"
+#include "frictionlab/scene_values.hpp"
 
 namespace frictionlab::detail {
 

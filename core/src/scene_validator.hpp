@@ -6,7 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/scene.hpp"
-#include "scene_yaml.hpp"
+#include "frictionlab/scene_yaml.hpp"
 
 namespace frictionlab::detail {
 

@@ -1,4 +1,4 @@
-#include "scene_values.hpp"
+#include "frictionlab/scene_values.hpp"
 
 #include <algorithm>
 #include <charconv>

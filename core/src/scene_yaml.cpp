@@ -1,4 +1,4 @@
-#include "scene_yaml.hpp"
+#include "frictionlab/scene_yaml.hpp"
 
 #include <map>
 #include <sstream>

@@ -12,6 +12,13 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
   energy          the energy balance: input, stored, kinetic, dissipated, residual
 and, over all the runs given, precursor_lengths: l/L against F_S/F_N (Li2020 Figs. 7, 8).
 
+    frictionlab plot SWEEP_DIR                 (a directory `frictionlab sweep` wrote)
+
+draws into SWEEP_DIR/plots/ from its sweep.csv and events.csv: sweep_precursor_lengths (l/L against
+F_S/F_N, coloured by case, seeds together: Li2020 Fig. 7), sweep_against_<key> for a numeric varied
+key such as theta (precursor count, first-precursor and global-slip F_S/F_N, mean and seed spread:
+Li2020 Fig. 8) and sweep_loading_curves (every case's F_S against time since loading, overlaid).
+
     frictionlab_plot.py --study STUDY_DIR      (run by `frictionlab study`)
 
 draws work_precision (PNG and SVG) into STUDY_DIR from its study.csv: each error against wall time,
@@ -22,6 +29,7 @@ import argparse
 import csv
 import glob
 import os
+import re
 import sys
 
 import matplotlib
@@ -238,7 +246,87 @@ def work_precision(study_dir):
     save(fig, study_dir, "work_precision")
 
 
+def sweep_rows(sweep_dir, name):
+    with open(os.path.join(sweep_dir, name), newline="") as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def number(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def sweep_figures(sweep_dir):
+    """The campaign's figures from sweep.csv and events.csv (module docstring)."""
+    cases = sweep_rows(sweep_dir, "sweep.csv")
+    events = sweep_rows(sweep_dir, "events.csv")
+    fixed = {"case", "status", "reason", "scene_hash", "global_static_coefficient", "events", "precursor_count",
+             "first_precursor_force_ratio", "steps", "wall_seconds", "cpu_seconds"}
+    varied = [k for k in (cases[0].keys() if cases else []) if k not in fixed and k != "seed"]
+    def group(row):  # the case apart from its seed
+        return ", ".join(f"{k.split('.')[-1]}={row[k]}" for k in varied) or re.sub(r"_seed-[0-9]+$", "", row["case"])
+    out = os.path.join(sweep_dir, "plots")
+
+    groups = list(dict.fromkeys(group(r) for r in cases))
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for k, g in enumerate(groups):
+        pts = [(number(e["force_ratio"]), number(e["extent_over_length"])) for e in events if group(e) == g]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=f"C{k % 10}", label=g, ms=4, alpha=0.8)
+    ax.set_xlabel("$F_S/F_N$ at the event's start")
+    ax.set_ylabel("rupture length $l/L$")
+    ax.legend(fontsize=8)
+    ax.set_title("every rupture event of every case (Li2020 Fig. 7)")
+    save(fig, out, "sweep_precursor_lengths")
+    plt.close(fig)
+
+    numeric = [k for k in varied if all(np.isfinite(number(r[k])) for r in cases)]
+    for key in numeric:
+        xs = sorted({number(r[key]) for r in cases})
+        fig, axes = plt.subplots(1, 3, figsize=(13, 4))
+        for ax, (column, label) in zip(axes, [("precursor_count", "precursors before global slip"),
+                                              ("first_precursor_force_ratio", "$F_S/F_N$ of the first precursor"),
+                                              ("global_static_coefficient", "$F_S/F_N$ at global slip")]):
+            for x in xs:
+                ys = [number(r[column]) for r in cases if number(r[key]) == x and r["status"] == "done"]
+                ys = [y for y in ys if np.isfinite(y)]
+                if ys:
+                    ax.plot([x] * len(ys), ys, "o", color="0.6", ms=3)
+                    ax.errorbar([x], [np.mean(ys)], yerr=[[np.mean(ys) - min(ys)], [max(ys) - np.mean(ys)]],
+                                fmt="s", color="tab:blue", capsize=3)
+            ax.set_xlabel(key)
+            ax.set_title(label, fontsize=10)
+        fig.suptitle("mean (square), seeds (dots) and their spread (Li2020 Fig. 8)")
+        fig.tight_layout()
+        save(fig, out, "sweep_against_" + key.split(".")[-1])
+        plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for k, r in enumerate(cases):
+        curve = table(os.path.join(sweep_dir, "cases", r["case"]), "loading_curve.csv")
+        if curve is None or "driving_force" not in curve.dtype.names:
+            continue
+        t0 = load_stage_start(curve)
+        loading = curve["time"] >= t0
+        ax.plot(curve["time"][loading] - t0, curve["driving_force"][loading], lw=0.8,
+                color=f"C{groups.index(group(r)) % 10}", label=group(r) if group(r) not in
+                ax.get_legend_handles_labels()[1] else None)
+    ax.set_xlabel("time since loading began (s)")
+    ax.set_ylabel("driving force $F_S$ (N)")
+    if ax.lines:
+        ax.legend(fontsize=8)
+    save(fig, out, "sweep_loading_curves")
+    plt.close(fig)
+
+
 def main(argv):
+    if argv[:1] == ["--sweep"]:
+        if len(argv) != 2 or not os.path.exists(os.path.join(argv[1], "sweep.csv")):
+            print("frictionlab_plot.py --sweep SWEEP_DIR: expected a directory with sweep.csv", file=sys.stderr)
+            return 2
+        sweep_figures(argv[1])
+        return 0
     if argv[:1] == ["--study"]:
         if len(argv) != 2 or not os.path.exists(os.path.join(argv[1], "study.csv")):
             print("frictionlab_plot.py --study STUDY_DIR: expected a directory with study.csv", file=sys.stderr)

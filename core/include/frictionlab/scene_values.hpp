@@ -9,7 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/param_spec.hpp"
-#include "scene_yaml.hpp"
+#include "frictionlab/scene_yaml.hpp"
 
 namespace frictionlab::detail {
 

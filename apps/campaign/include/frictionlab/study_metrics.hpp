@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/case_outputs.hpp"
+
 namespace frictionlab {
 
 /// What one case's outputs say about the quantities a study compares.
@@ -24,9 +26,11 @@ struct CaseOutcome {
     bool any_event = false, global_slip = false;
 };
 
-/// Reads a case's output directory. `settle_end` is the end of the settling stage and
+/// Reads a case's output directory: the interface profiles there and the rupture events and
+/// summary in `rupture` (case_outputs.hpp). `settle_end` is the end of the settling stage and
 /// `load_start` the start of the loading stage (s).
-CaseOutcome read_case_outcome(const std::filesystem::path& dir, double settle_end, double load_start);
+CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFiles& rupture, double settle_end,
+                              double load_start);
 
 /// Relative errors of a case against the reference: |a - r| / |r| for numbers, relative L2 on x/L
 /// for profiles. NaN where the case lacks what the reference has (named in `note`).

@@ -8,9 +8,10 @@
 #include <fmt/format.h>
 
 #include "frictionlab/json.hpp"
-#include "scene_keys.hpp"
-#include "scene_values.hpp"
-#include "scene_yaml.hpp"
+#include "frictionlab/campaign_keys.hpp"
+#include "frictionlab/scene_keys.hpp"
+#include "frictionlab/scene_values.hpp"
+#include "frictionlab/scene_yaml.hpp"
 
 namespace frictionlab {
 

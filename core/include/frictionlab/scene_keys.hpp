@@ -19,11 +19,10 @@ const std::vector<ParamInfo>& stage_params();
 /// Keys beside `type` that the scene, not the plugin, reads: a loader's `stages`, an observer's cadence.
 const std::vector<ParamInfo>& scene_level_params(Kind kind);
 
-/// An accuracy study's keys (study.hpp): title, scene, observe_every, profile_every.
-const std::vector<ParamInfo>& study_params();
-/// reference, cases: read by the study reader itself.
-const std::vector<std::string>& study_sections();
-/// The keys of the reference (set) or of one case (name, family, set).
-const std::vector<ParamInfo>& study_case_params(bool reference);
+/// A key of a format read like a scene (a scene, a study or sweep file): type, default, doc, unit.
+ParamInfo key(std::string name, ValueType type, ParamValue default_value, std::string doc, std::string unit = {});
+ParamInfo required(ParamInfo info);
+ParamInfo greater_than(ParamInfo info, double bound);
+ParamInfo at_least(ParamInfo info, double bound);
 
 }  // namespace frictionlab::detail

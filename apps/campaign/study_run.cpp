@@ -7,6 +7,9 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "frictionlab/campaign_runner.hpp"
+#include "frictionlab/case_outputs.hpp"
+#include "frictionlab/csv_cell.hpp"
 #include "frictionlab/errors.hpp"
 #include "frictionlab/output_directory.hpp"
 
@@ -89,14 +92,6 @@ double load_start(const Scene& scene) {
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.6g}", v); }
 
-/// A CSV cell: quoted when it holds a comma or a quote (RFC 4180).
-std::string cell(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
 void write_file(const std::filesystem::path& file, const std::string& text) {
     std::ofstream out(file, std::ios::trunc);
     out << text;
@@ -114,25 +109,36 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
     StudyResult result;
     result.seed = scenes.front().seed;
     result.knob_columns = knob_columns(study, resolved);
+    // The same engine as a sweep, one case at a time: the wall times of a study are compared.
     const auto cases = study.all_cases();
+    std::vector<CampaignCase> runs;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        CampaignCase run{cases[k]->name, {}, scenes.at(k)};
+        for (std::size_t j = 0; j < result.knob_columns.size(); ++j)
+            run.values.emplace_back(result.knob_columns[j], value_at(resolved[k], result.knob_columns[j]));
+        runs.push_back(std::move(run));
+    }
+    CampaignOptions campaign;
+    campaign.allow_unstable_step = options.allow_unstable_step;
+    campaign.reuse_finished = false;
+    const auto records = run_campaign(runs, output, registry, log, campaign);
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const Scene& scene = scenes.at(k);
         StudyRow row;
         row.name = cases[k]->name;
         row.scene_hash = scene.hash;
-        for (const auto& key : result.knob_columns) row.knobs.push_back(value_at(resolved[k], key));
+        for (const auto& [key, value] : runs[k].values) row.knobs.push_back(value);
         row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
-        log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
-        try {
-            row.summary = run_scene(scene, registry, log, {false, options.allow_unstable_step, false});
-            row.outcome = read_case_outcome(scene.output_directory, scene.stages.front().duration, load_start(scene));
-        } catch (const std::exception& e) {
-            if (k == 0) throw RunError(fmt::format("the reference run failed: {}", e.what()));
-            log.warn("study case {} failed: {}", row.name, e.what());
-            row.errors.note = fmt::format("run failed: {}", e.what());
+        row.summary = records[k].summary;
+        const auto files = rupture_files(scene);
+        if (records[k].status != "done" || !files) {
+            const std::string reason = records[k].status != "done" ? records[k].reason : "no precursors observer";
+            if (k == 0) throw RunError(fmt::format("the reference run failed: {}", reason));
+            row.errors.note = fmt::format("run failed: {}", reason);
             result.rows.push_back(std::move(row));
             continue;
         }
+        row.outcome = read_case_outcome(scene.output_directory, *files, scene.stages.front().duration, load_start(scene));
         row.errors = compare(k == 0 ? row.outcome : result.rows.front().outcome, row.outcome);
         log.info("study case {}: {:.3g} s wall ({:.3g} s CPU), {} steps, {} evaluations", row.name,
                  row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps, row.summary.evaluations);
@@ -147,17 +153,17 @@ void write_study_csv(const StudyResult& result, const Study& study, const std::f
         "case's run.yaml in cases/ records its resolved scene and plugins\n",
         framework_version(), study.file.filename().string(), result.seed);
     text += "case,family,scene_hash";
-    for (const auto& k : result.knob_columns) text += fmt::format(",{}", cell(k));
+    for (const auto& k : result.knob_columns) text += fmt::format(",{}", csv_cell(k));
     text += ",wall_seconds,cpu_seconds,steps,evaluations";
     for (const auto& c : error_columns) text += std::string(",") + c.name;
     text += ",note\n";
     for (const auto& row : result.rows) {
-        text += fmt::format("{},{},{}", row.name, cell(row.family), row.scene_hash);
-        for (const auto& v : row.knobs) text += fmt::format(",{}", cell(v));
+        text += fmt::format("{},{},{}", row.name, csv_cell(row.family), row.scene_hash);
+        for (const auto& v : row.knobs) text += fmt::format(",{}", csv_cell(v));
         text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps,
                             row.summary.evaluations);
         for (const auto& c : error_columns) text += fmt::format(",{}", number(row.errors.*c.member));
-        text += fmt::format(",{}\n", cell(row.errors.note));
+        text += fmt::format(",{}\n", csv_cell(row.errors.note));
     }
     write_file(file, text);
 }

@@ -67,7 +67,8 @@ void add_note(std::string& note, const std::string& what) { note += (note.empty(
 
 }  // namespace
 
-CaseOutcome read_case_outcome(const std::filesystem::path& dir, double settle_end, double load_start) {
+CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFiles& rupture, double settle_end,
+                              double load_start) {
     CaseOutcome out;
     const History normal = History::read(dir / "interface_normal_force.csv");
     const History friction = History::read(dir / "interface_friction_force.csv");
@@ -83,7 +84,7 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, double settle_en
         for (auto& v : out.settled_friction) v /= per_block;
     }
 
-    auto events = read_csv_columns(dir / "precursors.csv");
+    auto events = read_csv_columns(rupture.events);
     const auto& t_start = events["t_start"];
     const auto& global = events["global"];
     std::size_t first = t_start.size(), first_global = t_start.size();
@@ -97,9 +98,9 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, double settle_en
         out.first_precursor_time = t_start[first] - load_start;
         out.first_precursor_force = events["driving_force"][first];
     }
-    if (std::filesystem::exists(dir / "precursors_summary.yaml"))
+    if (std::filesystem::exists(rupture.summary))
         out.global_static_coefficient =
-            summary_number(YAML::LoadFile((dir / "precursors_summary.yaml").string()), "global_static_coefficient");
+            summary_number(YAML::LoadFile(rupture.summary.string()), "global_static_coefficient");
 
     const History slip = History::read(dir / "interface_slip.csv");
     if (out.any_event && !slip.time.empty()) {

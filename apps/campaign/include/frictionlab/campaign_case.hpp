@@ -1,0 +1,39 @@
+#pragma once
+// One case of a campaign (a sweep or an accuracy study): an ordinary scene, run like `frictionlab
+// run` into <campaign>/cases/<name>, and what became of it. The record is written beside the run's
+// outputs (case.yaml) so that a campaign run again into the same directory can tell a finished case
+// (same scene hash, status done) from one that failed or was interrupted.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "frictionlab/run.hpp"
+#include "frictionlab/scene.hpp"
+
+namespace frictionlab {
+
+struct CampaignCase {
+    std::string name;  // its directory below cases/
+    /// The values that make this case: key path (or "seed") and value as written, in column order.
+    std::vector<std::pair<std::string, std::string>> values;
+    Scene scene;  // validated; its output directory is <campaign>/cases/<name>
+};
+
+struct CaseRecord {
+    std::string status = "not run";  // "done", "failed" or "not run"
+    std::string reason;              // why it failed
+    std::string scene_hash;
+    RunSummary summary;
+    bool reused = false;  // finished by an earlier run of the campaign, not run again
+};
+
+/// The file below a case's output directory that records its outcome.
+inline constexpr const char* case_record_file = "case.yaml";
+
+/// Writes the record atomically (aside, then renamed): a campaign killed mid-write leaves none.
+void write_case_record(const std::filesystem::path& dir, const CaseRecord& record);
+/// The record of a case directory; status "not run" if it has none or it cannot be read.
+CaseRecord read_case_record(const std::filesystem::path& dir);
+
+}  // namespace frictionlab

@@ -1,0 +1,204 @@
+// `frictionlab sweep` as a user runs it: a tiny grid x seeds through the real command, its tables
+// read back against each case's own files and against a plain `frictionlab run` of one case; the
+// same outputs at -j 1, -j 2 and under mpirun; a killed sweep re-run completes only what is
+// missing; a failing case is recorded while the others finish.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli.hpp"
+#include "csv.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using frictionlab::testing::frictionlab;
+using frictionlab::testing::read_text;
+
+const std::vector<std::string> case_names{"velocity-0.08_seed-1", "velocity-0.08_seed-2", "velocity-0.12_seed-1",
+                                          "velocity-0.12_seed-2"};
+
+/// A table's rows without its '#' comment lines (which name the run's directory and scene hash).
+std::string data_lines(const fs::path& file) {
+    std::ifstream in(file);
+    std::string line, out;
+    while (std::getline(in, line))
+        if (!line.empty() && line[0] != '#') out += line + "\n";
+    return out;
+}
+
+/// sweep.csv's rows, by case name, cells by column name (no cell of the tiny sweep is quoted).
+std::map<std::string, std::map<std::string, std::string>> sweep_rows(const fs::path& file) {
+    std::ifstream in(file);
+    std::string line;
+    std::vector<std::string> header;
+    std::map<std::string, std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::vector<std::string> cells;
+        std::stringstream s(line);
+        for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+        if (line.back() == ',') cells.emplace_back();
+        if (header.empty()) {
+            header = cells;
+            continue;
+        }
+        auto& row = rows[cells.at(0)];
+        for (std::size_t k = 0; k < header.size() && k < cells.size(); ++k) row[header[k]] = cells[k];
+    }
+    return rows;
+}
+
+std::string sweep_command(const std::string& args) { return "sweep -q " SWEEP_FILES "/tiny_sweep.yaml " + args; }
+
+TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const auto one = frictionlab(sweep_command("-o j1 -j 1"), dir);
+    ASSERT_EQ(one.code, 0) << one.output;
+    const auto two = frictionlab(sweep_command("-o j2 -j 2"), dir);
+    ASSERT_EQ(two.code, 0) << two.output;
+
+    const auto rows = sweep_rows(dir / "j1" / "sweep.csv");
+    ASSERT_EQ(rows.size(), case_names.size());
+    std::size_t all_events = 0;
+    for (const auto& name : case_names) {
+        SCOPED_TRACE(name);
+        const fs::path case_dir = dir / "j1" / "cases" / name;
+        const auto& row = rows.at(name);
+        EXPECT_EQ(row.at("status"), "done");
+        EXPECT_EQ(row.at("loaders[2].velocity"), name.substr(9, 4));
+        EXPECT_EQ(row.at("seed"), name.substr(name.size() - 1));
+        // The events come from the file the observer was told to write (events_file: ruptures.csv).
+        ASSERT_TRUE(fs::exists(case_dir / "ruptures.csv"));
+        auto events = frictionlab::testing::read_csv(case_dir / "ruptures.csv");
+        const auto& global = events["global"];
+        std::size_t precursors = 0;
+        for (double g : global) precursors += g < 0.5;
+        EXPECT_EQ(std::stoul(row.at("events")), global.size());
+        EXPECT_EQ(std::stoul(row.at("precursor_count")), precursors);
+        all_events += global.size();
+        // The global static coefficient is the one the case's summary states.
+        const std::string summary = read_text(case_dir / "precursors_summary.yaml");
+        const auto at = summary.find("global_static_coefficient: ");
+        ASSERT_NE(at, std::string::npos);
+        const std::string stated = summary.substr(at + 27, summary.find('\n', at) - at - 27);
+        if (stated == "null") EXPECT_EQ(row.at("global_static_coefficient"), "nan");
+        else EXPECT_NEAR(std::stod(row.at("global_static_coefficient")), std::stod(stated), 1e-9 * std::abs(std::stod(stated)));
+        // -j 2 computes every case bit for bit as -j 1.
+        EXPECT_EQ(data_lines(case_dir / "ruptures.csv"), data_lines(dir / "j2" / "cases" / name / "ruptures.csv"));
+    }
+    EXPECT_GT(all_events, 0u) << "the tiny sweep should see rupture events";
+    EXPECT_EQ(data_lines(dir / "j1" / "sweep.csv").size() > 0, true);
+    // events.csv: one row per event of every case.
+    const std::string events = data_lines(dir / "j1" / "events.csv");
+    EXPECT_EQ(static_cast<std::size_t>(std::count(events.begin(), events.end(), '\n')), all_events + 1);
+
+    // A case is an ordinary run: `frictionlab run` with the same values writes the same events.
+    const auto single = frictionlab("run -q " SWEEP_FILES "/tiny_scene.yaml --set loaders[2].velocity=0.12 --set seed=2 -o single", dir);
+    ASSERT_EQ(single.code, 0) << single.output;
+    EXPECT_EQ(data_lines(dir / "single" / "ruptures.csv"),
+              data_lines(dir / "j1" / "cases" / "velocity-0.12_seed-2" / "ruptures.csv"));
+
+    // Run again into the same directory: every case is recognised as finished and not run again.
+    const auto again = frictionlab("sweep " SWEEP_FILES "/tiny_sweep.yaml -o j1 -j 2", dir);
+    ASSERT_EQ(again.code, 0) << again.output;
+    EXPECT_NE(again.output.find("4 of 4 cases finished earlier"), std::string::npos) << again.output;
+}
+
+#ifdef MPIRUN
+TEST(Sweep, UnderMpirunTheCasesAreTheSame) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const auto one = frictionlab(sweep_command("-o j1 -j 1"), dir);
+    ASSERT_EQ(one.code, 0) << one.output;
+    const std::string cmd = "cd '" + dir.string() + "' && " MPIRUN " --allow-run-as-root --oversubscribe -np 2 '" +
+                            FRICTIONLAB_CLI "' " + sweep_command("-o mpi") + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << cmd;
+    const auto rows = sweep_rows(dir / "mpi" / "sweep.csv");
+    ASSERT_EQ(rows.size(), case_names.size());
+    for (const auto& name : case_names) {
+        EXPECT_EQ(rows.at(name).at("status"), "done") << name;
+        EXPECT_EQ(data_lines(dir / "j1" / "cases" / name / "ruptures.csv"),
+                  data_lines(dir / "mpi" / "cases" / name / "ruptures.csv"))
+            << name;
+    }
+}
+#endif
+
+TEST(Sweep, KilledSweepRerunCompletesOnlyTheMissingCases) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const pid_t sweep = fork();
+    ASSERT_GE(sweep, 0);
+    if (sweep == 0) {
+        setpgid(0, 0);
+        fs::current_path(dir);
+        const int null = ::open("/dev/null", O_WRONLY);
+        dup2(null, STDERR_FILENO);
+        execl(FRICTIONLAB_CLI, FRICTIONLAB_CLI, "sweep", "-q", SWEEP_FILES "/tiny_sweep.yaml", "-o", "out", "-j", "1",
+              static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Kill it (and its running case) as soon as the first case is recorded done.
+    const fs::path first = dir / "out" / "cases" / case_names[0] / "case.yaml";
+    for (int i = 0; i < 6000 && !fs::exists(first); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(fs::exists(first));
+    kill(sweep, SIGKILL);
+    int status = 0;
+    waitpid(sweep, &status, 0);
+    std::size_t finished = 0;
+    for (const auto& name : case_names) finished += fs::exists(dir / "out" / "cases" / name / "case.yaml");
+    ASSERT_GE(finished, 1u);
+    ASSERT_LT(finished, case_names.size());
+    const auto kept = fs::last_write_time(dir / "out" / "cases" / case_names[0] / "ruptures.csv");
+
+    const auto rerun = frictionlab("sweep " SWEEP_FILES "/tiny_sweep.yaml -o out -j 2", dir);
+    ASSERT_EQ(rerun.code, 0) << rerun.output;
+    EXPECT_NE(rerun.output.find(std::to_string(finished) + " of 4 cases finished earlier"), std::string::npos)
+        << rerun.output;
+    EXPECT_EQ(fs::last_write_time(dir / "out" / "cases" / case_names[0] / "ruptures.csv"), kept);
+    for (const auto& [name, row] : sweep_rows(dir / "out" / "sweep.csv")) EXPECT_EQ(row.at("status"), "done") << name;
+}
+
+TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    {
+        std::ofstream out(dir / "failing.yaml");
+        out << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
+            << "cases:\n  - name: fine\n    set: [stages[1].duration=1.0e-3]\n"
+            << "  - name: unstable\n    set: [integrator.dt=2.0e-5]\n";
+    }
+    const auto result = frictionlab("sweep -q failing.yaml -o out -j 2", dir);
+    EXPECT_EQ(result.code, 1) << result.output;
+    const auto rows = sweep_rows(dir / "out" / "sweep.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows.at("fine").at("status"), "done");
+    EXPECT_EQ(rows.at("unstable").at("status"), "failed");
+    EXPECT_NE(rows.at("unstable").at("reason").find("stable"), std::string::npos) << rows.at("unstable").at("reason");
+}
+
+TEST(Sweep, BadValuesAreReportedWithTheirPlaceInTheSweepFile) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    {
+        std::ofstream out(dir / "bad.yaml");
+        out << "scene: " SWEEP_FILES "/tiny_scene.yaml\ngrid:\n  integrator.dt: [2.0e-7, -1]\nseeds: [1, 2.5]\n";
+    }
+    const auto result = frictionlab("check bad.yaml", dir);
+    EXPECT_EQ(result.code, 2) << result.output;
+    EXPECT_NE(result.output.find("bad.yaml:4:"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("whole number"), std::string::npos) << result.output;
+}
+
+}  // namespace
