@@ -177,8 +177,8 @@ TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     {
         std::ofstream out(dir / "failing.yaml");
         out << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
-            << "cases:\n  - name: fine\n    set: [stages[1].duration=1.0e-3]\n"
-            << "  - name: unstable\n    set: [integrator.dt=2.0e-5]\n";
+            << "cases:\n  - name: fine\n    set: [\"stages[1].duration=1.0e-3\"]\n"
+            << "  - name: unstable\n    set: [\"integrator.dt=2.0e-5\"]\n";
     }
     const auto result = frictionlab("sweep -q failing.yaml -o out -j 2", dir);
     EXPECT_EQ(result.code, 1) << result.output;
