@@ -20,6 +20,8 @@
 #include "frictionlab/run.hpp"
 #include "frictionlab/scene.hpp"
 #include "frictionlab/campaign_file.hpp"
+#include "frictionlab/campaign_keys.hpp"
+#include "frictionlab/scene_values.hpp"
 #include "frictionlab/campaign_mpi.hpp"
 #include "frictionlab/campaign_runner.hpp"
 #include "frictionlab/output_directory.hpp"
@@ -58,6 +60,31 @@ struct Common {
         return fl::plugin_directories(plugin_paths, scene_paths, env ? env : "", fl::shipped_plugin_directory());
     }
 };
+
+/// `doc sweep` and `doc study`: the keys of a campaign file, what each takes and means.
+std::string campaign_doc(const std::string& which) {
+    const bool sweep = which == "sweep";
+    std::string out = sweep ? "sweep file (frictionlab sweep SWEEP.yaml; share/docs/scene-format.md, \"Sweeps\")\n"
+                            : "accuracy study file (frictionlab study STUDY.yaml; share/docs/scene-format.md, "
+                              "\"Accuracy studies\")\n";
+    const auto section = [&](const std::string& title, const std::vector<fl::ParamInfo>& params) {
+        out += "\n" + title + ":\n";
+        for (const auto& p : params)
+            out += "  " + p.key + (p.required ? " (required)" : "") + ": " + fl::detail::expectation(p) + ". " + p.doc +
+                   "\n";
+    };
+    section("top-level keys", sweep ? fl::detail::sweep_params() : fl::detail::study_params());
+    if (sweep) {
+        out += "  grid: a mapping of key paths to lists of values; the cases take every combination.\n";
+        out += "  cases: a list of cases, each times the whole grid.\n";
+        section("keys of each listed case", fl::detail::sweep_case_params());
+    } else {
+        out += "  reference: the converged run.\n  cases: the cases compared with it.\n";
+        section("keys of the reference", fl::detail::study_case_params(true));
+        section("keys of each case", fl::detail::study_case_params(false));
+    }
+    return out;
+}
 
 /// Prints every diagnostic of a file that has errors.
 int report_errors(const fl::Diagnostics& diagnostics, const std::filesystem::path& file) {
@@ -272,7 +299,7 @@ int main(int argc, char** argv) {
     common.attach(*list);
 
     auto* doc = app.add_subcommand("doc", "Document types and their parameters: doc [KIND[/TYPE]]");
-    doc->add_option("selector", selector, "A kind (e.g. friction_law) or KIND/TYPE; all types if omitted");
+    doc->add_option("selector", selector, "A kind (e.g. friction_law), KIND/TYPE, or sweep or study (their file formats); all types if omitted");
     doc->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "md", "json"}));
     common.attach(*doc);
 
@@ -355,6 +382,8 @@ int main(int argc, char** argv) {
             for (const auto* t : all_types(registry))
                 std::cout << fl::to_string(t->kind) << "/" << t->type << "  "
                           << (t->library.empty() ? "built in" : t->library) << "\n";
+        } else if (*doc && (selector == "sweep" || selector == "study")) {
+            std::cout << campaign_doc(selector);
         } else if (*doc) {
             const auto f = format == "md" ? fl::cli::DocFormat::markdown
                            : format == "json" ? fl::cli::DocFormat::json
