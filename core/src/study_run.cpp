@@ -124,8 +124,13 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
         row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
         log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
         try {
-            row.summary = run_scene(scene, registry, log, {false, options.allow_unstable_step, false});
+            RunOptions case_options;
+            case_options.allow_unstable_step = options.allow_unstable_step;
+            case_options.stop_signal = options.stop_signal;
+            row.summary = run_scene(scene, registry, log, case_options);
             row.outcome = read_case_outcome(scene.output_directory, scene.stages.front().duration, load_start(scene));
+        } catch (const Interrupted&) {
+            throw;  // the whole study stops, not just this case
         } catch (const std::exception& e) {
             if (k == 0) throw RunError(fmt::format("the reference run failed: {}", e.what()));
             log.warn("study case {} failed: {}", row.name, e.what());
