@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <new>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -313,6 +314,13 @@ int main(int argc, char** argv) {
         return fl::InterruptSignals::exit_status(e.signal);
     } catch (const fl::RunError& e) {
         log->error("run failed: {}", e.what());
+        return fl::exit_code::run_failure;
+    } catch (const std::bad_alloc&) {
+        log->error("out of memory: the scene asks for more than this machine has; make the lattice, the junctions "
+                   "per block or the observers' output smaller");
+        return fl::exit_code::run_failure;
+    } catch (const std::filesystem::filesystem_error& e) {
+        log->error("cannot use '{}': {}", e.path1().string(), e.code().message());
         return fl::exit_code::run_failure;
     } catch (const std::exception& e) {
         log->error("internal error: {}", e.what());
