@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <thread>
+#include <new>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -15,6 +17,7 @@
 
 #include "doc_writer.hpp"
 #include "frictionlab/errors.hpp"
+#include "frictionlab/interrupt_signals.hpp"
 #include "frictionlab/plugin_search.hpp"
 #include "frictionlab/registry.hpp"
 #include "frictionlab/run.hpp"
@@ -245,7 +248,10 @@ int study(const std::filesystem::path& file, std::string output, const fl::RunOp
         std::cout << file.string() << ": ok (study of " << scenes.size() << " scenes)\n";
         return fl::exit_code::ok;
     }
-    const auto result = fl::run_study(spec, scenes, output, registry, log, options);
+    const fl::InterruptSignals signals;
+    fl::RunOptions study_options = options;
+    study_options.stop_signal = &fl::InterruptSignals::received();
+    const auto result = fl::run_study(spec, scenes, output, registry, log, study_options);
     fl::write_study_csv(result, spec, std::filesystem::path(output) / "study.csv");
     fl::write_study_markdown(result, spec, std::filesystem::path(output) / "study.md");
     log.info("study: {} cases; table in {}", result.rows.size(), (std::filesystem::path(output) / "study.md").string());
@@ -343,6 +349,9 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? fl::exit_code::ok : fl::exit_code::bad_input;
     }
 
+    // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported like a full disk,
+    // instead of killing the process with SIGXFSZ mid-row.
+    std::signal(SIGXFSZ, SIG_IGN);
     auto log = common.logger();
     if (removed_force) {
         log->error("--force is gone: --overwrite replaces an output directory FrictionLab created, "
@@ -365,10 +374,13 @@ int main(int argc, char** argv) {
             auto scene = read_scene(scene_file, overrides, common, registry);
             if (!scene) return fl::exit_code::bad_input;
             if (*check) {
+                fl::check_scene_builds(*scene, registry, *log);
                 std::cout << scene_file.string() << ": ok\n";
                 return fl::exit_code::ok;
             }
             options.live_progress = isatty(STDERR_FILENO) && !common.quiet;
+            const fl::InterruptSignals signals;
+            options.stop_signal = &fl::InterruptSignals::received();
             const auto summary = fl::run_scene(*scene, registry, *log, options);
             log->info("done: {} steps, {:.6g} s simulated in {:.3g} s wall ({:.3g} steps/s); outputs in {}",
                       summary.steps, summary.simulated_time, summary.wall_seconds,
@@ -398,8 +410,18 @@ int main(int argc, char** argv) {
     } catch (const fl::InputError& e) {
         log->error("{}", e.what());
         return fl::exit_code::bad_input;
+    } catch (const fl::Interrupted& e) {
+        log->warn("run {}", e.what());
+        return fl::InterruptSignals::exit_status(e.signal);
     } catch (const fl::RunError& e) {
         log->error("run failed: {}", e.what());
+        return fl::exit_code::run_failure;
+    } catch (const std::bad_alloc&) {
+        log->error("out of memory: the scene asks for more than this machine has; make the lattice, the junctions "
+                   "per block or the observers' output smaller");
+        return fl::exit_code::run_failure;
+    } catch (const std::filesystem::filesystem_error& e) {
+        log->error("cannot use '{}': {}", e.path1().string(), e.code().message());
         return fl::exit_code::run_failure;
     } catch (const std::exception& e) {
         log->error("internal error: {}", e.what());

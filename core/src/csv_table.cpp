@@ -1,21 +1,35 @@
 #include "frictionlab/csv_table.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+
 #include <fmt/format.h>
 
 #include "frictionlab/errors.hpp"
+#include "frictionlab/interrupt_signals.hpp"
+#include "frictionlab/os_error.hpp"
 
 namespace frictionlab {
 
 CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info)
-    : file_(file), out_(file, std::ios::trunc), columns_(columns.size()) {
-    if (!out_) throw RunError("cannot write " + file.string());
-    out_ << fmt::format("# frictionlab {}; scene {} (hash {}); seed {}\n", info.framework_version,
-                        info.scene_file.filename().string(), info.scene_hash, info.seed);
+    : file_(file), columns_(columns.size()) {
+    fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd_ < 0 && errno == EEXIST)
+        throw InputError(fmt::format("'{}' is written by another observer of this run already; give each observer "
+                                     "its own file",
+                                     file.string()));
+    if (fd_ < 0) throw RunError(fmt::format("cannot create '{}': {}", file.string(), os_error(errno)));
     std::string plugins;
     for (const auto& p : info.plugins) plugins += fmt::format("{}{} {}", plugins.empty() ? "" : ", ", p.name, p.version);
-    out_ << "# plugins: " << plugins << "\n";
-    out_ << fmt::format("{}\n", fmt::join(columns, ","));
-    out_.flush();
+    append(fmt::format("# frictionlab {}; scene {} (hash {}); seed {}\n# plugins: {}\n{}\n", info.framework_version,
+                       info.scene_file.filename().string(), info.scene_hash, info.seed, plugins,
+                       fmt::join(columns, ",")));
+}
+
+CsvTable::~CsvTable() {
+    if (fd_ >= 0) ::close(fd_);
 }
 
 void CsvTable::row(const std::vector<double>& values) {
@@ -24,9 +38,24 @@ void CsvTable::row(const std::vector<double>& values) {
     line_.clear();
     for (std::size_t i = 0; i < values.size(); ++i) fmt::format_to(std::back_inserter(line_), "{}{:.10g}", i ? "," : "", values[i]);
     line_ += '\n';
-    out_ << line_;
-    out_.flush();
-    if (!out_) throw RunError("cannot write " + file_.string());
+    append(line_);
+}
+
+void CsvTable::append(const std::string& text) {
+    const WholeWrite whole;
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int error = n < 0 ? errno : EIO;
+            // Part of the line may have reached the file: cut it back to the last whole line.
+            if (done > 0 && ::ftruncate(fd_, committed_) == 0) ::lseek(fd_, committed_, SEEK_SET);
+            throw RunError(fmt::format("cannot write '{}': {}", file_.string(), os_error(error)));
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    committed_ += static_cast<long long>(text.size());
 }
 
 }  // namespace frictionlab

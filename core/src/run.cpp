@@ -3,39 +3,32 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <iterator>
 #include <memory>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "frictionlab/atomic_file.hpp"
 #include "frictionlab/errors.hpp"
 #include "frictionlab/json.hpp"
 #include "frictionlab/output_directory.hpp"
 #include "frictionlab/registry.hpp"
 #include "frictionlab/simulation.hpp"
 #include "frictionlab/system.hpp"
+#include "scene_emit.hpp"
 
 namespace frictionlab {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Writes a file so that readers never see a half-written one: temporary file, then rename.
-void write_atomically(const std::filesystem::path& file, const std::string& text) {
-    const auto tmp = std::filesystem::path(file).concat(".tmp");
-    {
-        std::ofstream out(tmp, std::ios::trunc);
-        out << text;
-        if (!out) throw RunError("cannot write " + tmp.string());
-    }
-    std::filesystem::rename(tmp, file);
-}
 
 /// One observer with its cadence: an observer costs in proportion to its cadence.
 struct ObserverSlot {
@@ -53,8 +46,14 @@ struct ObserverSlot {
     /// Schedules the next observation after one at t; `tolerance` must be the one due() used, or an
     /// observation taken early by up to it would be repeated one step later.
     void advance(double t, double tolerance) {
-        if (every > 0)
-            while (next_time <= t + tolerance) next_time += every;
+        if (!(every > 0)) return;
+        // Far behind (a cadence much finer than the step): jump, rather than add `every` millions
+        // of times a step; the scene check refuses a cadence too fine to move the sum at all.
+        if (next_time + 1024 * every <= t + tolerance) next_time += std::floor((t + tolerance - next_time) / every) * every;
+        while (next_time <= t + tolerance) {
+            const double next = next_time + every;
+            next_time = next > next_time ? next : std::nextafter(next_time, INFINITY);
+        }
     }
 };
 
@@ -62,17 +61,35 @@ struct ObserverSlot {
 struct RunRecord {
     const RunInfo& info;
     std::string status = "running";
-    std::string error;
+    std::string error;  // why it failed, or what interrupted it
     RunSummary summary;
 
+    /// Atomically; when the disk is too full even for that (the usual reason a run fails late), in
+    /// place, within the room set aside after the previous write, so the record never stays `running`.
     void write(const std::filesystem::path& dir) const {
+        const std::string yaml = text();
+        const std::string json = to_json(YAML::Load(yaml)) + "\n";
+        for (const auto& [file, content] : {std::pair{dir / "run.yaml", &yaml}, std::pair{dir / "run.json", &json}}) {
+            try {
+                write_file_atomically(file, *content);
+            } catch (const RunError&) {
+                if (!std::filesystem::exists(file)) throw;
+                overwrite_in_place(file, *content);
+            }
+            reserve_space(file, room_for_the_last_record);
+        }
+    }
+    static constexpr long room_for_the_last_record = 16 * 1024;
+
+    std::string text() const {
         YAML::Emitter y;
         y.SetDoublePrecision(12);
         y << YAML::BeginMap;
         y << YAML::Key << "framework" << YAML::Value << "frictionlab";
         y << YAML::Key << "version" << YAML::Value << info.framework_version;
         y << YAML::Key << "status" << YAML::Value << status;
-        if (!error.empty()) y << YAML::Key << "error" << YAML::Value << error;
+        if (!error.empty())
+            y << YAML::Key << (status == "interrupted" ? "interrupted_by" : "error") << YAML::Value << error;
         y << YAML::Key << "scene_file" << YAML::Value << info.scene_file.string();
         y << YAML::Key << "scene_hash" << YAML::Value << info.scene_hash;
         y << YAML::Key << "seed" << YAML::Value << info.seed;
@@ -83,14 +100,21 @@ struct RunRecord {
         y << YAML::Key << "cpu_seconds" << YAML::Value << summary.cpu_seconds;
         y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
         for (const auto& p : info.plugins)
+            // The full path and a checksum: a copy earlier in the search path wins over the shipped
+            // plugin of the same name, and the record must show which file ran.
             y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key
-              << "version" << YAML::Value << p.version << YAML::Key << "file" << YAML::Value
-              << p.file.filename().string() << YAML::EndMap;
+              << "version" << YAML::Value << p.version << YAML::Key << "file" << YAML::Value << p.file.string()
+              << YAML::Key << "fnv1a_64" << YAML::Value << file_checksum(p.file) << YAML::EndMap;
         y << YAML::EndSeq;
         y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
         y << YAML::EndMap;
-        write_atomically(dir / "run.yaml", std::string(y.c_str()) + "\n");
-        write_atomically(dir / "run.json", to_json(YAML::Load(y.c_str())) + "\n");
+        return std::string(y.c_str()) + "\n";
+    }
+
+    static std::string file_checksum(const std::filesystem::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        return in ? detail::fnv1a_hex(bytes) : "unreadable";
     }
 
     static std::string to_json(const YAML::Node& n) {
@@ -186,6 +210,14 @@ public:
         };
         try {
             run_stages();
+        } catch (const Interrupted& e) {
+            finish_observers();
+            record.status = "interrupted";
+            record.error = e.what();
+            record.summary = summary();
+            record.write(output_);
+            throw Interrupted(fmt::format("{}; the outputs are closed and valid in {}", e.what(), output_.string()),
+                              e.signal);
         } catch (const std::exception& e) {
             finish_observers();
             record.status = "failed";
@@ -226,6 +258,7 @@ private:
     void run_stages() {
         Progress progress(log_, options_.live_progress);
         for (std::size_t i = 0; i < scene_.stages.size(); ++i) {
+            if (i > 0) stop_if_asked(last_stage_);
             last_stage_ = sim_.begin_stage(i);
             if (i == 0)
                 for (auto& o : observers_) o.observer->begin(view(last_stage_));
@@ -249,7 +282,19 @@ private:
             }
             if (!observers_.empty()) observe_due(stage, false);
             progress.update(stage, sys.time(), sys.step_index());
+            stop_if_asked(stage);
         }
+    }
+
+    /// Between whole steps only: the state, the observers and their files stay consistent.
+    void stop_if_asked(const StageInfo& stage) const {
+        const int signal = options_.stop_signal ? options_.stop_signal->load(std::memory_order_relaxed) : 0;
+        if (signal == 0) return;
+        const System& sys = sim_.system();
+        throw Interrupted(fmt::format("interrupted by {} after step {} at t = {:.9g} s, in stage '{}'",
+                                      signal == SIGTERM ? "SIGTERM" : signal == SIGINT ? "SIGINT" : "a signal",
+                                      sys.step_index(), sys.time(), stage.name),
+                          signal);
     }
 
     void check_end_of_stage(const StageSpec& spec) {
@@ -285,6 +330,12 @@ private:
 };
 
 }  // namespace
+
+void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
+    Simulation sim(scene, registry, log);
+    for (const auto& o : scene.observers)
+        located_in_scene(o, [&] { return registry.create<Observer>(o.type, o.values, sim.context(o.path)); });
+}
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {
     return SceneRun(scene, registry, log, options).execute();

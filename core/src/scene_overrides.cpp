@@ -1,6 +1,7 @@
 #include "scene_overrides.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <optional>
 
 #include <fmt/format.h>
@@ -55,7 +56,12 @@ private:
                 while (i < end && std::isdigit(static_cast<unsigned char>(text_[i]))) ++i;
                 if (i == digits || i == end || text_[i] != ']')
                     return fail(i, "", "expected a list index such as [0]"), false;
-                steps_.push_back({"", std::stoul(text_.substr(digits, i - digits)), open});
+                std::size_t index = 0;
+                const auto [end_of_number, error] = std::from_chars(text_.data() + digits, text_.data() + i, index);
+                if (error != std::errc() || end_of_number != text_.data() + i)
+                    return fail(digits, "", fmt::format("list index {} is out of range", text_.substr(digits, i - digits))),
+                           false;
+                steps_.push_back({"", index, open});
                 ++i;
             }
             if (i == end) return true;

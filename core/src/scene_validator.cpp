@@ -49,6 +49,7 @@ T value_or(const ParamValues& values, const std::string& key, T fallback) {
 struct ComponentRead {
     ComponentSpec spec;
     Section section;
+    const TypeInfo* info = nullptr;
 };
 
 class Validator {
@@ -77,6 +78,7 @@ public:
         scene.stages = read_stages(entry(top, "stages"));
         const auto observers = read_components(Kind::observer, entry(top, "observers"), "observers");
         check_loader_stages(loaders);
+        check_stage_parameters(observers, scene.stages);
         for (const auto& l : loaders) scene.loaders.push_back(l.spec);
         for (const auto& o : observers) scene.observers.push_back(o.spec);
         return scene;
@@ -147,6 +149,7 @@ private:
             return c;
         }
         const TypeInfo* info = find_type(kind, entry, path, c.spec.type);
+        c.info = info;
         SectionKeys keys;
         keys.what = info ? fmt::format("{} '{}'", to_string(kind), c.spec.type) : with_article(kind);
         if (info) keys.params = info->params;
@@ -267,6 +270,46 @@ private:
                                 "no stage named " + quote(name) + suggestion(name, stage_names_, "stages"));
             }
         }
+    }
+
+    /// Parameters declared names_a_stage() (an observer's `stage:`), and observation cadences
+    /// the run could not advance by.
+    void check_stage_parameters(const std::vector<ComponentRead>& components, const std::vector<StageSpec>& stages) {
+        if (!stages_usable_) return;
+        double total = 0;
+        for (const auto& s : stages) total += s.duration;
+        for (const auto& c : components) {
+            check_cadence_resolution(c, total);
+            if (!c.info || !c.section.valid) continue;
+            for (const auto& p : c.info->params) {
+                if (!p.names_stage) continue;
+                const auto* name = std::get_if<std::string>(&c.spec.values.at(p.key));
+                if (!name || name->empty() ||
+                    std::find(stage_names_.begin(), stage_names_.end(), *name) != stage_names_.end())
+                    continue;
+                const auto given = c.section.given.find(p.key);
+                const bool defaulted = given == c.section.given.end();
+                reporter_.error(defaulted ? c.spec.where : reporter_.where(given->second.value),
+                                join_path(c.spec.path, p.key),
+                                fmt::format("no stage named {}{}{}", quote(*name),
+                                            defaulted ? " (the default; set it, or \"\" for none)" : "",
+                                            suggestion(*name, stage_names_, "stages")));
+            }
+        }
+    }
+
+    /// An observation time is a running sum of `every`; below a few thousand ulps of the run's end
+    /// time, adding it no longer moves the sum and the run would never get past it.
+    void check_cadence_resolution(const ComponentRead& c, double total_duration) {
+        const auto given = c.section.given.find("every");
+        if (given == c.section.given.end() || !(c.spec.every > 0)) return;
+        const double finest = total_duration * 1e-12;
+        if (c.spec.every >= finest) return;
+        reporter_.error(given->second.value, join_path(c.spec.path, "every"),
+                        fmt::format("an observation every {:.3g} s cannot be scheduled over {:.6g} s of stages in "
+                                    "double precision; it must be at least {:.3g} s (1e-12 of the run), or use "
+                                    "every_steps: 1 to observe every step",
+                                    c.spec.every, total_duration, finest));
     }
 
     const SourceMap* sources_;

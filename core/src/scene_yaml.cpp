@@ -1,5 +1,6 @@
 #include "frictionlab/scene_yaml.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -169,6 +170,38 @@ private:
     std::vector<Frame> stack_;
 };
 
+/// Offset of the first byte that does not belong to a well-formed UTF-8 sequence (RFC 3629: no
+/// overlong forms, no surrogates, nothing above U+10FFFF), if any.
+std::optional<std::size_t> first_invalid_utf8(std::string_view text) {
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+        const unsigned char c = byte(i);
+        std::size_t length = 0;
+        unsigned char low = 0x80, high = 0xbf;  // allowed range of the second byte
+        if (c < 0x80) length = 1;
+        else if (c >= 0xc2 && c <= 0xdf) length = 2;
+        else if (c >= 0xe0 && c <= 0xef) length = 3, low = c == 0xe0 ? 0xa0 : 0x80, high = c == 0xed ? 0x9f : 0xbf;
+        else if (c >= 0xf0 && c <= 0xf4) length = 4, low = c == 0xf0 ? 0x90 : 0x80, high = c == 0xf4 ? 0x8f : 0xbf;
+        else return i;
+        if (i + length > text.size()) return i;
+        for (std::size_t k = 1; k < length; ++k) {
+            const unsigned char lo = k == 1 ? low : 0x80, hi = k == 1 ? high : 0xbf;
+            if (byte(i + k) < lo || byte(i + k) > hi) return i;
+        }
+        i += length;
+    }
+    return std::nullopt;
+}
+
+SourceLocation location_of_offset(const std::string& file, std::string_view text, std::size_t offset) {
+    const auto before = text.substr(0, offset);
+    const auto newline = before.rfind('\n');
+    const int line = 1 + static_cast<int>(std::count(before.begin(), before.end(), '\n'));
+    const int column = 1 + static_cast<int>(newline == std::string_view::npos ? offset : offset - newline - 1);
+    return {file, line, column};
+}
+
 void merge(const Diagnostics& from, Diagnostics& into) {
     for (const auto& d : from.list()) into.error(d.where, d.key_path, d.message);
 }
@@ -178,6 +211,13 @@ void merge(const Diagnostics& from, Diagnostics& into) {
 std::optional<YAML::Node> read_yaml(const std::string& text, const std::string& name, Diagnostics& diagnostics) {
     // Key errors are held back until the whole text has parsed: malformed YAML is one error only.
     Diagnostics key_errors;
+    // yaml-cpp passes bytes through: invalid UTF-8 would reach run.yaml and make it unreadable.
+    if (const auto bad = first_invalid_utf8(text)) {
+        diagnostics.error(location_of_offset(name, text, *bad), "",
+                          fmt::format("invalid UTF-8 (byte 0x{:02x}): a scene is UTF-8 text",
+                                      static_cast<unsigned char>(text[*bad])));
+        return std::nullopt;
+    }
     try {
         std::istringstream in(text);
         YAML::Parser parser(in);

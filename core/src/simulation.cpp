@@ -1,6 +1,7 @@
 #include "frictionlab/simulation.hpp"
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include <fmt/format.h>
@@ -76,6 +77,19 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     Eigen::VectorXd& y = system_->initial_state();
     Eigen::Ref<Eigen::ArrayXd> aux = y.tail(system_->layout().aux).array();
     system_->for_each_effect([&](const Effect& e) { e.initialise_aux(aux); });
+    check_step_count();
+}
+
+void Simulation::check_step_count() const {
+    const double dt = integrator_->nominal_dt();
+    double steps = 0, duration = 0;
+    for (const auto& stage : scene_.stages) steps += std::ceil(stage.duration / dt), duration += stage.duration;
+    if (steps <= most_steps) return;
+    throw InputError(Diagnostic{scene_.integrator.where, "integrator",
+                                fmt::format("{:.3g} s of stages at dt = {:.3g} s is {:.3g} steps, more than the {:.0e} "
+                                            "a run may take: a step or a stage duration is off by orders of magnitude",
+                                            duration, dt, steps, most_steps)}
+                         .format());
 }
 
 Simulation::~Simulation() = default;
@@ -108,6 +122,17 @@ void Simulation::check_stability(const StageInfo& stage) {
     const double radius = integrator_->stability_radius(), dt = integrator_->nominal_dt();
     if (!std::isfinite(radius)) return;
     const StabilityEstimate e = estimate_stable_step(*system_, *integrator_);
+    if (!std::isfinite(e.lambda_max) || !(e.dt_limit > 0)) {
+        // A degenerate system (a mass of 1e-300 kg, an infinite stiffness) has no stable step to name.
+        const std::string message = fmt::format(
+            "stage '{}': the stable time step cannot be estimated: the linearised system's largest |eigenvalue| is "
+            "{} 1/s (set by {}), so some mass is too small or some stiffness or damping too large for double "
+            "precision; check the bulk's density and size and the loaders' stiffnesses",
+            stage.name, e.lambda_max, e.limiting_effect.empty() ? "no single effect" : e.limiting_effect);
+        if (refuse_unstable_) throw InputError(message);
+        log_.warn("{}", message);
+        return;
+    }
     log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s",
               e.dt_limit, e.lambda_max, e.limiting_effect, dt);
     if (dt <= e.dt_limit) return;

@@ -45,6 +45,8 @@ public:
     static ParamSpec<Params> spec();
     /// Why the lattice cells are not square, or "" if they are (L/(nx-1) = H/(nz-1) to 1e-9).
     static std::string spacing_mismatch(const Params& p);
+    /// Why the lattice is too large to build (with the memory it would take), or "".
+    static std::string too_large(const Params& p);
 
     SpringLattice2d(const Params& p, const Context& ctx);
 

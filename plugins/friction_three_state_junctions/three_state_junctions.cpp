@@ -304,6 +304,17 @@ Index ThreeStateJunctions::random_index(Index i, Index first, Index end) {
 }
 
 void ThreeStateJunctions::check_settled(const StageInfo& stage, const StageView& s) const {
+    // Junctions form from the normal force, P_b / p of them per block: a junction load p above
+    // every block's share would leave a frictionless interface without a word.
+    const bool any_junction =
+        std::any_of(blocks_.begin(), blocks_.end(), [](const BlockJunctions& b) { return b.size() > 0; });
+    const double largest_load = normal_force_->size() > 0 ? normal_force_->maxCoeff() : 0.0;
+    if (!any_junction && largest_load > 0)
+        throw RunError(fmt::format(
+            "{}: at the start of stage '{}' no block has a junction: the load of one junction, p = pi "
+            "contact_radius^2 hardness = {:.6g} N, is above the largest normal force of a block, {:.6g} N, so the "
+            "interface would be frictionless; make contact_radius or hardness smaller",
+            name_, stage.name, p_, largest_load));
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         const double x = s.x[nodes_[i]];
         if (!blocks_[i].pinned_beyond(x, threshold_)) continue;

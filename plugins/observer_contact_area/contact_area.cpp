@@ -41,7 +41,8 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
           "File names: <prefix>.csv for the whole interface, <prefix>_block_<i>.csv per block, in the output "
           "directory.");
     s.add("loading_stage", &Params::loading_stage,
-          "The slip_since_loading column counts from the first observation in the stage of this name.");
+          "The slip_since_loading column counts from the first observation in the stage of this name.")
+        .names_a_stage();
     s.rule("blocks", [](const Params& p) -> std::string {
         for (double b : p.blocks)
             if (!(b >= 0) || b != std::floor(b)) return fmt::format("block indices are whole numbers >= 0, not {}", b);

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "frictionlab/errors.hpp"
+#include "frictionlab/output_file_name.hpp"
 #include "frictionlab/system.hpp"
 
 namespace frictionlab {
@@ -12,6 +13,7 @@ ParamSpec<EnergyBalance::Params> EnergyBalance::spec() {
                         "loaders' input, damping and friction dissipation, and the residual of the work-energy "
                         "theorem (switches the run's work accounting on).");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
+    s.rule("file", [](const Params& p) { return output_file_name_problem(p.file); });
     return s;
 }
 

@@ -5,20 +5,16 @@
 
 #include <fmt/format.h>
 
+#include "frictionlab/atomic_file.hpp"
 #include "frictionlab/errors.hpp"
 #include "frictionlab/json.hpp"
+#include "frictionlab/output_file_name.hpp"
 
 namespace frictionlab {
 
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-std::string plain_file_name_problem(const std::string& name) {
-    if (name.empty()) return "must not be empty";
-    if (name.find_first_of("/\\") != std::string::npos) return "must be a plain file name, in the output directory";
-    return "";
-}
 
 /// YAML 1.2 reads a JSON number; NaN (unknown yet) is written as null.
 std::string yaml_number(double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null"; }
@@ -53,14 +49,15 @@ ParamSpec<Precursors::Params> Precursors::spec() {
         .unit("s")
         .greater_than(0);
     s.add("stage", &Params::stage,
-          "Observe only during stages of this name (empty: every stage), so settling is not taken for rupture.");
+          "Observe only during stages of this name (empty: every stage), so settling is not taken for rupture.")
+        .names_a_stage();
     s.add("events_file", &Params::events_file, "CSV file of the events, one row each, in the output directory.");
     s.add("fronts_file", &Params::fronts_file,
           "CSV file of the fronts: per event and block, when the block first ruptured.");
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
-    s.rule("events_file", [](const Params& p) { return plain_file_name_problem(p.events_file); });
-    s.rule("fronts_file", [](const Params& p) { return plain_file_name_problem(p.fronts_file); });
-    s.rule("summary_file", [](const Params& p) { return plain_file_name_problem(p.summary_file); });
+    s.rule("events_file", [](const Params& p) { return output_file_name_problem(p.events_file); });
+    s.rule("fronts_file", [](const Params& p) { return output_file_name_problem(p.fronts_file); });
+    s.rule("summary_file", [](const Params& p) { return output_file_name_problem(p.summary_file); });
     return s;
 }
 
@@ -163,16 +160,9 @@ std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& inf
 }
 
 void Precursors::write_summary(const RunView& view, bool run_ended) const {
-    // A reader (or a run killed mid-write) never sees half a summary: write aside, then rename.
-    const auto file = view.output_directory / params_.summary_file;
-    const auto tmp = std::filesystem::path(file).concat(".tmp");
-    {
-        std::ofstream out(tmp, std::ios::trunc);
-        out << summary_text(detector_->summary(), view.info, run_ended);
-        out.flush();
-        if (!out) throw RunError("precursors: cannot write " + tmp.string());
-    }
-    std::filesystem::rename(tmp, file);
+    // A reader (or a run killed mid-write) never sees half a summary.
+    write_file_atomically(view.output_directory / params_.summary_file,
+                          summary_text(detector_->summary(), view.info, run_ended));
 }
 
 }  // namespace frictionlab

@@ -18,6 +18,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "frictionlab/atomic_file.hpp"
 #include "frictionlab/errors.hpp"
 #include "frictionlab/system.hpp"
 
@@ -71,17 +72,6 @@ void set_plane_vectors(vtkDoubleArray* out, const A& a, const B& b) {
         p[3 * i + 2] = 0;
     }
     out->Modified();
-}
-
-/// Readers never see a half-written file: `write` fills a temporary one, which then replaces `file`.
-void replace_atomically(const std::filesystem::path& file, const std::function<bool(const std::filesystem::path&)>& write) {
-    const auto tmp = std::filesystem::path(file).concat(".tmp");
-    if (!write(tmp)) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw RunError("vtk_series: cannot write " + tmp.string());
-    }
-    std::filesystem::rename(tmp, file);
 }
 
 template <std::size_t N>
@@ -268,7 +258,7 @@ void VtkSeries::update_pinned_fraction() {
 
 void VtkSeries::write_snapshot(const RunView& view) {
     const std::string name = fmt::format("{0}/{0}_{1:06d}.vtu", params_.prefix, snapshots_);
-    replace_atomically(view.output_directory / name, [&](const std::filesystem::path& tmp) {
+    replace_file_atomically(view.output_directory / name, [&](const std::filesystem::path& tmp) {
         writer_->SetFileName(tmp.c_str());
         return writer_->Write() == 1;
     });
@@ -279,7 +269,7 @@ void VtkSeries::write_snapshot(const RunView& view) {
 }
 
 void VtkSeries::write_collection(const std::filesystem::path& output_directory) const {
-    replace_atomically(collection_file(output_directory), [&](const std::filesystem::path& tmp) {
+    replace_file_atomically(collection_file(output_directory), [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp, std::ios::trunc);
         out << "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"

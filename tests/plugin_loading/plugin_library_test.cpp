@@ -2,6 +2,9 @@
 // the reason, and leaves the registry that tried the load as it was.
 #include "frictionlab/plugin_library.hpp"
 
+#include <unistd.h>
+
+#include <fstream>
 #include <optional>
 
 #include <gtest/gtest.h>
@@ -74,7 +77,24 @@ TEST_F(PluginRefusal, NoRegisterFunction) {
 }
 
 TEST_F(PluginRefusal, TextFileNamedSo) {
-    EXPECT_EQ(refused("not_a_library.so"), prefix("not_a_library.so") + "invalid ELF header");
+    EXPECT_EQ(refused("not_a_library.so"), prefix("not_a_library.so") + "it is not an ELF file");
+}
+
+TEST_F(PluginRefusal, TruncatedLibraryIsRefusedBeforeDlopenMapsIt) {
+    // `head -c 4096 x.so > y.so`: dlopen would map segments past the end and die of SIGBUS.
+    const auto truncated = std::filesystem::temp_directory_path() / fmt::format("frictionlab_truncated_{}.so", ::getpid());
+    {
+        std::ifstream in(test_plugin("testplugin_good.so"), std::ios::binary);
+        std::string head(4096, '\0');
+        in.read(head.data(), static_cast<std::streamsize>(head.size()));
+        std::ofstream(truncated, std::ios::binary).write(head.data(), static_cast<std::streamsize>(head.size()));
+    }
+    const auto before = snapshot(registry);
+    const std::string message = refusal([&] { registry.load(truncated); });
+    std::filesystem::remove(truncated);
+    EXPECT_EQ(snapshot(registry), before);
+    EXPECT_NE(message.find(": cannot use this plugin: it is truncated: "), std::string::npos) << message;
+    EXPECT_NE(message.find("the file has 4096"), std::string::npos) << message;
 }
 
 TEST_F(PluginRefusal, NonexistentFile) {

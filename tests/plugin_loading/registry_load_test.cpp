@@ -182,7 +182,7 @@ TEST(RegistryLoadDirectory, MissingDirectoryIsNamed) {
 TEST(RegistryLoadDirectory, BrokenPluginStopsTheLoadWithItsMessage) {
     Registry registry;
     EXPECT_EQ(refusal([&] { registry.load_directory(TEST_PLUGIN_DIR); }),
-              test_plugin("not_a_library.so").string() + ": cannot use this plugin: invalid ELF header");
+              test_plugin("not_a_library.so").string() + ": cannot use this plugin: it is not an ELF file");
 }
 
 }  // namespace

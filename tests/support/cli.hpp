@@ -1,7 +1,9 @@
 #pragma once
 // The frictionlab command as a user runs it, for tests.
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace frictionlab::testing {
 
@@ -12,6 +14,34 @@ struct CliResult {
 
 /// Runs `frictionlab <args>` (the build tree's) with `cwd` as working directory.
 CliResult frictionlab(const std::string& args, const std::filesystem::path& cwd);
+
+/// `frictionlab <args>` started in the background with `cwd` as working directory, its stdout and
+/// stderr going to `cwd/<log>`: for tests that signal it while it runs.
+class BackgroundCli {
+public:
+    BackgroundCli(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                  const std::string& log = "cli.log");
+    ~BackgroundCli();  // kills it if still running
+    BackgroundCli(const BackgroundCli&) = delete;
+    BackgroundCli& operator=(const BackgroundCli&) = delete;
+
+    void signal(int number) const;
+    /// Waits for it to end: its exit code, or -1 if a signal ended it (or it ran past `seconds`,
+    /// then it is killed).
+    int wait(double seconds = 120);
+    std::string output() const;
+
+private:
+    int pid_ = -1;
+    std::filesystem::path log_;
+};
+
+/// Polls until `ready()` holds, for at most `seconds`; false if it never did.
+bool wait_until(const std::function<bool()>& ready, double seconds = 60);
+
+/// Every data line of a CsvTable has the header's number of fields, and the file ends with a
+/// newline: no partial row. Returns the number of data rows (-1 if not a table).
+long long whole_rows(const std::filesystem::path& csv);
 
 /// A fresh, empty folder under the build tree for the current test: tests/work/<suite>/<test>.
 std::filesystem::path work_directory();

@@ -22,6 +22,14 @@ struct RunError : std::runtime_error {
     ~RunError() override;
 };
 
+/// A run stopped on request (SIGINT, SIGTERM) after a whole step, its outputs closed. The command
+/// exits with 128 + the signal's number.
+struct Interrupted : RunError {
+    Interrupted(const std::string& what, int stopped_by) : RunError(what), signal(stopped_by) {}
+    ~Interrupted() override;
+    int signal;
+};
+
 namespace exit_code {
 inline constexpr int ok = 0;
 inline constexpr int run_failure = 1;

@@ -40,6 +40,7 @@ struct ParamInfo {
     bool required = false;
     std::optional<double> greater_than, at_least, less_than, at_most;  // numeric bounds
     std::vector<std::string> choices;                                  // allowed strings
+    bool names_stage = false;  // a string that must name a stage of the scene ("" names none)
 };
 
 /// A rule between several keys, checked after every key is individually valid.
@@ -77,6 +78,8 @@ public:
         Field& less_than(double v) { info().less_than = v; return *this; }
         Field& at_most(double v) { info().at_most = v; return *this; }
         Field& one_of(std::vector<std::string> c) { info().choices = std::move(c); return *this; }
+        /// The value names a stage of the scene (or is empty); the scene check refuses any other.
+        Field& names_a_stage() { info().names_stage = true; return *this; }
         /// The key must be given in the scene; the member initialiser is then only an example value.
         Field& required() { info().required = true; return *this; }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Runs a validated scene: builds the components through the registry, assembles the pipeline,
 // steps through the stages, drives the observers at their cadence and records run metadata.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -47,6 +48,9 @@ struct RunOptions {
     bool overwrite = false;            // replace an existing output directory that FrictionLab created
     bool allow_unstable_step = false;  // run a time step above the estimated stable one
     bool live_progress = false;        // one live progress line (terminal); else periodic log lines
+    /// Polled after every step: nonzero (a signal's number, e.g. InterruptSignals::received()) stops
+    /// the run there with Interrupted, its outputs closed and run.yaml `interrupted`.
+    const std::atomic<int>* stop_signal = nullptr;
 };
 
 struct RunSummary {
@@ -56,7 +60,12 @@ struct RunSummary {
     double cpu_seconds = 0;  // processor time of the run: what it costs, whatever else shares the machine
 };
 
-/// Throws RunError on failure, after every observer has closed its outputs.
+/// Builds every component of a validated scene as `run` would (bulk, loaders, friction law,
+/// integrator with the step count, observers) without writing or stepping: what `check` adds to the
+/// validation, so it refuses what `run` would refuse at set-up. Throws InputError at the component.
+void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log);
+
+/// Throws RunError on failure and Interrupted when stopped, after every observer has closed its outputs.
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options);
 
 /// The framework version, e.g. "0.1.0".

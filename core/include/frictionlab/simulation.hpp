@@ -67,9 +67,13 @@ public:
     /// runaway_factor times the slider's size from its reference position stops the run.
     static constexpr long long runaway_check_interval = 8;
     static constexpr double runaway_factor = 10.0;
+    /// A scene whose stages need more steps than this is refused before it starts: a step or a
+    /// duration off by orders of magnitude (15 days at the baseline's 76,000 steps per second).
+    static constexpr double most_steps = 1e11;
 
 private:
     void check_bounded() const;
+    void check_step_count() const;
     void check_stability(const StageInfo& stage);
     void record_plugin(const ComponentSpec& component, Kind kind);
 

@@ -93,9 +93,16 @@ TEST(SpringLattice2d, SpecDeclaresEveryKeyWithDocAndDefaults) {
         EXPECT_FALSE(spec.params()[i].doc.empty()) << keys[i];
     }
     EXPECT_EQ(spec.params()[9].choices, (std::vector<std::string>{"geometric", "small_strain"}));
-    EXPECT_EQ(spec.erased_rules().size(), 1u);
+    ASSERT_EQ(spec.erased_rules().size(), 2u);
     EXPECT_FALSE(spec.erased_rules()[0].check({{"nz", std::int64_t{10}}}).empty());
     EXPECT_TRUE(spec.erased_rules()[0].check({}).empty());
+    // The size rule: 2048 x 2048 nodes is the limit; one column more is refused with its memory.
+    const auto& size = spec.erased_rules()[1];
+    EXPECT_EQ(size.key, "nx");
+    EXPECT_TRUE(size.check({{"nx", std::int64_t{2048}}, {"nz", std::int64_t{2048}}}).empty());
+    EXPECT_EQ(size.check({{"nx", std::int64_t{2049}}, {"nz", std::int64_t{2048}}}),
+              "nx x nz = 4196352 nodes would need about 1.8 GB of memory before the first step; a lattice may have "
+              "at most 4194304 nodes");
 }
 
 TEST(SpringLattice2d, EffectsAreOnlyThoseTheParametersSwitchOn) {

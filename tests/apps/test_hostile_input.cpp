@@ -1,0 +1,156 @@
+// What a careless or hostile user can hand the command: devices and FIFOs as scenes, values no run
+// could finish, observers that collide or write outside the output directory, a full disk. Each
+// is refused with a precise message (exit 2 with file:line:column, or exit 1 with the reason),
+// never a crash, a hang, lost data or nonsense accepted.
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "cli.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using frictionlab::testing::frictionlab;
+using frictionlab::testing::read_text;
+using frictionlab::testing::whole_rows;
+
+class HostileInput : public ::testing::Test {
+protected:
+    void SetUp() override { dir_ = frictionlab::testing::work_directory(); }
+    std::string tiny() const { return std::string(TEST_SCENES) + "/tiny_lattice.yaml"; }
+    std::string every_observer() const { return std::string(TEST_SCENES) + "/every_observer.yaml"; }
+
+    /// `check` and `run` both refuse (exit 2), naming `what`; run leaves no output directory.
+    void expect_refused(const std::string& args, const std::string& what) const {
+        const auto c = frictionlab("check " + args, dir_);
+        EXPECT_EQ(c.code, 2) << c.output;
+        EXPECT_NE(c.output.find(what), std::string::npos) << c.output;
+        const auto r = frictionlab("run -q -o refused " + args, dir_);
+        EXPECT_EQ(r.code, 2) << r.output;
+        EXPECT_NE(r.output.find(what), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(dir_ / "refused")) << args;
+    }
+    fs::path dir_;
+};
+
+TEST_F(HostileInput, OnlyARegularFileOfSensibleSizeIsReadAsAScene) {
+    for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+        const auto r = frictionlab(std::string("check ") + device, dir_);
+        EXPECT_EQ(r.code, 2) << r.output;
+        EXPECT_NE(r.output.find("not a regular file"), std::string::npos) << r.output;
+    }
+    ASSERT_EQ(::mkfifo((dir_ / "fifo.yaml").c_str(), 0600), 0);
+    const auto fifo = frictionlab("check fifo.yaml", dir_);  // would block forever if opened
+    EXPECT_EQ(fifo.code, 2) << fifo.output;
+    EXPECT_NE(fifo.output.find("not a regular file"), std::string::npos) << fifo.output;
+    {
+        std::ofstream big(dir_ / "big.yaml");
+        const std::string comment = "# " + std::string(1000, 'x') + "\n";
+        for (int i = 0; i < 5000; ++i) big << comment;
+    }
+    const auto big = frictionlab("check big.yaml", dir_);
+    EXPECT_EQ(big.code, 2) << big.output;
+    EXPECT_NE(big.output.find("a scene file may have at most 4194304 bytes"), std::string::npos) << big.output;
+}
+
+TEST_F(HostileInput, CadencesStepsAndDurationsNoRunCouldFinishAreRefusedBeforeStarting) {
+    expect_refused(tiny() + " --set observers[0].every=1e-19", "cannot be scheduled");
+    for (const char* dt : {"1e-30", "5e-324"}) expect_refused(tiny() + " --set integrator.dt=" + dt, "steps, more than");
+    expect_refused(tiny() + " --set stages[1].duration=1e5", "5e+11 steps, more than the 1e+11");
+    // A stage of 1e300 s: no observation time can be added to its clock any more.
+    expect_refused(tiny() + " --set stages[1].duration=1e300", "cannot be scheduled over 1e+300 s of stages");
+}
+
+TEST_F(HostileInput, ObserversNamingNoStageAreRefused) {
+    expect_refused(every_observer() + " --set observers[1].stage=lod", "no stage named 'lod'; did you mean 'load'?");
+    expect_refused(every_observer() + " --set observers[2].loading_stage=pull", "no stage named 'pull'");
+    // An empty stage name means every stage, as documented.
+    EXPECT_EQ(frictionlab("check " + every_observer() + " --set 'observers[1].stage=\"\"'", dir_).code, 0);
+}
+
+TEST_F(HostileInput, ObserverFilesStayInTheOutputDirectoryAndNeverCollide) {
+    for (const char* file : {"../x.csv", "/tmp/x.csv", "run.yaml"})
+        expect_refused(tiny() + " --set observers[0].file=" + file, "observers[0].file:");
+    // Two observers on one file: the second is refused before the first step, naming the file.
+    const auto r = frictionlab("run -q " + every_observer() + " -o out --set stages[1].duration=1e-4"
+                               " --set observers[4].file=loading_curve.csv",
+                               dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("loading_curve.csv' is written by another observer of this run"), std::string::npos)
+        << r.output;
+    EXPECT_GE(whole_rows(dir_ / "out" / "loading_curve.csv"), 0);
+}
+
+TEST_F(HostileInput, CheckRefusesWhatRunWouldRefuseAtSetUp) {
+    expect_refused(tiny() + " --set loaders[2].height=0.5", "driving_spring");
+    expect_refused(tiny() + " --set loaders[0].node_set=bottomm", "bottomm");
+    // Refused from the parameters alone, in no time, with the memory it would have taken.
+    expect_refused(tiny() + " --set bulk.nx=4000001 --set bulk.length=10000", "nodes would need about 5.16 GB");
+}
+
+TEST_F(HostileInput, AContactRadiusGivingNoJunctionStopsTheRunNamingIt) {
+    const auto r = frictionlab("run -q " + every_observer() + " -o out --set friction.contact_radius=1.0", dir_);
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("no block has a junction"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("make contact_radius or hardness smaller"), std::string::npos) << r.output;
+}
+
+TEST_F(HostileInput, ADegenerateMassGetsAStableStepMessageWithoutNan) {
+    const auto r = frictionlab("run -q " + tiny() + " -o out --set bulk.mass=1e-300", dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the stable time step cannot be estimated"), std::string::npos) << r.output;
+}
+
+/// What a full disk leaves behind: the reason named, run.yaml `failed`, no temporary file, no
+/// partial row.
+void expect_clean_failure(const fs::path& out, const std::string& output, const std::string& reason) {
+    EXPECT_NE(output.find(reason), std::string::npos) << output;
+    EXPECT_NE(output.find("cannot write '"), std::string::npos) << output;
+    const YAML::Node record = YAML::LoadFile((out / "run.yaml").string());
+    EXPECT_EQ(record["status"].as<std::string>(), "failed");
+    for (const auto& entry : fs::directory_iterator(out)) {
+        EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+        if (entry.path().extension() == ".csv") EXPECT_GE(whole_rows(entry.path()), 0) << entry.path();
+    }
+}
+
+/// Runs `script` in sh from `dir`, with CLI standing for the frictionlab command; its exit code.
+int shell(const std::string& script, const fs::path& dir) {
+    const std::string command =
+        "cd '" + dir.string() + "' && CLI='" FRICTIONLAB_CLI "' sh -c '" + script + "' > shell.log 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST_F(HostileInput, AFileSizeLimitFailsTheRunCleanly) {
+    // 128 blocks of 512 bytes per file: the loading curve outgrows it early in the loading stage,
+    // part-way through a row.
+    const int code = shell("ulimit -f 128 && \"$CLI\" run -q " + every_observer() + " -o out", dir_);
+    const std::string said = read_text(dir_ / "shell.log");
+    EXPECT_EQ(code, 1) << said;
+    expect_clean_failure(dir_ / "out", said, "File too large (EFBIG)");
+}
+
+TEST_F(HostileInput, AFullDiskFailsTheRunCleanlyNamingEnospc) {
+    // A 256 kB tmpfs in a mount namespace of its own (needs root, else skipped); the outputs are
+    // copied out before the namespace, and the disk, go away.
+    if (shell("unshare -m true", dir_) != 0) GTEST_SKIP() << "no mount namespace here (not root?)";
+    fs::create_directories(dir_ / "disk");
+    const int code = shell("unshare -m sh -c \"mount -t tmpfs -o size=256k tmpfs disk && cd disk && "
+                           "\\\"$CLI\\\" run -q " + every_observer() + " -o out; code=\\$?; cp -r out ../copied; exit \\$code\"",
+                           dir_);
+    const std::string said = read_text(dir_ / "shell.log");
+    EXPECT_EQ(code, 1) << said;
+    expect_clean_failure(dir_ / "copied", said, "No space left on device (ENOSPC)");
+}
+
+}  // namespace
