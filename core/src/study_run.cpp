@@ -124,7 +124,11 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
         row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
         log.info("study case {}/{}: {}", k + 1, cases.size(), row.name);
         try {
-            row.summary = run_scene(scene, registry, log, {false, options.allow_unstable_step, false});
+            RunOptions case_options;  // each case into its own new directory, quietly
+            case_options.allow_unstable_step = options.allow_unstable_step;
+            case_options.command_line = options.command_line;
+            for (const auto& o : cases[k]->overrides) case_options.overrides.push_back(o.text);
+            row.summary = run_scene(scene, registry, log, case_options);
             row.outcome = read_case_outcome(scene.output_directory, scene.stages.front().duration, load_start(scene));
         } catch (const std::exception& e) {
             if (k == 0) throw RunError(fmt::format("the reference run failed: {}", e.what()));

@@ -47,6 +47,9 @@ struct RunOptions {
     bool overwrite = false;            // replace an existing output directory that FrictionLab created
     bool allow_unstable_step = false;  // run a time step above the estimated stable one
     bool live_progress = false;        // one live progress line (terminal); else periodic log lines
+    // Provenance that run.yaml records beside the resolved scene:
+    std::vector<std::string> command_line;  // the command as typed (argv)
+    std::vector<std::string> overrides;     // the `--set key.path=value` list, in order
 };
 
 struct RunSummary {
@@ -61,5 +64,7 @@ RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logge
 
 /// The framework version, e.g. "0.1.0".
 std::string framework_version();
+/// The commit the library was built from (`git describe --always --dirty`), "unknown" outside git.
+std::string git_revision();
 
 }  // namespace frictionlab
