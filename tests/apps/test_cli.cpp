@@ -282,3 +282,33 @@ TEST_F(Cli, RunYamlRecordsTheCommandLineAndTheOverridesAndOneHashWhereverItRuns)
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
+    // On a terminal (a pseudo-terminal from util-linux's script) the run draws one live progress
+    // line; a log line printed after it must start on a cleared line, not after the progress text.
+    const std::string command = std::string("script -qec \"'") + FRICTIONLAB_CLI + "' run " + scene("every_observer.yaml") +
+                                " -o out\" /dev/null";
+    const std::string cmd = "cd '" + dir_.string() + "' && " + command;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string output;
+    std::array<char, 4096> buffer{};
+    for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) output.append(buffer.data(), n);
+    ASSERT_EQ(pclose(pipe), 0) << output;
+    ASSERT_NE(output.find("\rstage "), std::string::npos) << "a live progress line was drawn";
+    int log_lines = 0;
+    for (std::size_t at = output.find("] info: "); at != std::string::npos; at = output.find("] info: ", at + 1)) {
+        const std::size_t start = output.rfind('[', at), line_start = output.rfind('\n', start);
+        const std::string before = output.substr(line_start == std::string::npos ? 0 : line_start + 1,
+                                                 start - (line_start == std::string::npos ? 0 : line_start + 1));
+        // What the terminal still shows left of the log line: the text after the last carriage return.
+        const std::string shown = before.substr(before.rfind('\r') == std::string::npos ? 0 : before.rfind('\r') + 1);
+        EXPECT_EQ(shown.find("stage "), std::string::npos) << "a log line printed after the progress text: '" << shown << "'";
+        ++log_lines;
+    }
+    EXPECT_GT(log_lines, 5);
+}
+
+}  // namespace
