@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -299,10 +300,12 @@ TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
     ASSERT_EQ(pclose(pipe), 0) << output;
     ASSERT_NE(output.find("\rstage "), std::string::npos) << "a live progress line was drawn";
     int log_lines = 0;
-    for (std::size_t at = output.find("] info: "); at != std::string::npos; at = output.find("] info: ", at + 1)) {
-        const std::size_t start = output.rfind('[', at), line_start = output.rfind('\n', start);
-        const std::string before = output.substr(line_start == std::string::npos ? 0 : line_start + 1,
-                                                 start - (line_start == std::string::npos ? 0 : line_start + 1));
+    // "[12:00:00.000] info: ...", the level in colour on a terminal.
+    const std::regex log_line("\\[[0-9:.]+\\] (\x1b\\[[0-9;]*m)?info");
+    for (auto it = std::sregex_iterator(output.begin(), output.end(), log_line); it != std::sregex_iterator(); ++it) {
+        const std::size_t start = static_cast<std::size_t>(it->position()), line_start = output.rfind('\n', start);
+        const std::size_t from = line_start == std::string::npos ? 0 : line_start + 1;
+        const std::string before = output.substr(from, start - from);
         // What the terminal still shows left of the log line: the text after the last carriage return.
         const std::string shown = before.substr(before.rfind('\r') == std::string::npos ? 0 : before.rfind('\r') + 1);
         EXPECT_EQ(shown.find("stage "), std::string::npos) << "a log line printed after the progress text: '" << shown << "'";
