@@ -2,6 +2,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -28,6 +29,7 @@
 #include "frictionlab/campaign_mpi.hpp"
 #include "frictionlab/campaign_runner.hpp"
 #include "frictionlab/output_directory.hpp"
+#include "frictionlab/stable_step_check.hpp"
 #include "frictionlab/study.hpp"
 #include "frictionlab/study_run.hpp"
 #include "frictionlab/sweep.hpp"
@@ -228,6 +230,27 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
     log.info("sweep: {} cases, {} failed, {} finished earlier; tables in {}", records.size(), failed, reused,
              (std::filesystem::path(output) / "sweep.csv").string());
     return failed > 0 ? fl::exit_code::run_failure : fl::exit_code::ok;
+/// The subcommand a mistyped first word was probably meant to be: "unknown command 'rn'; did you
+/// mean 'run'?". CLI11 would only say the argument was not expected. Global options and their
+/// values before the subcommand are skipped; empty if the first word is a subcommand or absent.
+std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
+    std::vector<std::string> names;
+    for (const auto* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+    for (int i = 1; i < argc; ++i) {
+        const std::string word = argv[i];
+        if (word == "--log-level" || word == "--plugin-path") {
+            ++i;  // its value
+            continue;
+        }
+        if (word.starts_with("-")) continue;
+        if (std::find(names.begin(), names.end(), word) != names.end()) return "";
+        const std::string guess = fl::did_you_mean(word, names);
+        std::string known;
+        for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+        return "unknown command '" + word + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
+               " (commands: " + known + ")";
+    }
+    return "";
 }
 
 /// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
@@ -277,11 +300,13 @@ void attach_run_flags(CLI::App& cmd, fl::RunOptions& options, bool& removed_forc
 int main(int argc, char** argv) {
     CLI::App app{"FrictionLab: simulations of the onset of frictional sliding.\n"
                  "Scenes are YAML files naming a bulk model, friction law, loaders, integrator, stages and observers."};
-    app.set_version_flag("--version", "frictionlab " + fl::framework_version());
+    app.set_version_flag("--version", "frictionlab " + fl::framework_version() + " (git " + fl::git_revision() + ")");
     app.require_subcommand(1);
     app.fallthrough();
 
     Common common;
+    // Before the subcommand (`frictionlab -q run ...`) as well as after it.
+    common.attach(app);
     std::filesystem::path scene_file;
     std::vector<std::string> overrides;
     std::string output;
@@ -296,9 +321,12 @@ int main(int argc, char** argv) {
     attach_run_flags(*run, options, removed_force);
     common.attach(*run);
 
-    auto* check = app.add_subcommand("check", "Validate a scene, study or sweep; report every error with file:line:column");
+    auto* check = app.add_subcommand(
+        "check", "Validate a scene (and estimate its stable time step), study or sweep; report every error with "
+                 "file:line:column");
     check->add_option("scene", scene_file, "Scene, study or sweep file (YAML)")->required();
     check->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
+    auto* check_output = check->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
     common.attach(*check);
 
     auto* list = app.add_subcommand("list", "List every kind and type, with the library that provides it");
@@ -343,6 +371,10 @@ int main(int argc, char** argv) {
     attach_run_flags(*sweep_cmd, options, removed_force);
     common.attach(*sweep_cmd);
 
+    if (const auto unknown = unknown_subcommand(app, argc, argv); !unknown.empty()) {
+        std::cerr << "frictionlab: " << unknown << "\n";
+        return fl::exit_code::bad_input;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -358,7 +390,9 @@ int main(int argc, char** argv) {
                    "--allow-unstable-step runs a time step above the estimated stable one");
         return fl::exit_code::bad_input;
     }
-    if ((run_output->count() > 0 || study_output->count() > 0 || sweep_output->count() > 0) && output.empty()) {
+    if ((run_output->count() > 0 || check_output->count() > 0 || study_output->count() > 0 ||
+         sweep_output->count() > 0) &&
+        output.empty()) {
         log->error("-o/--output is empty: name an output directory");
         return fl::exit_code::bad_input;
     }
@@ -370,11 +404,23 @@ int main(int argc, char** argv) {
             return sweep(scene_file, output, 0, options, true, common, registry, *log);
         if (*sweep_cmd) return sweep(sweep_file, output, jobs, options, check_only, common, registry, *log);
         if (*run || *check) {
+            options.command_line.assign(argv, argv + argc);
+            options.overrides = overrides;  // as given: -o is recorded with the command line
             if (!output.empty()) overrides.push_back("output=" + output);
             auto scene = read_scene(scene_file, overrides, common, registry);
             if (!scene) return fl::exit_code::bad_input;
             if (*check) {
                 fl::check_scene_builds(*scene, registry, *log);
+                // The components are built to estimate the stable step: their own log lines only
+                // if asked for.
+                auto quiet = common.logger();
+                if (common.log_level == "info") quiet->set_level(spdlog::level::warn);
+                fl::Diagnostics diagnostics;
+                fl::check_stable_steps(*scene, registry, *quiet, diagnostics);
+                if (!diagnostics.empty()) {
+                    std::cerr << diagnostics.format() << "1 error in " << scene_file.string() << "\n";
+                    return fl::exit_code::bad_input;
+                }
                 std::cout << scene_file.string() << ": ok\n";
                 return fl::exit_code::ok;
             }
@@ -385,10 +431,15 @@ int main(int argc, char** argv) {
             log->info("done: {} steps, {:.6g} s simulated in {:.3g} s wall ({:.3g} steps/s); outputs in {}",
                       summary.steps, summary.simulated_time, summary.wall_seconds,
                       summary.steps / std::max(summary.wall_seconds, 1e-9), scene->output_directory.string());
+            // The one line on stdout, for scripts: `out=$(frictionlab run scene.yaml)`.
+            std::cout << scene->output_directory.string() << std::endl;
             return fl::exit_code::ok;
         }
         if (*plot_cmd) return plot(runs, output);
-        if (*study_cmd) return study(study_file, output, options, check_only, common, registry, *log);
+        if (*study_cmd) {
+            options.command_line.assign(argv, argv + argc);
+            return study(study_file, output, options, check_only, common, registry, *log);
+        }
         fl::load_plugins(registry, common.directories({}));
         if (*list) {
             for (const auto* t : all_types(registry))

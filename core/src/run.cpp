@@ -13,6 +13,8 @@
 #include <memory>
 
 #include <fmt/format.h>
+#include <spdlog/details/null_mutex.h>
+#include <spdlog/sinks/base_sink.h>
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/atomic_file.hpp"
@@ -60,6 +62,7 @@ struct ObserverSlot {
 /// The run's record: what, with what, how far. Rewritten at start and end (and on failure).
 struct RunRecord {
     const RunInfo& info;
+    const RunOptions& options;
     std::string status = "running";
     std::string error;  // why it failed, or what interrupted it
     RunSummary summary;
@@ -91,6 +94,8 @@ struct RunRecord {
         if (!error.empty())
             y << YAML::Key << (status == "interrupted" ? "interrupted_by" : "error") << YAML::Value << error;
         y << YAML::Key << "scene_file" << YAML::Value << info.scene_file.string();
+        y << YAML::Key << "command_line" << YAML::Value << YAML::Flow << options.command_line;
+        y << YAML::Key << "overrides" << YAML::Value << YAML::Flow << options.overrides;
         y << YAML::Key << "scene_hash" << YAML::Value << info.scene_hash;
         y << YAML::Key << "seed" << YAML::Value << info.seed;
         y << YAML::Key << "steps" << YAML::Value << summary.steps;
@@ -146,10 +151,36 @@ struct RunRecord {
     }
 };
 
+/// Clears the live progress line before a log line is printed over it; the line is drawn again at
+/// the next update.
+class ProgressLineEraser : public spdlog::sinks::base_sink<spdlog::details::null_mutex> {
+public:
+    bool shown = false;
+
+    void erase() {
+        if (shown) std::fprintf(stderr, "\r%-100s\r", ""), std::fflush(stderr);
+        shown = false;
+    }
+
+protected:
+    void sink_it_(const spdlog::details::log_msg&) override { erase(); }
+    void flush_() override {}
+};
+
 /// Live progress on a terminal, periodic log lines otherwise.
 class Progress {
 public:
-    Progress(spdlog::logger& log, bool live) : log_(log), live_(live), start_(Clock::now()), last_(start_) {}
+    Progress(spdlog::logger& log, bool live) : log_(log), live_(live), start_(Clock::now()), last_(start_) {
+        // First among the logger's sinks, so the line is gone before any of them prints.
+        if (live_) log_.sinks().insert(log_.sinks().begin(), eraser_);
+    }
+    ~Progress() {
+        finish();
+        auto& sinks = log_.sinks();
+        sinks.erase(std::remove(sinks.begin(), sinks.end(), eraser_), sinks.end());
+    }
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
 
     void update(const StageInfo& stage, double t, long long steps) {
         const auto now = Clock::now();
@@ -161,18 +192,17 @@ public:
         const double eta = done > 0 ? (1 - done) / done * (wall - stage_wall_) : 0;
         const std::string line = fmt::format("stage {} ({}): t = {:.6g} s, {:5.1f} %, {:.3g} steps/s, ETA {:.0f} s",
                                              stage.index + 1, stage.name, t, 100 * done, rate, eta);
-        if (live_) std::fprintf(stderr, "\r%-100s", line.c_str()), std::fflush(stderr);
+        if (live_) std::fprintf(stderr, "\r%-100s", line.c_str()), std::fflush(stderr), eraser_->shown = true;
         else log_.info(line);
         last_ = now;
         last_steps_ = steps;
     }
     void stage_started() { stage_wall_ = std::chrono::duration<double>(Clock::now() - start_).count(); }
-    void finish() {
-        if (live_) std::fprintf(stderr, "\r%-100s\r", ""), std::fflush(stderr);
-    }
+    void finish() { eraser_->erase(); }
 
 private:
     spdlog::logger& log_;
+    std::shared_ptr<ProgressLineEraser> eraser_ = std::make_shared<ProgressLineEraser>();
     bool live_;
     Clock::time_point start_, last_;
     long long last_steps_ = 0;
@@ -199,7 +229,7 @@ public:
     }
 
     RunSummary execute() {
-        RunRecord record{sim_.info(), "running", "", {}};
+        RunRecord record{sim_.info(), options_, "running", "", {}};
         record.write(output_);
         const auto start = Clock::now();
         const std::clock_t cpu_start = std::clock();

@@ -65,12 +65,14 @@ std::vector<std::string> plugin_path_texts(const Scene& scene) {
 
 }  // namespace
 
-std::string resolved_yaml(const Scene& scene, const Registry& registry) {
+namespace {
+
+std::string scene_yaml(const Scene& scene, const Registry& registry, bool with_output) {
     YAML::Emitter out;
     out << YAML::BeginMap;
     emit_key(out, "title", scene.title);
     emit_key(out, "seed", static_cast<std::int64_t>(scene.seed));
-    emit_key(out, "output", scene.output_directory.string());
+    if (with_output) emit_key(out, "output", scene.output_directory.string());
     emit_key(out, "plugin_paths", plugin_path_texts(scene));
     out << YAML::Key << "bulk" << YAML::Value;
     emit_component(out, Kind::bulk_model, scene.bulk, registry);
@@ -88,6 +90,12 @@ std::string resolved_yaml(const Scene& scene, const Registry& registry) {
     out << YAML::EndMap;
     return std::string(out.c_str()) + "\n";
 }
+
+}  // namespace
+
+std::string resolved_yaml(const Scene& scene, const Registry& registry) { return scene_yaml(scene, registry, true); }
+
+std::string physics_yaml(const Scene& scene, const Registry& registry) { return scene_yaml(scene, registry, false); }
 
 std::string fnv1a_hex(const std::string& text) {
     std::uint64_t hash = 14695981039346656037ull;

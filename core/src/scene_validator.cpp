@@ -158,6 +158,7 @@ private:
         keys.other_keys = {"type"};
         keys.report_unknown = info != nullptr;
         c.section = read_section(entry, path, keys, reporter_);
+        for (const auto& [key, given] : c.section.given) c.spec.value_where[key] = reporter_.where(given.site());
         if (info)
             for (const auto& p : info->params) c.spec.values[p.key] = value_or(c.section.values, p.key, p.default_value);
         c.spec.stages = value_or(c.section.values, "stages", std::vector<std::string>());
@@ -328,7 +329,7 @@ Scene validate_scene(const YAML::Node& root, const SourceMap& sources, const std
     Diagnostics reported_by_plugin_paths;
     scene.plugin_paths = read_plugin_paths(root, sources, folder, reported_by_plugin_paths);
     scene.resolved_yaml = resolved_yaml(scene, registry);
-    scene.hash = fnv1a_hex(scene.resolved_yaml);
+    scene.hash = fnv1a_hex(physics_yaml(scene, registry));
     return scene;
 }
 

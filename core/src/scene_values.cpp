@@ -174,6 +174,8 @@ void report_unknown(const YAML::Node& key, const std::string& path, const Sectio
                    "unknown key " + quote(name) + " (the keys of " + keys.what + " are: " + list + ")");
 }
 
+bool is_whole(double x) { return std::isfinite(x) && x == std::trunc(x) && std::fabs(x) < 0x1p53; }
+
 std::string real_text(double x) {
     if (std::isnan(x)) return ".nan";
     if (std::isinf(x)) return x > 0 ? ".inf" : "-.inf";
@@ -270,7 +272,9 @@ void emit_value(YAML::Emitter& out, const ParamValue& value) {
         void operator()(const std::string& s) const { emit_string(out, s); }
         void operator()(const std::vector<double>& v) const {
             out << YAML::Flow << YAML::BeginSeq;
-            for (double x : v) out << real_text(x);
+            // Lists hold block indices as often as lengths: a whole number is written as one
+            // (`blocks: [5]`), which reads back as the same real.
+            for (double x : v) out << (is_whole(x) ? std::to_string(static_cast<std::int64_t>(x)) : real_text(x));
             out << YAML::EndSeq;
         }
         void operator()(const std::vector<std::string>& v) const {

@@ -22,7 +22,7 @@ std::string yaml_number(double v) { return std::isfinite(v) ? fmt::format("{:.10
 const std::vector<std::string> event_columns{
     "event", "finished", "t_start", "t_end", "duration", "driving_force", "normal_load", "force_ratio",
     "nucleation_block", "nucleation_x", "extent", "extent_over_length", "min_ruptured_x", "max_ruptured_x",
-    "ruptured_blocks", "global", "front_speed", "max_slip"};
+    "ruptured_blocks", "global", "front_speed", "crossing_speed", "max_slip"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay"};
 
 }  // namespace
@@ -123,7 +123,7 @@ void Precursors::end(const RunView& view) {
 void Precursors::write(const RuptureEvent& e) {
     row_.assign({double(e.index), e.finished ? 1.0 : 0.0, e.t_start, e.t_end, e.duration(), e.driving_force,
                  e.normal_load, e.force_ratio(), double(e.nucleation), e.nucleation_x, e.extent, e.extent_over_length,
-                 e.min_x, e.max_x, double(e.ruptured_blocks), e.global ? 1.0 : 0.0, e.front_speed, e.max_slip});
+                 e.min_x, e.max_x, double(e.ruptured_blocks), e.global ? 1.0 : 0.0, e.front_speed, e.crossing_speed, e.max_slip});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {

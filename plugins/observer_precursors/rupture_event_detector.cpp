@@ -105,6 +105,14 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
     e.front_speed = farthest > 0 && delay > 0 ? farthest / delay : nan;
+    e.crossing_speed = nan;
+    if (!(farthest > 0)) return;
+    double halfway = 0, halfway_delay = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
+        const double distance = std::abs(x(static_cast<Index>(i)) - x_nucleation), t = e.first_rupture[i] - e.t_start;
+        if (!std::isnan(t) && distance >= 0.5 * farthest && t < halfway_delay) halfway = distance, halfway_delay = t;
+    }
+    if (delay > halfway_delay && farthest > halfway) e.crossing_speed = (farthest - halfway) / (delay - halfway_delay);
 }
 
 }  // namespace frictionlab

@@ -33,6 +33,7 @@ struct RuptureEvent {
     double extent = 0;             // l = min(L, max_x + l_s/2), m
     double extent_over_length = 0; // l/L
     double front_speed = 0;        // m/s, see RuptureEventDetector; NaN if unresolved
+    double crossing_speed = 0;     // m/s, over the far half of the front's path; NaN if unresolved
 
     double duration() const { return t_end - t_start; }
     double force_ratio() const { return normal_load != 0 ? driving_force / normal_load : std::nan(""); }
@@ -66,6 +67,10 @@ struct RuptureSummary {
 ///   divided by the delay between the event's start and that block's first rupture (of several at
 ///   the same distance, the earliest). A mean speed, resolved to the observation interval; NaN when
 ///   only the nucleation block ruptured or the front crossed within one observation.
+/// - Crossing speed: the same over the far half of the path only, from the first block at least half
+///   the farthest distance from nucleation to the farthest one. A front that creeps near its
+///   nucleation and then crosses the slider fast (Rubinstein et al. 2004) has a mean speed far below
+///   its crossing speed; NaN when the far half was crossed within one observation.
 class RuptureEventDetector {
 public:
     struct Interface {

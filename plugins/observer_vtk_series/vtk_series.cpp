@@ -1,6 +1,7 @@
 #include "vtk_series.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -8,6 +9,7 @@
 
 #include <fmt/format.h>
 #include <vtkCellType.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
@@ -87,8 +89,9 @@ void insert_cells(vtkUnstructuredGrid& grid, int type, const std::vector<std::ar
 }  // namespace
 
 ParamSpec<VtkSeries::Params> VtkSeries::spec() {
-    ParamSpec<Params> s("Lattice snapshots for ParaView: a .vtu file per observation (deformed nodes with displacement, "
-                        "velocity, net force, node-set roles and every published field) and a .pvd collection "
+    ParamSpec<Params> s("Lattice snapshots for ParaView: a .vtu file per observation (nodes at their reference positions with "
+                        "displacement, velocity, net force, node-set roles, every published field and the strain of each "
+                        "cell) and a .pvd collection "
                         "with their simulated times, valid after every snapshot.");
     s.add("prefix", &Params::prefix,
           "Name of the collection <prefix>.pvd and of the folder <prefix>/ of its .vtu files, in the run's output "
@@ -97,6 +100,10 @@ ParamSpec<VtkSeries::Params> VtkSeries::spec() {
           "Draw the lattice as its quad cells or as its springs (line cells); a body without quads uses its springs.")
         .one_of({"quads", "bonds"});
     s.add("compress", &Params::compress, "ZLib-compress the binary data of the .vtu files.");
+    s.add("points", &Params::points,
+          "Points at the reference positions, with `displacement` for ParaView's Warp By Vector, or at the deformed "
+          "positions (then do not warp: the displacement would count twice).")
+        .one_of({"reference", "deformed"});
     s.rule("prefix", prefix_problem);
     return s;
 }
@@ -118,6 +125,8 @@ void VtkSeries::begin(const RunView& view) {
     grid_->SetPoints(points);
     points_ = vtkDoubleArray::SafeDownCast(points->GetData());
     build_cells(body);
+    set_plane_vectors(points_, body.x0, body.z0);  // updated per snapshot only with `points: deformed`
+    add_strain(body);
 
     displacement_ = add_point_array("displacement", 3, "m");
     velocity_ = add_point_array("velocity", 3, "m/s");
@@ -146,6 +155,48 @@ void VtkSeries::build_cells(const Body& body) {
     std::vector<std::array<Index, 1>> vertices(static_cast<std::size_t>(body.size()));
     for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = {static_cast<Index>(i)};
     insert_cells(*grid_, VTK_VERTEX, vertices);
+}
+
+void VtkSeries::add_strain(const Body& body) {
+    if (params_.cells != "quads" || body.cells.empty()) return;
+    // Bilinear quad, corners counter-clockwise: shape-function derivatives at the centre.
+    constexpr double dxi[4] = {-0.25, 0.25, 0.25, -0.25}, deta[4] = {-0.25, -0.25, 0.25, 0.25};
+    corner_gradients_.reserve(body.cells.size());
+    for (const auto& c : body.cells) {
+        double j11 = 0, j12 = 0, j21 = 0, j22 = 0;  // d(x, z)/d(xi, eta)
+        for (int k = 0; k < 4; ++k) {
+            j11 += dxi[k] * body.x0[c[k]], j12 += dxi[k] * body.z0[c[k]];
+            j21 += deta[k] * body.x0[c[k]], j22 += deta[k] * body.z0[c[k]];
+        }
+        const double det = j11 * j22 - j12 * j21;
+        std::array<std::array<double, 2>, 4> g{};
+        for (int k = 0; k < 4; ++k)
+            g[k] = {(j22 * dxi[k] - j12 * deta[k]) / det, (-j21 * dxi[k] + j11 * deta[k]) / det};  // d/dx, d/dz
+        corner_gradients_.push_back(g);
+    }
+    const auto cells = static_cast<vtkIdType>(body.cells.size());
+    strain_xx_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "strain_xx", 1, cells);
+    strain_zz_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "strain_zz", 1, cells);
+    strain_xz_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "strain_xz", 1, cells);
+    units_.insert(units_.end(), {"strain_xx: 1", "strain_zz: 1", "strain_xz: 1"});
+}
+
+void VtkSeries::update_strain(const StageView& s, const Body& body) {
+    for (std::size_t c = 0; c < corner_gradients_.size(); ++c) {
+        double ux = 0, uz = 0, wx = 0, wz = 0;
+        for (int k = 0; k < 4; ++k) {
+            const Index n = body.cells[c][k];
+            const double u = s.x[n] - body.x0[n], w = s.z[n] - body.z0[n];
+            ux += corner_gradients_[c][k][0] * u, uz += corner_gradients_[c][k][1] * u;
+            wx += corner_gradients_[c][k][0] * w, wz += corner_gradients_[c][k][1] * w;
+        }
+        const auto i = static_cast<vtkIdType>(c);
+        strain_xx_->SetValue(i, ux);
+        strain_zz_->SetValue(i, wz);
+        strain_xz_->SetValue(i, 0.5 * (uz + wx));
+    }
+    for (auto* a : {strain_xx_, strain_zz_, strain_xz_})
+        if (a) a->Modified();
 }
 
 vtkDoubleArray* VtkSeries::add_point_array(const std::string& name, int components, const std::string& unit) {
@@ -226,8 +277,11 @@ void VtkSeries::update(const RunView& view) {
     const StageView& s = view.state;
     const Body& body = view.body;
     const Eigen::VectorXd& f = view.system.net_force();
-    set_plane_vectors(points_, s.x, s.z);
-    grid_->GetPoints()->Modified();
+    if (params_.points == "deformed") {
+        set_plane_vectors(points_, s.x, s.z);
+        grid_->GetPoints()->Modified();
+    }
+    update_strain(s, body);
     set_plane_vectors(displacement_, s.x - body.x0, s.z - body.z0);
     set_plane_vectors(velocity_, s.vx, s.vz);
     set_plane_vectors(net_force_, f.head(body.size()), f.tail(body.size()));
@@ -262,10 +316,22 @@ void VtkSeries::write_snapshot(const RunView& view) {
         writer_->SetFileName(tmp.c_str());
         return writer_->Write() == 1;
     });
-    // Shortest text that reads back as the same double.
-    datasets_ += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", view.state.t, name);
+    datasets_ += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                             collection_time(view.state.t, view.step), name);
     ++snapshots_;
     write_collection(view.output_directory);
+}
+
+std::string VtkSeries::collection_time(double t, long long steps) {
+    if (steps <= 0 || t <= 0 || !std::isfinite(t)) return fmt::format("{}", t);  // shortest exact text
+    // Decimals that resolve a hundredth of the mean step; the value rounded to them, trailing zeros cut.
+    const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(t / static_cast<double>(steps)))), 0, 17);
+    std::string text = fmt::format("{:.{}f}", t, decimals);
+    if (text.find('.') != std::string::npos) {
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+    }
+    return text;
 }
 
 void VtkSeries::write_collection(const std::filesystem::path& output_directory) const {

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,11 +30,13 @@ namespace frictionlab {
 /// are binary appended, ZLib-compressed unless `compress: false`. A state that was just written
 /// (the run observes again at stage ends and at the end) is not written twice.
 ///
-/// Geometry: one point per node at its deformed position. The model plane x-z is drawn as VTK's x-y,
-/// point = (x, z, 0), so ParaView's default 2D view shows the slider upright, base at the bottom.
-/// Cells are the body's quads (VTK_QUAD) or, with `cells: bonds` or for a body without quads (a
-/// chain), its springs as lines (VTK_LINE). Connectivity is built once in begin(); a snapshot only
-/// updates point coordinates and array values.
+/// Geometry: one point per node at its reference position (x0, z0), written once, with the
+/// `displacement` array for ParaView's Warp By Vector (scale 1: the deformed lattice; larger: the
+/// deformation magnified); `points: deformed` writes the deformed positions instead, and then a warp
+/// would count the displacement twice. The model plane x-z is drawn as VTK's x-y, point = (x, z, 0),
+/// so ParaView's default 2D view shows the slider upright, base at the bottom. Cells are the body's
+/// quads (VTK_QUAD) or, with `cells: bonds` or for a body without quads (a chain), its springs as
+/// lines (VTK_LINE). Connectivity is built once in begin(); a snapshot updates array values.
 ///
 /// Point data, SI units; vectors are (x, z, 0) like the points:
 ///
@@ -49,6 +52,13 @@ namespace frictionlab {
 /// junction: an interior block has no normal force rather than a zero one, and ParaView's colour
 /// ranges and filters skip NaN (it draws them in the NaN colour).
 ///
+/// Cell data, quads only: strain_xx, strain_zz, strain_xz (1), the small-strain tensor of each cell
+/// from its corners' displacements (bilinear quad, displacement gradient at its centre; exact for a
+/// cell deformed affinely), what one looks at around a rupture tip.
+///
+/// The .pvd lists each snapshot at its simulated time rounded to a hundredth of the mean step so far
+/// (0.408, not the 0.40800000000967207 a sum of two million steps gives); TIME in the file is exact.
+///
 /// Field data: TIME (s), TimeValue (the same; VTK's readers take a file's time from this name when
 /// the .vtu files are opened without the .pvd), STEP, stage, stage_index, every published scalar
 /// (e.g. driving_force in N), and the run record: framework_version, scene_hash, seed, scene_file,
@@ -62,6 +72,7 @@ public:
         std::string prefix = "lattice";
         std::string cells = "quads";
         bool compress = true;
+        std::string points = "reference";
     };
     static constexpr std::string_view type = "vtk_series";
     static ParamSpec<Params> spec();
@@ -76,6 +87,10 @@ public:
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
     void end(const RunView& view) override;
+
+    /// The time a snapshot is listed at in the .pvd: `t` after `steps` steps, rounded to a hundredth
+    /// of the mean step t/steps, as the shortest text (the sum of many steps drifts in the last digits).
+    static std::string collection_time(double t, long long steps);
 
     /// The collection file, in the output directory.
     std::filesystem::path collection_file(const std::filesystem::path& output_directory) const;
@@ -99,6 +114,8 @@ private:
     };
 
     void build_cells(const Body& body);
+    void add_strain(const Body& body);
+    void update_strain(const StageView& s, const Body& body);
     vtkDoubleArray* add_point_array(const std::string& name, int components, const std::string& unit);
     void add_role(const Body& body);
     void add_fields(const RunView& view);
@@ -115,6 +132,10 @@ private:
     // Owned by grid_; kept to update in place.
     vtkDoubleArray *points_ = nullptr, *displacement_ = nullptr, *velocity_ = nullptr, *net_force_ = nullptr;
     std::vector<NodeField> fields_;
+    /// Per quad: d(u, w)/d(x, z) = sum_k gradient[k] (u_k, w_k) over its corners, from the reference
+    /// geometry once; the strain arrays (none without quads).
+    std::vector<std::array<std::array<double, 2>, 4>> corner_gradients_;
+    vtkDoubleArray *strain_xx_ = nullptr, *strain_zz_ = nullptr, *strain_xz_ = nullptr;
     JunctionCounts junctions_;
     When when_;
     std::vector<std::pair<const double*, vtkDoubleArray*>> scalars_;

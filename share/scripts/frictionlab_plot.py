@@ -8,9 +8,17 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
   four_phase_<i>  pinned fraction, state fractions, slip, velocity and forces of interface block i
                   around the first event that reaches it (Li2020 Fig. 9; Ben-David et al. 2010)
   spacetime       slip velocity and pinned fraction along the interface against time
-  fronts          rupture-front position against time since nucleation, one curve per event
+  fronts          rupture-front position against time since nucleation, one curve per event, with
+                  the lattice's shear and Rayleigh wave speeds c_S and c_R for reference
   energy          the energy balance: input, stored, kinetic, dissipated, residual
-and, over all the runs given, precursor_lengths: l/L against F_S/F_N (Li2020 Figs. 7, 8).
+  lattice         the lattice around the first global slip (its VTU snapshot), coloured by slip
+                  velocity, displacement magnified
+and, over all the runs given (into -o, default the first run's plots/): precursor_lengths, l/L
+against F_S/F_N (Li2020 Figs. 7, 8), and with several runs loading_curves, F_S/F_N overlaid.
+
+Every time axis is time since loading started (the start of the last stage, as the loading curve
+has it), and every title names the scene: its title, F_N, theta, h, the friction law and the seed,
+from the run's run.yaml. A panel without data says so.
 
     frictionlab plot SWEEP_DIR                 (a directory `frictionlab sweep` wrote)
 
@@ -52,6 +60,57 @@ def table(run, name):
     return np.atleast_1d(data)
 
 
+def scene_of(run):
+    """The resolved scene the run recorded in run.yaml (a dict; empty if unreadable)."""
+    try:
+        import yaml
+        with open(os.path.join(run, "run.yaml")) as f:
+            return (yaml.safe_load(f) or {}).get("scene") or {}
+    except Exception:  # noqa: BLE001 - a figure without its title is still a figure
+        return {}
+
+
+def component(scene, kind, type_name):
+    for c in scene.get(kind) or []:
+        if c.get("type") == type_name:
+            return c
+    return {}
+
+
+def run_label(run, short=False):
+    """'title: F_N = 400 N, θ = 0, h = 5 mm, three_state_junctions, seed 42' from run.yaml."""
+    scene = scene_of(run)
+    if not scene:
+        return os.path.basename(os.path.abspath(run))
+    facts = []
+    normal, driving = component(scene, "loaders", "normal_load"), component(scene, "loaders", "driving_spring")
+    if "total_force" in normal:
+        facts.append(f"$F_N$ = {normal['total_force']:g} N")
+    if "theta" in normal:
+        facts.append(rf"$\theta$ = {normal['theta']:g}")
+    if "height" in driving:
+        facts.append(f"h = {driving['height'] * 1e3:g} mm")
+    law = (scene.get("friction") or {}).get("type")
+    if law:
+        facts.append(law)
+    facts.append(f"seed {scene.get('seed', 0)}")
+    title = scene.get("title") or os.path.basename(os.path.abspath(run))
+    return ", ".join(facts) if short else f"{title}\n" + ", ".join(facts)
+
+
+def no_data(ax, what):
+    """A panel with nothing to draw says so instead of staying empty."""
+    ax.text(0.5, 0.5, what, transform=ax.transAxes, ha="center", va="center", color="0.4", fontsize=9)
+
+
+def loading_start(run):
+    """Time at which loading starts (start of the last stage), from loading_curve.csv; 0 if unknown."""
+    curve = table(run, "loading_curve.csv")
+    if curve is None or "stage" not in curve.dtype.names:
+        return 0.0
+    return float(load_stage_start(curve))
+
+
 def save(fig, out_dir, name):
     os.makedirs(out_dir, exist_ok=True)
     for ext in ("png", "svg"):
@@ -84,10 +143,12 @@ def loading_curve(run, out_dir):
         top.legend(loc="lower right", frameon=False)
         bottom.vlines(t, 0, events["extent_over_length"], color="tab:blue")
         bottom.plot(t, events["extent_over_length"], ".", color="tab:blue")
+    else:
+        no_data(bottom, "no rupture events recorded (no precursors observer)")
     bottom.set_ylim(0, 1.05)
     bottom.set_ylabel("$l/L$")
     bottom.set_xlabel("time since loading started (s)")
-    top.set_title(os.path.basename(os.path.abspath(run)))
+    top.set_title(run_label(run), fontsize=9)
     save(fig, out_dir, "loading_curve")
 
 
@@ -100,16 +161,59 @@ def precursor_lengths(runs, out_dir):
             continue
         events = np.atleast_1d(events)
         ax.plot(events["force_ratio"], events["extent_over_length"], "o-", ms=4, lw=0.8,
-                label=os.path.basename(os.path.abspath(run)))
+                label=run_label(run, short=len(runs) > 1))
         plotted = True
-    if not plotted:
-        plt.close(fig)
-        return
+    if plotted:
+        ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
+    else:
+        no_data(ax, "no rupture events in " + ("these runs" if len(runs) > 1 else "this run"))
     ax.set_xlabel("$F_S/F_N$ at nucleation")
     ax.set_ylabel("$l/L$")
     ax.set_ylim(0, 1.05)
-    ax.legend(frameon=False, fontsize=8)
+    if len(runs) == 1:
+        ax.set_title(run_label(runs[0]), fontsize=8)
     save(fig, out_dir, "precursor_lengths")
+
+
+def loading_curves(runs, out_dir):
+    """F_S/F_N against time since loading started, every run overlaid."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for run in runs:
+        curve = table(run, "loading_curve.csv")
+        if curve is None or "driving_force_over_normal_load" not in curve.dtype.names:
+            continue
+        t0 = load_stage_start(curve)
+        loading = curve["time"] >= t0
+        ax.plot(curve["time"][loading] - t0, curve["driving_force_over_normal_load"][loading], lw=1,
+                label=run_label(run, short=True))
+    if ax.lines:
+        ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
+    else:
+        no_data(ax, "no loading curve with F_S/F_N in these runs")
+    ax.set_xlabel("time since loading started (s)")
+    ax.set_ylabel("$F_S/F_N$")
+    save(fig, out_dir, "loading_curves")
+
+
+def phase_boundaries(t, d):
+    """Start of phase I and the ends of phases I-III of one rupture of an interface block (Li2020
+    Fig. 9), times as t:
+    I detachment: from when a tenth of the pinned junctions let go, until the block is fastest;
+    II fast slip: sliding junctions dominate, until dislocated ones outnumber them;
+    III slow slip: dislocated junctions dominate while the block creeps, until pinned ones again
+    outnumber the dislocated; IV rejuvenation: junctions re-pin, the block is stuck.
+    None for a boundary the data do not reach."""
+    peak = int(np.argmax(np.abs(d["velocity"])))
+    letting_go = np.flatnonzero(d["pinned_fraction"][: peak + 1] < 0.9 * d["pinned_fraction"][0])
+    after = np.arange(len(t)) > peak
+    dislocated = np.flatnonzero(after & (d["dislocated_fraction"] > d["sliding_fraction"]))
+    ends = [t[letting_go[0]] if letting_go.size else t[0], t[peak], None, None]
+    if dislocated.size:
+        ends[2] = t[dislocated[0]]
+        repinned = np.flatnonzero((np.arange(len(t)) > dislocated[0]) & (d["pinned_fraction"] > d["dislocated_fraction"]))
+        if repinned.size:
+            ends[3] = t[repinned[0]]
+    return ends
 
 
 def four_phase(run, out_dir):
@@ -124,24 +228,41 @@ def four_phase(run, out_dir):
             continue
         t_det = d["time"][detached[0]]
         window = (d["time"] > t_det - 5e-4) & (d["time"] < t_det + 4e-3)
-        t = (d["time"][window] - t_det) * 1e3
-        fig, axes = plt.subplots(4, 1, sharex=True, figsize=(6, 8))
-        axes[0].plot(t, d["normalised_pinned"][window], "k", label=r"$\tilde N_p$")
+        w = d[window]
+        t = (w["time"] - t_det) * 1e3
+        fig, axes = plt.subplots(4, 1, sharex=True, figsize=(7.5, 8.5))
+        axes[0].plot(t, w["normalised_pinned"], "k", label=r"$\tilde N_p$")
         for name, color in (("pinned", "tab:green"), ("sliding", "tab:red"), ("dislocated", "tab:blue")):
-            axes[0].plot(t, d[name + "_fraction"][window], color=color, lw=1, label=name)
-        axes[0].legend(frameon=False, fontsize=8, ncol=4)
+            axes[0].plot(t, w[name + "_fraction"], color=color, lw=1, label=name)
         axes[0].set_ylabel("fraction")
-        slip = d["slip"][window]
+        slip = w["slip"]
         axes[1].plot(t, (slip - slip[0]) * 1e6, "k")
         axes[1].set_ylabel(r"slip $\Delta$ ($\mu$m)")
-        axes[2].plot(t, d["velocity"][window] * 1e3, "k")
-        axes[2].set_ylabel("velocity (mm/s)")
+        # Log axis: the slow slip of phase III (um/s) is invisible next to the fast slip (m/s).
+        speed = np.abs(w["velocity"])
+        axes[2].semilogy(t, np.maximum(speed, 1e-7), "k")
+        axes[2].set_ylim(1e-7, None)
+        axes[2].set_ylabel("|velocity| (m/s, log)")
         for name, label in (("friction_force", "$f_i$"), ("bond_force_left", "left bond"), ("bond_force_right", "right bond")):
-            axes[3].plot(t, d[name][window], lw=1, label=label)
-        axes[3].legend(frameon=False, fontsize=8)
+            axes[3].plot(t, w[name], lw=1, label=label)
         axes[3].set_ylabel("force (N)")
         axes[3].set_xlabel("time since detachment (ms)")
-        axes[0].set_title(f"block {block}: the four phases of one rupture")
+        for ax in (axes[0], axes[3]):  # beside the axes, never over the curves
+            ax.legend(frameon=False, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1))
+        bounds = phase_boundaries(t, w)
+        starts = bounds
+        stops = bounds[1:] + [t[-1]]
+        for k, (a, b) in enumerate(zip(starts, stops)):
+            if a is None or b is None:
+                continue
+            for ax in axes:
+                if k % 2 == 0:
+                    ax.axvspan(a, b, color="0.93", zorder=0)
+            axes[0].text(0.5 * (a + b), 1.02, ["I", "II", "III", "IV"][k], transform=axes[0].get_xaxis_transform(),
+                         ha="center", va="bottom", fontsize=10, fontweight="bold")
+        paper_block = int(block) + 1
+        axes[0].set_title(f"interface block {paper_block} of the paper (index {block}): the four phases of one rupture\n"
+                          + run_label(run, short=True), fontsize=9, pad=16)
         save(fig, out_dir, f"four_phase_{block}")
 
 
@@ -152,16 +273,40 @@ def spacetime(run, out_dir):
     panels = [(velocity, "log$_{10}$ |slip velocity| (m/s)", lambda v: np.log10(np.abs(v) + 1e-9), "magma")]
     if pinned is not None:
         panels.append((pinned, "pinned fraction", lambda v: v, "viridis"))
+    t0 = loading_start(run)  # one time origin with the loading curve
     fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(7, 3 * len(panels)), squeeze=False)
     for ax, (data, label, transform, cmap) in zip(axes[:, 0], panels):
         blocks = [n for n in data.dtype.names if n.startswith("block_")]
         values = np.column_stack([data[b] for b in blocks])
         image = ax.imshow(transform(values).T, aspect="auto", origin="lower", cmap=cmap, interpolation="nearest",
-                          extent=[data["time"][0], data["time"][-1], -0.5, len(blocks) - 0.5])
+                          extent=[data["time"][0] - t0, data["time"][-1] - t0, -0.5, len(blocks) - 0.5])
         fig.colorbar(image, ax=ax, label=label)
         ax.set_ylabel("interface block (trailing edge = 0)")
-    axes[-1, 0].set_xlabel("time (s)")
+    axes[0, 0].set_title(run_label(run), fontsize=9)
+    axes[-1, 0].set_xlabel("time since loading started (s; negative: settling)")
     save(fig, out_dir, "spacetime")
+
+
+def wave_speeds(scene):
+    """Long-wave shear and Rayleigh speeds of a spring_lattice_2d (theory.md §1: C44 = 3E/8,
+    C11 = 3 C44; the lattice's density puts M/N on every node), or None for another bulk."""
+    bulk = scene.get("bulk") or {}
+    if bulk.get("type") != "spring_lattice_2d":
+        return None
+    try:  # PyYAML (YAML 1.1) reads 3e+09 as a string: float() takes it
+        length, width, mass, modulus = (float(bulk[k]) for k in ("length", "width", "mass", "youngs_modulus"))
+        spacing = length / (int(bulk["nx"]) - 1)
+        density = mass / (int(bulk["nx"]) * int(bulk["nz"]) * spacing ** 2 * width)
+        c_s = np.sqrt(0.375 * modulus / density)
+    except (KeyError, TypeError, ValueError, ZeroDivisionError):
+        return None
+    # Rayleigh: (2 - x^2)^2 = 4 sqrt(1 - x^2) sqrt(1 - x^2 c_S^2/c_L^2), x = c_R/c_S, c_L^2 = 3 c_S^2.
+    lo, hi = 0.5, 0.999
+    for _ in range(60):
+        x = 0.5 * (lo + hi)
+        f = (2 - x * x) ** 2 - 4 * np.sqrt(1 - x * x) * np.sqrt(1 - x * x / 3)
+        lo, hi = (lo, x) if f > 0 else (x, hi)  # R < 0 below the root, > 0 above
+    return c_s, c_s * 0.5 * (lo + hi)
 
 
 def fronts(run, out_dir):
@@ -169,18 +314,36 @@ def fronts(run, out_dir):
     f, events = table(run, "precursor_fronts.csv"), table(run, "precursors.csv")
     if f is None or events is None:
         return
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = plt.subplots(figsize=(7, 4.5))
     cmap = plt.get_cmap("viridis")
     ids = np.unique(f["event"])
     for k, event in enumerate(ids):
-        rows = f["event"] == event
-        order = np.argsort(f["delay"][rows])
+        rows = f[f["event"] == event]
+        rows = rows[np.lexsort((rows["distance"], rows["delay"]))]  # in time order, nearest first at ties
         is_global = events["global"][events["event"] == event].max() > 0.5
-        ax.plot(f["delay"][rows][order] * 1e3, f["x"][rows][order] * 1e3, ".-" if is_global else "o-", ms=3,
-                lw=0.8, color=cmap(k / max(len(ids) - 1, 1)), label=f"event {int(event)}" + (" (global)" if is_global else ""))
+        # Points only: two fronts of one event (from both sides) joined by a line would zig-zag.
+        ax.plot(rows["delay"] * 1e3, rows["x"] * 1e3, "." if is_global else "o", ms=4 if is_global else 3,
+                color=cmap(k / max(len(ids) - 1, 1)), label=f"event {int(event)}" + (" (global)" if is_global else ""))
+    speeds = wave_speeds(scene_of(run))
+    global_ids = events["event"][events["global"] > 0.5]
+    if speeds and global_ids.size:
+        # Through the first global slip's arrival at its farthest block: a crossing at c_S or c_R
+        # would run parallel to these.
+        rows = f[f["event"] == global_ids[0]]
+        last = rows[np.argmax(rows["delay"])]
+        x0, t_far, x_far = float(np.min(rows["x"])), float(last["delay"]), float(last["x"])
+        if x_far < x0 + 1e-12:  # a front running towards the trailing edge
+            x0 = float(np.max(rows["x"]))
+        for c, name, style in ((speeds[0], "$c_S$", "--"), (speeds[1], "$c_R$", ":")):
+            t_start = t_far - abs(x_far - x0) / c
+            ax.plot([t_start * 1e3, t_far * 1e3], [x0 * 1e3, x_far * 1e3], style, color="0.2", lw=1.2,
+                    label=f"{name} = {c:.0f} m/s (lattice)")
+    elif not ids.size:
+        no_data(ax, "no rupture fronts")
     ax.set_xlabel("time since nucleation (ms)")
     ax.set_ylabel("front position x (mm)")
-    ax.legend(frameon=False, fontsize=7)
+    ax.set_title(run_label(run), fontsize=9)
+    ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     save(fig, out_dir, "fronts")
 
 
@@ -188,8 +351,9 @@ def energy(run, out_dir):
     e = table(run, "energy.csv")
     if e is None:
         return
-    t = e["time"]
+    t = e["time"] - loading_start(run)
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 6), gridspec_kw={"height_ratios": [3, 1]})
+    top.set_title(run_label(run), fontsize=9)
     for name in ("input", "stored_energy", "kinetic_energy", "dissipated_damping", "dissipated_friction"):
         if name in e.dtype.names:
             top.plot(t, e[name], label=name.replace("_", " "))
@@ -197,8 +361,62 @@ def energy(run, out_dir):
     top.legend(frameon=False, fontsize=8)
     bottom.plot(t, e["residual"], "k", lw=1)
     bottom.set_ylabel("balance residual (J)")
-    bottom.set_xlabel("time (s)")
+    bottom.set_xlabel("time since loading started (s; negative: settling)")
     save(fig, out_dir, "energy")
+
+
+def lattice(run, out_dir, magnify=200.0):
+    """The VTU snapshot nearest after the first global slip started (or the last one), read with
+    VTK's reader: cells at their reference positions plus the displacement magnified, coloured by
+    the x slip velocity of their nodes."""
+    pvd = os.path.join(run, "lattice.pvd")
+    if not os.path.exists(pvd):
+        return
+    try:
+        import xml.etree.ElementTree as ElementTree
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+    except ImportError:
+        print("frictionlab plot: no VTK for Python (Debian: python3-vtk9); lattice figure skipped", file=sys.stderr)
+        return
+    snapshots = [(float(d.get("timestep")), d.get("file")) for d in ElementTree.parse(pvd).getroot().iter("DataSet")]
+    if not snapshots:
+        return
+    events = table(run, "precursors.csv")
+    chosen = snapshots[-1]
+    if events is not None and (events["global"] > 0.5).any():
+        t_global = events["t_start"][events["global"] > 0.5][0]
+        later = [s for s in snapshots if s[0] >= t_global]
+        chosen = later[0] if later else chosen
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(run, chosen[1]))
+    reader.Update()
+    grid = reader.GetOutput()
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+    data = grid.GetPointData()
+    if grid.GetNumberOfCells() == 0 or data.GetArray("displacement") is None:
+        return
+    displacement = vtk_to_numpy(data.GetArray("displacement"))[:, :2]
+    # The slider's rigid slip would hide its deformation: magnify the displacement less its mean.
+    deformed = points + magnify * (displacement - displacement.mean(axis=0))
+    velocity = vtk_to_numpy(data.GetArray("velocity"))[:, 0]
+    from matplotlib.collections import PolyCollection
+    cells = [[grid.GetCell(c).GetPointId(k) for k in range(grid.GetCell(c).GetNumberOfPoints())]
+             for c in range(grid.GetNumberOfCells())]
+    fig, ax = plt.subplots(figsize=(9, 3.2))
+    polygons = PolyCollection([deformed[c] * 1e3 for c in cells], array=np.array([velocity[c].mean() for c in cells]),
+                              cmap="magma", edgecolors="0.5", linewidths=0.2)
+    ax.add_collection(polygons)
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    fig.colorbar(polygons, ax=ax, label="slip velocity $v_x$ (m/s)", shrink=0.8)
+    t0 = loading_start(run)
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("z (mm)")
+    ax.set_title(f"{run_label(run)}\nlattice at {(chosen[0] - t0) * 1e3:.3f} ms since loading started, "
+                 f"deformation (displacement less its mean {displacement.mean(axis=0)[0] * 1e6:.1f} um in x) x{magnify:g}",
+                 fontsize=8)
+    save(fig, out_dir, "lattice")
 
 
 STUDY_ERRORS = [
@@ -343,9 +561,13 @@ def main(argv):
             return 2
     for run in args.runs:
         out = os.path.join(run, "plots")
-        for figure in (loading_curve, four_phase, spacetime, fronts, energy):
+        for figure in (loading_curve, four_phase, spacetime, fronts, energy, lattice):
             figure(run, out)
-    precursor_lengths(args.runs, args.output or os.path.join(args.runs[0], "plots"))
+    out = args.output or os.path.join(args.runs[0], "plots")
+    os.makedirs(out, exist_ok=True)
+    precursor_lengths(args.runs, out)
+    if len(args.runs) > 1:
+        loading_curves(args.runs, out)
     return 0
 
 

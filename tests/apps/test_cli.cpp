@@ -3,12 +3,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "cli.hpp"
 #include "frictionlab/output_directory.hpp"
+#include <yaml-cpp/yaml.h>
 
 namespace {
 
@@ -188,6 +190,128 @@ TEST_F(Cli, PlotRefusesAFolderThatIsNotARun) {
     auto p = frictionlab("plot not_a_run", dir_);
     EXPECT_EQ(p.code, 2) << p.output;
     EXPECT_NE(p.output.find("not a run directory"), std::string::npos) << p.output;
+}
+
+}  // namespace
+
+namespace {
+
+/// "file:LINE:COLUMN" of the first `key:` value in a scene file, as diagnostics write it.
+std::string location_of(const fs::path& file, const std::string& key) {
+    std::istringstream in(read_text(file));
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+        if (const auto at = line.find(key + ": "); at != std::string::npos)
+            return file.string() + ":" + std::to_string(n) + ":" + std::to_string(at + key.size() + 3);
+    return "";
+}
+
+TEST_F(Cli, AMistypedCommandGetsADidYouMean) {
+    auto r = frictionlab("rn " + scene("tiny_lattice.yaml"), dir_);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find("unknown command 'rn'; did you mean 'run'?"), std::string::npos) << r.output;
+    auto far = frictionlab("-q frobnicate", dir_);
+    EXPECT_EQ(far.code, 2);
+    EXPECT_NE(far.output.find("unknown command 'frobnicate' (commands: run, check"), std::string::npos) << far.output;
+}
+
+TEST_F(Cli, SharedOptionsGoBeforeOrAfterTheCommand) {
+    for (const std::string args : {"-q check " + scene("tiny_lattice.yaml"), "--log-level warn check " + scene("tiny_lattice.yaml"),
+                                   "check -q " + scene("tiny_lattice.yaml")}) {
+        auto r = frictionlab(args, dir_);
+        EXPECT_EQ(r.code, 0) << args << "\n" << r.output;
+        EXPECT_EQ(r.output, scene("tiny_lattice.yaml") + ": ok\n") << args;
+    }
+}
+
+TEST_F(Cli, VersionNamesTheGitRevision) {
+    auto v = frictionlab("--version", dir_);
+    EXPECT_EQ(v.code, 0);
+    EXPECT_NE(v.output.find(" (git "), std::string::npos) << v.output;
+    EXPECT_EQ(v.output.find("(git )"), std::string::npos) << "a revision, or 'unknown'";
+}
+
+TEST_F(Cli, RunPrintsItsOutputDirectoryAsTheOneLineOnStdout) {
+    auto r = frictionlab("-q run " + scene("tiny_lattice.yaml") + " -o there", dir_);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_EQ(r.output, "there\n") << "-q leaves only stdout";
+}
+
+TEST_F(Cli, CheckReportsAStepAboveTheStableOneAtIntegratorDt) {
+    const fs::path file = scene("unstable.yaml");
+    auto r = frictionlab("check " + file.string(), dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    const std::string where = location_of(file, "dt");
+    ASSERT_FALSE(where.empty());
+    EXPECT_NE(r.output.find(where + ": error: integrator.dt: stage 'settle': the time step dt = 1e-05 s is above the "
+                                    "estimated stable step"),
+              std::string::npos)
+        << r.output;
+    // The same scene at a small step is fine; run and check agree.
+    EXPECT_EQ(frictionlab("check " + file.string() + " --set integrator.dt=1e-7", dir_).code, 0);
+    EXPECT_EQ(frictionlab("run -q " + file.string() + " -o unstable_run", dir_).code, 2);
+}
+
+TEST_F(Cli, DashOMakesTheOutputKeyOptional) {
+    std::string text = read_text(scene("tiny_lattice.yaml"));
+    text.erase(text.find("output: tiny_out\n"), std::string("output: tiny_out\n").size());
+    std::ofstream(dir_ / "no_output.yaml") << text;
+    auto without = frictionlab("check no_output.yaml", dir_);
+    EXPECT_EQ(without.code, 2);
+    EXPECT_NE(without.output.find("output"), std::string::npos) << without.output;
+    EXPECT_EQ(frictionlab("check no_output.yaml -o somewhere", dir_).code, 0);
+    auto run = frictionlab("run -q no_output.yaml -o somewhere", dir_);
+    EXPECT_EQ(run.code, 0) << run.output;
+    EXPECT_TRUE(fs::exists(dir_ / "somewhere" / "run.yaml"));
+}
+
+TEST_F(Cli, RunYamlRecordsTheCommandLineAndTheOverridesAndOneHashWhereverItRuns) {
+    const std::string tiny = scene("tiny_lattice.yaml");
+    ASSERT_EQ(frictionlab("run -q " + tiny + " --set seed=9 --set integrator.dt=1e-7 -o a", dir_).code, 0);
+    ASSERT_EQ(frictionlab("run -q " + tiny + " -o b --set integrator.dt=1e-7 --set seed=9", dir_).code, 0);
+    const YAML::Node a = YAML::LoadFile((dir_ / "a" / "run.yaml").string());
+    const YAML::Node b = YAML::LoadFile((dir_ / "b" / "run.yaml").string());
+    EXPECT_EQ(a["scene_hash"].as<std::string>(), b["scene_hash"].as<std::string>()) << "the output path is not physics";
+    EXPECT_EQ(a["scene"]["output"].as<std::string>(), "a");
+    EXPECT_EQ(a["overrides"].as<std::vector<std::string>>(), (std::vector<std::string>{"seed=9", "integrator.dt=1e-7"}));
+    const auto command = a["command_line"].as<std::vector<std::string>>();
+    ASSERT_EQ(command.size(), 10u);
+    EXPECT_EQ(fs::path(command[0]).filename(), "frictionlab");
+    EXPECT_EQ(std::vector<std::string>(command.begin() + 1, command.end()),
+              (std::vector<std::string>{"run", "-q", tiny, "--set", "seed=9", "--set", "integrator.dt=1e-7", "-o", "a"}));
+    EXPECT_EQ(a["seed"].as<int>(), 9);
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
+    // On a terminal (a pseudo-terminal from util-linux's script) the run draws one live progress
+    // line; a log line printed after it must start on a cleared line, not after the progress text.
+    const std::string command = std::string("script -qec \"'") + FRICTIONLAB_CLI + "' run " + scene("every_observer.yaml") +
+                                " -o out\" /dev/null";
+    const std::string cmd = "cd '" + dir_.string() + "' && " + command;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string output;
+    std::array<char, 4096> buffer{};
+    for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) output.append(buffer.data(), n);
+    ASSERT_EQ(pclose(pipe), 0) << output;
+    ASSERT_NE(output.find("\rstage "), std::string::npos) << "a live progress line was drawn";
+    int log_lines = 0;
+    // "[12:00:00.000] info: ...", the level in colour on a terminal.
+    const std::regex log_line("\\[[0-9:.]+\\] (\x1b\\[[0-9;]*m)?info");
+    for (auto it = std::sregex_iterator(output.begin(), output.end(), log_line); it != std::sregex_iterator(); ++it) {
+        const std::size_t start = static_cast<std::size_t>(it->position()), line_start = output.rfind('\n', start);
+        const std::size_t from = line_start == std::string::npos ? 0 : line_start + 1;
+        const std::string before = output.substr(from, start - from);
+        // What the terminal still shows left of the log line: the text after the last carriage return.
+        const std::string shown = before.substr(before.rfind('\r') == std::string::npos ? 0 : before.rfind('\r') + 1);
+        EXPECT_EQ(shown.find("stage "), std::string::npos) << "a log line printed after the progress text: '" << shown << "'";
+        ++log_lines;
+    }
+    EXPECT_GT(log_lines, 5);
 }
 
 }  // namespace

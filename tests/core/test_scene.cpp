@@ -103,6 +103,26 @@ TEST_F(SceneTest, HashIsSixteenHexDigitsAndFollowsTheResolvedScene) {
     EXPECT_NE(check(testing::good_scene_text(), {"seed=43"}).scene.hash, a.scene.hash);
 }
 
+TEST_F(SceneTest, TheHashCoversThePhysicsNotTheOutputDirectory) {
+    const auto a = check(testing::good_scene_text());
+    const auto b = check(testing::good_scene_text(), {"output=somewhere/else"});
+    ASSERT_TRUE(b.diagnostics.empty()) << b.diagnostics.format();
+    EXPECT_NE(b.scene.resolved_yaml, a.scene.resolved_yaml) << "run.yaml still says where the run went";
+    EXPECT_NE(b.scene.resolved_yaml.find("output: somewhere/else"), std::string::npos);
+    EXPECT_EQ(b.scene.hash, a.scene.hash);
+    EXPECT_NE(check(testing::good_scene_text(), {"friction.mu_s=0.9"}).scene.hash, a.scene.hash);
+}
+
+TEST_F(SceneTest, WholeNumbersInListsAreWrittenBackAsIntegers) {
+    const auto a = check(testing::good_scene_text(), {"friction.weights=[5, 2.5, 0]"});
+    ASSERT_TRUE(a.diagnostics.empty()) << a.diagnostics.format();
+    EXPECT_NE(a.scene.resolved_yaml.find("weights: [5, 2.5, 0]"), std::string::npos) << a.scene.resolved_yaml;
+    const auto again = check(a.scene.resolved_yaml);
+    ASSERT_TRUE(again.diagnostics.empty()) << again.diagnostics.format();
+    EXPECT_EQ(std::get<std::vector<double>>(again.scene.friction->values.at("weights")), (std::vector<double>{5, 2.5, 0}));
+    EXPECT_EQ(again.scene.hash, a.scene.hash);
+}
+
 TEST_F(SceneTest, OverridesReplaceAndAddValues) {
     const auto [scene, d] = check(testing::good_scene_text(),
                                   {"friction.mu_s=0.9", "loaders[1].velocity=1e-3", "stages[1].duration=0.5",

@@ -51,6 +51,9 @@ struct RunOptions {
     /// Polled after every step: nonzero (a signal's number, e.g. InterruptSignals::received()) stops
     /// the run there with Interrupted, its outputs closed and run.yaml `interrupted`.
     const std::atomic<int>* stop_signal = nullptr;
+    // Provenance that run.yaml records beside the resolved scene:
+    std::vector<std::string> command_line;  // the command as typed (argv)
+    std::vector<std::string> overrides;     // the `--set key.path=value` list, in order
 };
 
 struct RunSummary {
@@ -70,5 +73,7 @@ RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logge
 
 /// The framework version, e.g. "0.1.0".
 std::string framework_version();
+/// The commit the library was built from (`git describe --always --dirty`), "unknown" outside git.
+std::string git_revision();
 
 }  // namespace frictionlab

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +29,9 @@ struct ComponentSpec {
     SourceLocation where;   // of the component's mapping
     std::string type;
     ParamValues values;     // every declared key of the type, defaults filled in
+    /// Where each key given in the scene was written (a default has no entry), so that a check made
+    /// after validation (the stable step, at `integrator.dt`) points at the value.
+    std::map<std::string, SourceLocation> value_where;
     // Scene-level keys beside `type` (not the plugin's own parameters):
     std::vector<std::string> stages;  // loaders: the stages it acts in (empty: all)
     double every = 0;                 // observers: cadence in simulated seconds (0: unset)
@@ -45,7 +49,7 @@ struct StageSpec {
 
 struct Scene {
     std::filesystem::path file;
-    std::string hash;  // of the resolved scene text (defaults filled in), hex
+    std::string hash;  // of the resolved scene text (defaults filled in) without `output:`, hex
     std::string title;
     std::uint64_t seed = 0;
     std::filesystem::path output_directory;        // relative paths: to the working directory

@@ -94,10 +94,27 @@ TEST(RuptureEventDetector, APrecursorFromTheTrailingEdge) {
         else EXPECT_TRUE(std::isnan(e.first_rupture[b])) << b;
     }
     EXPECT_NEAR(e.front_speed, x(9) / (9 * dt), 1e-6) << "farthest distance over its delay";
+    EXPECT_NEAR(e.crossing_speed, (x(9) - x(5)) / (4 * dt), 1e-6) << "a steady front: the same speed on its far half";
     EXPECT_NEAR(e.max_slip, 1e-6, 1e-15);
     EXPECT_EQ(d.summary().events, 1);
     EXPECT_FALSE(d.summary().global_seen);
     EXPECT_EQ(d.summary().precursors_before_global, 1);
+}
+
+TEST(RuptureEventDetector, ACreepingThenCrossingFrontHasAMeanAndACrossingSpeed) {
+    // Blocks 0-5 one per 10 observations (creep), then 6-40 one per observation (the fast crossing).
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1;
+    std::vector<Rupture> r;
+    for (int b = 0; b <= 5; ++b) r.push_back({b, t0 + 10 * b * dt, t0 + 10 * b * dt + 1e-3});
+    for (int b = 6; b < blocks; ++b) r.push_back({b, t0 + (45 + b) * dt, t0 + (45 + b) * dt + 1e-3});
+    auto events = History(r).run(d, t0 - 1e-3, t0 + 0.01);
+    ASSERT_EQ(events.size(), 1u);
+    const RuptureEvent& e = events[0];
+    EXPECT_TRUE(e.global);
+    EXPECT_NEAR(e.front_speed, x(40) / (85 * dt), 1e-6) << "the mean over the whole path, creep included";
+    EXPECT_NEAR(e.crossing_speed, (x(40) - x(20)) / (20 * dt), 1e-6) << "block 20 at 65 dt to block 40 at 85 dt";
+    EXPECT_GT(e.crossing_speed, 2 * e.front_speed);
 }
 
 TEST(RuptureEventDetector, EventsFartherApartThanQuietTimeAreTwo) {

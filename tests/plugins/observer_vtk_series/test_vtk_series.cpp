@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 #include <vtkPoints.h>
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -92,6 +93,7 @@ struct Expected {
     std::vector<double> points;
     std::map<std::string, std::pair<int, std::vector<double>>> arrays;  // name -> components, values
     std::map<std::string, double> numbers;                              // field data, one value each
+    std::map<std::string, double> cell_strain;  // quads: the same in every cell (affine displacement)
 };
 
 std::string json_number(double v) { return std::isnan(v) ? "NaN" : fmt::format("{}", v); }
@@ -180,7 +182,8 @@ protected:
         auto& normal = e.arrays["normal_force"] = {1, {}};
         for (Index i = 0; i < n; ++i) {
             const double x = y(i), z = y(n + i), u = x - body_.x0(i);
-            e.points.insert(e.points.end(), {x, z, 0});
+            e.points.insert(e.points.end(), {body_.x0(i), body_.z0(i), 0});  // reference positions
+            (void)x;
             displacement.second.insert(displacement.second.end(), {u, z - body_.z0(i), 0});
             velocity.second.insert(velocity.second.end(), {y(2 * n + i), y(3 * n + i), 0});
             force.second.insert(force.second.end(), {-TestEffect::k * u, -TestEffect::w, 0});
@@ -198,6 +201,10 @@ protected:
             const double fractions[] = {(3.0 + k) / (4 + k), nan, (1.0 + k) / (4 + k), (2.0 + k) / (4 + k), nan};
             std::copy(std::begin(fractions), std::end(fractions), fraction.second.begin());
         }
+        // u = a (ix + nx iz + 1), w = -b (ix + nx iz) with x = ix l, z = iz l: an affine field, so
+        // every cell has its exact gradient.
+        const double a = 1e-3 * (k + 1), b = 2e-4 * k, l = body_.spacing;
+        e.cell_strain = {{"strain_xx", a / l}, {"strain_zz", -b * nx / l}, {"strain_xz", 0.5 * (a * nx / l - b / l)}};
         e.numbers = {{"TIME", t}, {"TimeValue", t}, {"STEP", double(e.step)}, {"stage_index", stage_.index},
                      {"driving_force", 1.5 + t}};
         return e;
@@ -329,6 +336,15 @@ void expect_snapshot(const fs::path& file, const Expected& e, vtkIdType cells, i
         ASSERT_NE(array, nullptr) << name;
         EXPECT_DOUBLE_EQ(array->GetComponent(0, 0), v) << name;
     }
+    if (cell_type == VTK_QUAD) {
+        for (const auto& [name, value] : e.cell_strain) {
+            vtkDataArray* array = grid->GetCellData()->GetArray(name.c_str());
+            ASSERT_NE(array, nullptr) << name;
+            for (vtkIdType c = 0; c < cells; ++c) EXPECT_NEAR(array->GetComponent(c, 0), value, 1e-12) << name << " cell " << c;
+        }
+    } else {
+        EXPECT_EQ(grid->GetCellData()->GetNumberOfArrays(), 0) << "strain only for quads";
+    }
     EXPECT_DOUBLE_EQ(header_range_max(file, "TIME"), e.time) << "the header's range is this snapshot's";
     EXPECT_EQ(field_string(grid, "framework_version"), info.framework_version);
     EXPECT_EQ(field_string(grid, "scene_hash"), info.scene_hash);
@@ -439,6 +455,19 @@ TEST_F(VtkSeriesTest, EndWithoutBeginWritesNothing) {
     EXPECT_TRUE(fs::is_empty(dir_));
 }
 
+TEST(VtkSeriesCollection, TimesAreWrittenWithoutTheDriftOfASumOfSteps) {
+    // 2.04 million steps of 2e-7 s summed one by one land 1e-11 s off 0.408.
+    double t = 0;
+    for (int i = 0; i < 2'040'000; ++i) t += 2e-7;
+    ASSERT_NE(t, 0.408);
+    EXPECT_EQ(VtkSeries::collection_time(t, 2'040'000), "0.408");
+    EXPECT_EQ(VtkSeries::collection_time(0.25, 1), "0.25");
+    EXPECT_EQ(VtkSeries::collection_time(0, 0), "0");
+    // A time between two observations on the step grid keeps its digits: 3 steps of 1e-7 s.
+    EXPECT_EQ(VtkSeries::collection_time(3e-7, 3), "0.0000003");
+    EXPECT_EQ(VtkSeries::collection_time(1.23456789e-3, 1000), "0.00123457");  // a hundredth of 1.2e-6 s
+}
+
 TEST(VtkSeriesSpec, PrefixMustBeAPlainFileName) {
     const auto rules = VtkSeries::spec().erased_rules();
     ASSERT_EQ(rules.size(), 1u);
@@ -455,7 +484,7 @@ TEST(VtkSeriesPlugin, TheLibraryLoadsAndRegistersTheObserver) {
     ASSERT_NE(type, nullptr);
     std::vector<std::string> keys;
     for (const auto& p : type->params) keys.push_back(p.key);
-    EXPECT_EQ(keys, (std::vector<std::string>{"prefix", "cells", "compress"}));
+    EXPECT_EQ(keys, (std::vector<std::string>{"prefix", "cells", "compress", "points"}));
 }
 
 }  // namespace

@@ -1,0 +1,20 @@
+#include "frictionlab/stable_step_check.hpp"
+
+#include "frictionlab/errors.hpp"
+#include "frictionlab/simulation.hpp"
+
+namespace frictionlab {
+
+void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics) {
+    const auto dt = scene.integrator.value_where.find("dt");
+    const SourceLocation where = dt != scene.integrator.value_where.end() ? dt->second : scene.integrator.where;
+    Simulation simulation(scene, registry, log);  // a component's refusal propagates, located
+    simulation.refuse_unstable_steps(true);
+    try {
+        for (std::size_t i = 0; i < scene.stages.size(); ++i) simulation.begin_stage(i);
+    } catch (const InputError& e) {
+        diagnostics.error(where, "integrator.dt", e.what());
+    }
+}
+
+}  // namespace frictionlab
