@@ -242,6 +242,8 @@ private:
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
         while (!sim_.reached(t_end)) {
+            if (options_.stop_requested && options_.stop_requested->load(std::memory_order_relaxed))
+                throw RunError(fmt::format("stopped on request in stage '{}' at t = {:.9g} s", stage.name, sys.time()));
             try {
                 sim_.step(t_end - sys.time());
             } catch (const RunError& e) {

@@ -1,6 +1,7 @@
 #pragma once
 // Runs a validated scene: builds the components through the registry, assembles the pipeline,
 // steps through the stages, drives the observers at their cadence and records run metadata.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -47,6 +48,9 @@ struct RunOptions {
     bool overwrite = false;            // replace an existing output directory that FrictionLab created
     bool allow_unstable_step = false;  // run a time step above the estimated stable one
     bool live_progress = false;        // one live progress line (terminal); else periodic log lines
+    /// Checked between steps: when it becomes true the run stops as failed ("stopped on request"),
+    /// its outputs closed, e.g. when a Python caller is interrupted by Ctrl-C.
+    const std::atomic<bool>* stop_requested = nullptr;
 };
 
 struct RunSummary {
