@@ -3,17 +3,17 @@
 #include <fmt/format.h>
 
 #include "frictionlab/errors.hpp"
+#include "frictionlab/table_provenance.hpp"
 
 namespace frictionlab {
 
 CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info)
-    : file_(file), out_(file, std::ios::trunc), columns_(columns.size()) {
+    : TableWriter(file), out_(file, std::ios::trunc), columns_(columns.size()) {
     if (!out_) throw RunError("cannot write " + file.string());
-    out_ << fmt::format("# frictionlab {}; scene {} (hash {}); seed {}\n", info.framework_version,
-                        info.scene_file.filename().string(), info.scene_hash, info.seed);
-    std::string plugins;
-    for (const auto& p : info.plugins) plugins += fmt::format("{}{} {}", plugins.empty() ? "" : ", ", p.name, p.version);
-    out_ << "# plugins: " << plugins << "\n";
+    const auto sidecar = table_sidecar_path(file);
+    std::ofstream meta(sidecar, std::ios::trunc);
+    meta << table_sidecar_yaml(TableProvenance::of(info), columns);
+    if (!meta) throw RunError("cannot write " + sidecar.string());
     out_ << fmt::format("{}\n", fmt::join(columns, ","));
     out_.flush();
 }
