@@ -148,11 +148,13 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
 }
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
-    std::string text = fmt::format(
-        "# frictionlab {} study {}: errors relative to the reference case; seed {} unless a case sets it; each "
-        "case's run.yaml in cases/ records its resolved scene and plugins\n",
-        framework_version(), study.file.filename().string(), result.seed);
-    text += "case,family,scene_hash";
+    // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
+    write_file(std::filesystem::path(file).concat(".meta.yaml"),
+               fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseed: {}\nnote: errors relative to "
+                           "the reference case; the seed unless a case sets it; each case's run.yaml in cases/ records "
+                           "its resolved scene and plugins\n",
+                           framework_version(), study.file.filename().string(), result.seed));
+    std::string text = "case,family,scene_hash";
     for (const auto& k : result.knob_columns) text += fmt::format(",{}", csv_cell(k));
     text += ",wall_seconds,cpu_seconds,steps,evaluations";
     for (const auto& c : error_columns) text += std::string(",") + c.name;

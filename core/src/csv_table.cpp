@@ -7,25 +7,24 @@
 
 #include <fmt/format.h>
 
+#include "frictionlab/atomic_file.hpp"
 #include "frictionlab/errors.hpp"
 #include "frictionlab/interrupt_signals.hpp"
 #include "frictionlab/os_error.hpp"
+#include "frictionlab/table_provenance.hpp"
 
 namespace frictionlab {
 
 CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info)
-    : file_(file), columns_(columns.size()) {
+    : TableWriter(file), columns_(columns.size()) {
     fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd_ < 0 && errno == EEXIST)
         throw InputError(fmt::format("'{}' is written by another observer of this run already; give each observer "
                                      "its own file",
                                      file.string()));
     if (fd_ < 0) throw RunError(fmt::format("cannot create '{}': {}", file.string(), os_error(errno)));
-    std::string plugins;
-    for (const auto& p : info.plugins) plugins += fmt::format("{}{} {}", plugins.empty() ? "" : ", ", p.name, p.version);
-    append(fmt::format("# frictionlab {}; scene {} (hash {}); seed {}\n# plugins: {}\n{}\n", info.framework_version,
-                       info.scene_file.filename().string(), info.scene_hash, info.seed, plugins,
-                       fmt::join(columns, ",")));
+    write_file_atomically(table_sidecar_path(file), table_sidecar_yaml(TableProvenance::of(info), columns));
+    append(fmt::format("{}\n", fmt::join(columns, ",")));
 }
 
 CsvTable::~CsvTable() {

@@ -43,6 +43,7 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
     s.add("loading_stage", &Params::loading_stage,
           "The slip_since_loading column counts from the first observation in the stage of this name.")
         .names_a_stage();
+    add_table_format_param(s, &Params::format);
     s.rule("blocks", [](const Params& p) -> std::string {
         for (double b : p.blocks)
             if (!(b >= 0) || b != std::floor(b)) return fmt::format("block indices are whole numbers >= 0, not {}", b);
@@ -92,14 +93,15 @@ void ContactArea::begin(const RunView& view) {
         b.node = interface_[i];
         if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
         if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
-        b.table = std::make_unique<CsvTable>(view.output_directory / fmt::format("{}_block_{}.csv", params_.prefix, i),
-                                             block_columns, view.info);
+        b.table = open_table(view.output_directory / fmt::format("{}_block_{}.csv", params_.prefix, i), block_columns,
+                             view.info, table_format(params_.format));
         blocks_.push_back(std::move(b));
     }
     std::vector<std::string> columns{"time",      "step",    "stage",      "junctions",
                                      "pinned",    "sliding", "dislocated", "pinned_fraction"};
     if (junction_area_) columns.push_back("contact_area");
-    interface_table_ = std::make_unique<CsvTable>(view.output_directory / (params_.prefix + ".csv"), columns, view.info);
+    interface_table_ =
+        open_table(view.output_directory / (params_.prefix + ".csv"), columns, view.info, table_format(params_.format));
     row_.reserve(block_columns.size());
 }
 

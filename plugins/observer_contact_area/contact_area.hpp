@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/csv_table.hpp"
+#include "frictionlab/table_writer.hpp"
 #include "frictionlab/kinds.hpp"
 #include "frictionlab/param_spec.hpp"
 #include "frictionlab/junction_counts.hpp"
@@ -48,6 +48,7 @@ public:
         std::vector<double> blocks{5};  // whole numbers; real_list is the scene's list type
         std::string prefix = "contact_area";
         std::string loading_stage = "load";
+        std::string format = "csv";
     };
     static constexpr std::string_view type = "contact_area";
     static ParamSpec<Params> spec();
@@ -72,7 +73,7 @@ private:
         Bond left, right;
         double pinned_reference = std::numeric_limits<double>::quiet_NaN();
         double x_at_loading = std::numeric_limits<double>::quiet_NaN();
-        std::unique_ptr<CsvTable> table;
+        std::unique_ptr<TableWriter> table;
     };
 
     Bond bond_between(const Body& body, Index node, Index neighbour) const;
@@ -87,7 +88,7 @@ private:
     const double* junction_area_ = nullptr;
     double stiffness_ = 0;
     long long last_step_ = -1;
-    std::unique_ptr<CsvTable> interface_table_;
+    std::unique_ptr<TableWriter> interface_table_;
     std::vector<double> row_;
 };
 

@@ -10,8 +10,9 @@ namespace frictionlab {
 
 ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
     ParamSpec<Params> s("Space-time history of the interface: velocity, slip, pinned fraction and shear/normal "
-                        "ratio of every interface block, and its normal and friction forces, one CSV row per observation.");
+                        "ratio of every interface block, and its normal and friction forces, one row per observation.");
     s.add("node_set", &Params::node_set, "Node set to follow, ordered along x.");
+    add_table_format_param(s, &Params::format);
     return s;
 }
 
@@ -24,7 +25,8 @@ void InterfaceHistory::begin(const RunView& view) {
     for (std::size_t b = 0; b < nodes_.size(); ++b) columns.push_back(fmt::format("block_{}", b));
 
     const auto add = [&](const char* file, std::function<double(const RunView&, Index)> value) {
-        tables_.push_back({std::make_unique<CsvTable>(view.output_directory / file, columns, view.info), std::move(value)});
+        tables_.push_back({open_table(view.output_directory / file, columns, view.info, table_format(params_.format)),
+                           std::move(value)});
     };
     add("interface_velocity.csv", [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
     add("interface_slip.csv", [this](const RunView& v, Index b) {
@@ -55,7 +57,7 @@ void InterfaceHistory::observe(const RunView& view) {
     row_[0] = view.state.t;
     for (auto& table : tables_) {
         for (std::size_t b = 0; b < nodes_.size(); ++b) row_[b + 1] = table.value(view, static_cast<Index>(b));
-        table.csv->row(row_);
+        table.writer->row(row_);
     }
 }
 

@@ -2,7 +2,7 @@
 #include <memory>
 #include <vector>
 
-#include "frictionlab/csv_table.hpp"
+#include "frictionlab/table_writer.hpp"
 #include "frictionlab/kinds.hpp"
 #include "frictionlab/param_spec.hpp"
 
@@ -18,11 +18,12 @@ namespace frictionlab {
 ///   interface_normal_force.csv     normal_force of each block (N), when the scene publishes it
 ///   interface_friction_force.csv   friction_force of each block (N), when the friction law publishes it
 ///   interface_shear_ratio.csv      friction_force / normal_force of each block, when both exist
-/// Rows cost a pass over the interface at the observer's cadence; nothing in between.
+/// (or interface_*.h5 with `format: hdf5`). Rows cost a pass over the interface at the observer's cadence; nothing in between.
 class InterfaceHistory final : public Observer {
 public:
     struct Params {
         std::string node_set = "interface";
+        std::string format = "csv";
     };
     static constexpr std::string_view type = "interface_history";
     static ParamSpec<Params> spec();
@@ -33,7 +34,7 @@ public:
 
 private:
     struct Table {
-        std::unique_ptr<CsvTable> csv;
+        std::unique_ptr<TableWriter> writer;
         std::function<double(const RunView&, Index block)> value;
     };
     Params params_;

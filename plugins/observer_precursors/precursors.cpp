@@ -51,10 +51,11 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     s.add("stage", &Params::stage,
           "Observe only during stages of this name (empty: every stage), so settling is not taken for rupture.")
         .names_a_stage();
-    s.add("events_file", &Params::events_file, "CSV file of the events, one row each, in the output directory.");
+    s.add("events_file", &Params::events_file, "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
           "CSV file of the fronts: per event and block, when the block first ruptured.");
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
+    add_table_format_param(s, &Params::format);
     s.rule("events_file", [](const Params& p) { return output_file_name_problem(p.events_file); });
     s.rule("fronts_file", [](const Params& p) { return output_file_name_problem(p.fronts_file); });
     s.rule("summary_file", [](const Params& p) { return output_file_name_problem(p.summary_file); });
@@ -89,8 +90,9 @@ void Precursors::begin(const RunView& view) {
 
     slip_.resize(n);
     ruptured_.resize(n);
-    events_ = std::make_unique<CsvTable>(view.output_directory / params_.events_file, event_columns, view.info);
-    fronts_ = std::make_unique<CsvTable>(view.output_directory / params_.fronts_file, front_columns, view.info);
+    const TableFormat format = table_format(params_.format);
+    events_ = open_table(view.output_directory / params_.events_file, event_columns, view.info, format);
+    fronts_ = open_table(view.output_directory / params_.fronts_file, front_columns, view.info, format);
     row_.reserve(event_columns.size());
     write_summary(view, false);
 }

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/csv_table.hpp"
+#include "frictionlab/table_writer.hpp"
 #include "frictionlab/kinds.hpp"
 #include "frictionlab/param_spec.hpp"
 #include "frictionlab/junction_counts.hpp"
@@ -51,6 +51,7 @@ public:
         std::string events_file = "precursors.csv";
         std::string fronts_file = "precursor_fronts.csv";
         std::string summary_file = "precursors_summary.yaml";
+        std::string format = "csv";
     };
     static constexpr std::string_view type = "precursors";
     static ParamSpec<Params> spec();
@@ -76,7 +77,7 @@ private:
     const double* normal_load_ = nullptr;
     Eigen::ArrayXd slip_;
     RuptureMask ruptured_;
-    std::unique_ptr<CsvTable> events_, fronts_;
+    std::unique_ptr<TableWriter> events_, fronts_;
     std::vector<double> row_;
 };
 

@@ -48,16 +48,29 @@ import numpy as np  # noqa: E402
 
 
 def table(run, name):
-    """A CSV output of the run as a structured array (columns by name), or None if absent/empty."""
+    """A table of the run as a structured array (columns by name), or None if absent/empty.
+
+    `name` is the CSV name (e.g. "precursors.csv"); the HDF5 table of the same stem (precursors.h5,
+    written with `format: hdf5`) is read when the CSV is absent.
+    """
     path = os.path.join(run, name)
-    if not os.path.exists(path):
+    if os.path.exists(path):
+        with open(path) as f:  # one header line, then the rows (provenance: NAME.csv.meta.yaml)
+            lines = f.readlines()
+        if len(lines) < 2:
+            return None
+        return np.atleast_1d(np.genfromtxt(lines, delimiter=",", names=True))
+    h5 = os.path.splitext(path)[0] + ".h5"
+    if not os.path.exists(h5):
         return None
-    with open(path) as f:  # the '#' lines above the header record version, scene hash, seed, plugins
-        lines = [line for line in f if not line.startswith("#")]
-    if len(lines) < 2:
+    import h5py  # python3-h5py; only needed for HDF5 tables
+
+    with h5py.File(h5, "r") as f:
+        values = f["table"][:]
+        columns = [c.decode() if isinstance(c, bytes) else str(c) for c in f["table"].attrs["columns"]]
+    if values.shape[0] == 0:
         return None
-    data = np.genfromtxt(lines, delimiter=",", names=True)
-    return np.atleast_1d(data)
+    return np.rec.fromarrays(values.T, names=columns)
 
 
 def scene_of(run):
@@ -217,9 +230,10 @@ def phase_boundaries(t, d):
 
 
 def four_phase(run, out_dir):
-    for path in sorted(glob.glob(os.path.join(run, "contact_area_block_*.csv"))):
-        block = os.path.basename(path)[len("contact_area_block_"):-len(".csv")]
-        d = table(run, os.path.basename(path))
+    paths = glob.glob(os.path.join(run, "contact_area_block_*.csv")) + glob.glob(os.path.join(run, "contact_area_block_*.h5"))
+    for stem in sorted({os.path.splitext(os.path.basename(p))[0] for p in paths}):
+        block = stem[len("contact_area_block_"):]
+        d = table(run, stem + ".csv")
         if d is None:
             continue
         loading = d["stage"] == d["stage"].max()
@@ -432,7 +446,7 @@ STUDY_ERRORS = [
 def work_precision(study_dir):
     """Each relative error against wall time, one curve per family, cheapest case first."""
     with open(os.path.join(study_dir, "study.csv"), newline="") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+        rows = list(csv.DictReader(f))
     cases = [r for r in rows if r["case"] != "reference"]
     families = list(dict.fromkeys(r["family"] for r in cases))
     fig, axes = plt.subplots(2, 3, figsize=(13, 7.5))
