@@ -60,11 +60,11 @@ ParamSpec<Precursors::Params> Precursors::spec() {
         .unit("1")
         .greater_than(0)
         .at_most(1);
-    s.add("nucleation_window", &Params::nucleation_window,
-          "A non-global event ending at most this long before a larger one (a longer precursor or a global slip) "
-          "starts, within one block of its nucleation, is that rupture's nucleation and is reported with it "
-          "(B.19a); 0: never merged.")
-        .unit("s")
+    s.add("nucleation_window_quiet_times", &Params::nucleation_window_quiet_times,
+          "A non-global event ending at most this many quiet_times before a larger one (a longer precursor or a "
+          "global slip) starts, within one block of its nucleation, is that rupture's nucleation and is reported "
+          "with it (B.19a); in quiet times so that it scales with the loading rate as quiet_time does; 0: never.")
+        .unit("1")
         .at_least(0);
     s.add("events_file", &Params::events_file, "CSV file of the events, one row each, in the output directory.");
     s.add("fronts_file", &Params::fronts_file,
@@ -95,7 +95,8 @@ void Precursors::begin(const RunView& view) {
     geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
     geometry.spacing = body.spacing;
     detector_.emplace(std::move(geometry), params_.quiet_time,
-                      RuptureEventDetector::Options{params_.global_span, params_.nucleation_window});
+                      RuptureEventDetector::Options{params_.global_span,
+                                                    params_.nucleation_window_quiet_times * params_.quiet_time});
 
     const Quantities& q = view.quantities;
     if (const auto* s = q.find_scalar("driving_force")) driving_force_ = &s->value;

@@ -160,7 +160,7 @@ TEST_F(PrecursorsTest, MissingJunctionCountsNameTheQuantityAndTheCriterion) {
 TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
     publish_junctions();
     Precursors::Params immediate;
-    immediate.nucleation_window = 0;  // written as they end, none held for a global slip (B.19a)
+    immediate.nucleation_window_quiet_times = 0;  // written as they end, none held for a global slip (B.19a)
     Precursors observer = make(immediate);
     observer.begin(view());
     observe_at(observer, 1 * dt, {});
@@ -209,7 +209,7 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
 }
 
 // B.19a: an ended event may still be a global slip's nucleation, so it is written once
-// nucleation_window (10 ms) has passed without a global slip starting.
+// 5 quiet times (10 ms) have passed without a larger rupture starting.
 TEST_F(PrecursorsTest, AnEndedEventIsWrittenOnceItsNucleationWindowHasPassed) {
     publish_junctions();
     Precursors observer = make();
