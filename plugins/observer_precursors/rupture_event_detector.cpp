@@ -100,9 +100,9 @@ bool RuptureEventDetector::is_nucleation_of(const RuptureEvent& held, const Rupt
     if (held.global || later.ruptured_blocks <= held.ruptured_blocks ||
         later.t_start - held.t_end > options_.nucleation_window)
         return false;
-    for (std::size_t i = 0; i < held.first_rupture.size(); ++i)
-        if (!std::isnan(held.first_rupture[i]) && std::abs(static_cast<int>(i) - later.nucleation) <= 1) return true;
-    return false;
+    // The same nucleation site, not merely a block the held event reached: a rupture that restarts
+    // at the arrest front of a precursor is a new rupture.
+    return std::abs(held.nucleation - later.nucleation) <= 1;
 }
 
 void RuptureEventDetector::settle(RuptureEvent e) {

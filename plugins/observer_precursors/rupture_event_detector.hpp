@@ -66,8 +66,8 @@ struct RuptureSummary {
 /// - Global (B.19a): the ruptured blocks span, from the trailing edge of the first to the leading
 ///   edge of the last (each block covering l_s), at least `global_span` L.
 /// - Nucleation (B.19a): an event that is not global, ends at most `nucleation_window` before a
-///   larger event (more ruptured blocks: a longer precursor or a global slip) starts, and ruptured
-///   a block within one block of where that one nucleated, is its nucleation: the two are reported
+///   larger event (more ruptured blocks: a longer precursor or a global slip) starts, and nucleated
+///   within one block of where that one nucleated, is its nucleation: the two are reported
 ///   as one event, with the earlier start, F_S and nucleation block. To decide, every ended event
 ///   is held until the next event has ended or `nucleation_window` has passed; 0 holds nothing.
 ///

@@ -304,6 +304,17 @@ TEST(RuptureEventDetector, TheNucleationOfALongerPrecursorBelongsToIt) {
     EXPECT_EQ(d.summary().precursors_before_global, 1);
 }
 
+// The 21-block study scene at 200x: a precursor of 8 blocks from block 1 arrests, and 0.8 ms later
+// the global slip starts at its arrest front (block 8). That is a new rupture, not its nucleation.
+TEST(RuptureEventDetector, ARuptureRestartingAtAPrecursorsArrestFrontIsANewEvent) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, b = a + 7 * dt + 5e-4 + 3e-3;
+    auto events = History(joined(front(0, 7, a), front(8, 0, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].ruptured_blocks, 8);
+    EXPECT_EQ(events[1].nucleation, 8);
+}
+
 TEST(RuptureEventDetector, AShorterEventAfterALongerOneIsNotItsNucleation) {
     RuptureEventDetector d(interface41(), quiet, merging);
     const double a = 0.1, b = a + 9 * dt + 5e-4 + 4e-3;
