@@ -37,7 +37,7 @@ void write_atomically(const std::filesystem::path& file, const std::string& text
     std::filesystem::rename(tmp, file);
 }
 
-/// One observer with its cadence (design.md §1.7: an observer costs in proportion to its cadence).
+/// One observer with its cadence: an observer costs in proportion to its cadence.
 struct ObserverSlot {
     std::unique_ptr<Observer> observer;
     std::string path;
@@ -159,7 +159,7 @@ private:
 class SceneRun {
 public:
     SceneRun(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options)
-        : scene_(scene), registry_(registry), log_(log), options_(options), sim_(scene, registry, log) {
+        : scene_(scene), log_(log), options_(options), sim_(scene, registry, log) {
         sim_.refuse_unstable_steps(!options.allow_unstable_step);
         // After the components accepted their parameters, so a refusal leaves no directory behind.
         prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
@@ -276,7 +276,6 @@ private:
     }
 
     const Scene& scene_;
-    const Registry& registry_;
     spdlog::logger& log_;
     RunOptions options_;
     Simulation sim_;

@@ -25,31 +25,26 @@ System::System(const Body& body, Index aux_size)
 }
 
 void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in, std::string label) {
-    if (label.empty()) label = effect->key();
-    if (label.empty()) label = "effect_" + std::to_string(slots_.size());
-    const std::string base = label;
-    for (int n = 2; std::find(labels_.begin(), labels_.end(), label) != labels_.end(); ++n)
-        label = base + "_" + std::to_string(n);
-    labels_.push_back(std::move(label));
-    slots_.push_back({std::move(effect), std::move(active_in), true});
-    active_.push_back(slots_.back().effect.get());
-    active_slot_.push_back(slots_.size() - 1);
-    if (work_accounting()) work_.push_back(0), pending_work_.push_back(0);
-    plan_evaluations();
-}
-
-void System::plan_evaluations() {
-    plan_.clear();
-    for (std::size_t k = 0; k < active_.size(); ++k) {
-        const bool fused = k + 1 < active_.size() && active_[k]->fuses_with(*active_[k + 1]);
-        plan_.push_back({k, fused});
-        if (fused) ++k;
+    std::vector<Effect*> parts = effect->parts();
+    if (parts.empty()) parts = {effect.get()};
+    else label.clear();  // each part is labelled by its own key
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        std::string name = label.empty() ? parts[k]->key() : label;
+        if (name.empty()) name = "effect_" + std::to_string(parts_.size() + k);
+        const std::string base = name;
+        for (int n = 2; std::find(labels_.begin(), labels_.end(), name) != labels_.end(); ++n)
+            name = base + "_" + std::to_string(n);
+        labels_.push_back(std::move(name));
+        if (work_accounting()) work_.push_back(0), pending_work_.push_back(0);
     }
+    slots_.push_back({std::move(effect), std::move(active_in), parts_.size(), parts.size()});
+    parts_.insert(parts_.end(), parts.begin(), parts.end());
+    activate(nullptr);
 }
 
 void System::enable_work_accounting() {
-    work_.assign(slots_.size(), 0.0);
-    pending_work_.assign(slots_.size(), 0.0);
+    work_.assign(parts_.size(), 0.0);
+    pending_work_.assign(parts_.size(), 0.0);
     effect_force_ = Eigen::VectorXd::Zero(layout_.size());
 }
 
@@ -61,12 +56,9 @@ void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy,
 void System::evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
     const Index n = layout_.nodes;
     dy.head(2 * n) = y.segment(2 * n, 2 * n);
-    compute_accelerations(t, y, dy.tail(layout_.size() - 2 * n), work_weight);
-}
-
-void System::accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
-    compute_accelerations(t, y, a, work_weight);
-    ++evaluations_;
+    compute_forces(t, y, dy.tail(layout_.size() - 2 * n), work_weight);
+    ForceView f = forces_of(dy, layout_);
+    divide_by_mass(f);
 }
 
 void System::forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
@@ -74,40 +66,28 @@ void System::forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::Vector
     ++evaluations_;
 }
 
-void System::compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a,
-                                   double work_weight) {
-    compute_forces(t, y, a, work_weight);
-    ForceView f = forces_at(a.data(), layout_);
-    divide_by_mass(f);
-}
-
 void System::compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
-    // The first evaluation writes the forces (Effect::set_forces_with): only the aux rates need zeros.
-    const Index n = layout_.nodes;
-    if (plan_.empty()) a.setZero();
-    else a.tail(a.size() - 2 * n).setZero();
+    a.setZero();
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_at(a.data(), layout_);
     const bool accounting = work_accounting() && work_weight != 0;
-    for (const Evaluation& e : plan_) {
+    for (const Slot* slot : active_) {
         if (accounting)
-            for (std::size_t k = e.first; k <= e.first + e.fused; ++k) add_work(k, s, work_weight);
-        Effect* next = e.fused ? active_[e.first + 1] : nullptr;
-        if (&e == &plan_.front()) active_[e.first]->set_forces_with(next, s, f);
-        else if (next) active_[e.first]->add_forces_with(*next, s, f);
-        else active_[e.first]->add_forces(s, f);
+            for (std::size_t k = slot->first_part; k < slot->first_part + slot->part_count; ++k)
+                add_work(k, s, work_weight);
+        slot->effect->add_forces(s, f);
     }
 }
 
-void System::add_work(std::size_t active_index, const StageView& s, double weight) {
-    // The effect alone into a scratch vector, to know its power F_e . v at this stage. The forces
+void System::add_work(std::size_t part, const StageView& s, double weight) {
+    // The part alone into a scratch vector, to know its power F_e . v at this stage. The forces
     // that move the state are summed apart, as without accounting, so accounting changes no result.
     const Index n = layout_.nodes;
     effect_force_.tail(layout_.size() - 2 * n).setZero();
     ForceView fe = forces_of(effect_force_, layout_);
-    active_[active_index]->add_forces(s, fe);
+    parts_[part]->add_forces(s, fe);
     const Eigen::Map<const Eigen::VectorXd> velocity(s.vx.data(), 2 * n);  // [vx | vz]
-    pending_work_[active_slot_[active_index]] += weight * effect_force_.segment(2 * n, 2 * n).dot(velocity);
+    pending_work_[part] += weight * effect_force_.segment(2 * n, 2 * n).dot(velocity);
 }
 
 void System::effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
@@ -115,7 +95,7 @@ void System::effect_derivative(std::size_t active_index, double t, const Eigen::
     dy.head(2 * n) = y.segment(2 * n, 2 * n);
     dy.tail(layout_.size() - 2 * n).setZero();
     ForceView f = forces_of(dy, layout_);
-    active_.at(active_index)->add_forces(view_of(y, layout_, t), f);
+    parts_.at(active_parts_.at(active_index))->add_forces(view_of(y, layout_, t), f);
     divide_by_mass(f);
 }
 
@@ -133,7 +113,8 @@ bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::Ar
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_of(local_scratch_, layout_);
     bool any = false;
-    for (Effect* e : active_) {
+    for (const std::size_t k : active_parts_) {
+        Effect* e = parts_[k];
         if (!e->has_velocity_jacobian()) continue;
         any = true;
         e->add_forces(s, f);
@@ -146,7 +127,7 @@ bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::Ar
 void System::begin_step() {
     std::fill(pending_work_.begin(), pending_work_.end(), 0.0);
     const StageView s = state();
-    for (Effect* e : active_) e->begin_step(s);
+    for (const Slot* slot : active_) slot->effect->begin_step(s);
 }
 
 void System::accept(double t, const Eigen::VectorXd& y) {
@@ -165,27 +146,31 @@ void System::commit_step(double t) {
     ++steps_;
     for (std::size_t k = 0; k < work_.size(); ++k) work_[k] += pending_work_[k];
     const StageView s = state();
-    for (Effect* e : active_) e->commit(s, dt);
+    for (const Slot* slot : active_) slot->effect->commit(s, dt);
 }
 
 double System::next_event_time() const {
     double next = std::numeric_limits<double>::infinity();
-    for (const Effect* e : active_) next = std::min(next, e->next_event_time());
+    for (const Slot* slot : active_) next = std::min(next, slot->effect->next_event_time());
     return next;
 }
 
-void System::begin_stage(const StageInfo& stage) {
+void System::activate(const StageInfo* stage) {
     active_.clear();
-    active_slot_.clear();
-    for (std::size_t k = 0; k < slots_.size(); ++k) {
-        Slot& slot = slots_[k];
-        slot.active = slot.active_in.empty() ||
-                      std::find(slot.active_in.begin(), slot.active_in.end(), stage.name) != slot.active_in.end();
-        if (slot.active) active_.push_back(slot.effect.get()), active_slot_.push_back(k);
+    active_parts_.clear();
+    for (const Slot& slot : slots_) {
+        const bool active = !stage || slot.active_in.empty() ||
+                            std::find(slot.active_in.begin(), slot.active_in.end(), stage->name) != slot.active_in.end();
+        if (!active) continue;
+        active_.push_back(&slot);
+        for (std::size_t k = slot.first_part; k < slot.first_part + slot.part_count; ++k) active_parts_.push_back(k);
     }
-    plan_evaluations();
+}
+
+void System::begin_stage(const StageInfo& stage) {
+    activate(&stage);
     const StageView s = state();
-    for (Effect* e : active_) e->begin_stage(stage, s);
+    for (const Slot* slot : active_) slot->effect->begin_stage(stage, s);
 }
 
 void System::refresh() {
@@ -197,7 +182,7 @@ void System::refresh() {
 
 std::vector<std::string> System::pipeline() const {
     std::vector<std::string> names;
-    for (const Effect* e : active_) names.push_back(e->describe());
+    for (const std::size_t k : active_parts_) names.push_back(parts_[k]->describe());
     return names;
 }
 

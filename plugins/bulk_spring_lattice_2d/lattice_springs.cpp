@@ -149,21 +149,16 @@ std::string LatticeSprings::describe() const {
 
 void LatticeSprings::add_forces(const StageView& s, ForceView& f) { add_bond_forces(s, nullptr, f); }
 
-bool LatticeSprings::fuses_with(const Effect& next) const {
-    const auto* damping = dynamic_cast<const BondDamping*>(&next);
-    return law_ == Law::geometric && damping && damping->mode() == BondDamping::Mode::full_vector &&
-           damping->grid().nx == grid_.nx && damping->grid().nz == grid_.nz;
+bool LatticeSprings::can_carry(const BondDamping& damping) const {
+    return law_ == Law::geometric && damping.mode() == BondDamping::Mode::full_vector &&
+           damping.grid().nx == grid_.nx && damping.grid().nz == grid_.nz;
 }
 
-void LatticeSprings::add_forces_with(Effect& next, const StageView& s, ForceView& f) {
-    add_bond_forces(s, &static_cast<const BondDamping&>(next), f);
+void LatticeSprings::add_forces_with_dashpots(const StageView& s, const BondDamping& damping, ForceView& f) {
+    add_bond_forces(s, &damping, f);
 }
 
-void LatticeSprings::set_forces_with(Effect* next, const StageView& s, ForceView& f) {
-    add_bond_forces(s, next ? &static_cast<const BondDamping&>(*next) : nullptr, f, true);
-}
-
-void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f, bool overwrite) {
+void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f) {
     const double *x = s.x.data(), *z = s.z.data(), *vx = s.vx.data(), *vz = s.vz.data();
     for (std::size_t n = 0; n < families_.size(); ++n) {
         const BondFamily& b = families_[n];
@@ -181,8 +176,7 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
                                     : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
         if (beyond) exact_beyond_bound(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, k, px, pz);
     }
-    if (overwrite) pair_.write_to(f.fx.data(), f.fz.data());
-    else pair_.add_to(f.fx.data(), f.fz.data());
+    pair_.add_to(f.fx.data(), f.fz.data());
 }
 
 double LatticeSprings::potential_energy(const StageView& s) const {

@@ -21,10 +21,9 @@ class BondDamping;
 /// elastic constants, but a rigid rotation by phi stretches every bond by l (cos phi - 1), so it is
 /// only for small rotations.
 ///
-/// Followed in the pipeline by the full-vector bond damping of the same lattice, the geometric
-/// springs evaluate it with their own pass (fuses_with): each bond's force is then
-/// k (r - l) Delta / r + eta (v_j - v_i), one load of the bond's nodes and one sum on the nodes for
-/// both effects; alone (work accounting, the stability estimate) each keeps its own pass.
+/// With the full-vector bond damping of the same lattice, the geometric springs can evaluate the
+/// dashpots in their own pass (LatticeBonds): each bond's force is then
+/// k (r - l) Delta / r + eta (v_j - v_i), one load of the bond's nodes and one sum on the nodes.
 ///
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class LatticeSprings final : public Effect {
@@ -36,16 +35,18 @@ public:
     std::string describe() const override;
     std::string key() const override { return "lattice_springs"; }
     void add_forces(const StageView& s, ForceView& f) override;
-    bool fuses_with(const Effect& next) const override;
-    void add_forces_with(Effect& next, const StageView& s, ForceView& f) override;
-    /// Writes the summed bond forces on the nodes instead of adding them (no zeroing needed).
-    void set_forces_with(Effect* next, const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override;
 
+    /// Whether add_forces_with_dashpots() can take `damping` into its pass: geometric springs and
+    /// full-vector dashpots on the same lattice.
+    bool can_carry(const BondDamping& damping) const;
+    /// The springs' forces and those of `damping`'s dashpots on the same bonds (can_carry()), in one
+    /// pass over the bonds: their sum as add_forces() of each would give it, up to rounding.
+    void add_forces_with_dashpots(const StageView& s, const BondDamping& damping, ForceView& f);
+
 private:
-    /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given, added
-    /// onto f or written into it (`overwrite`).
-    void add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f, bool overwrite = false);
+    /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given.
+    void add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f);
 
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;

@@ -6,28 +6,12 @@ namespace frictionlab {
 
 namespace {
 
-/// f[i] (+)= the sum over the four families of F[i] - F[i - offset].
-template <bool add>
-[[gnu::always_inline]] inline void gather(const double* __restrict a, Index oa, const double* __restrict b, Index ob,
-                                          const double* __restrict c, Index oc, const double* __restrict d, Index od,
-                                          Index n, double* __restrict f) {
-    for (Index i = 0; i < n; ++i) {
-        const double sum = ((a[i] - a[i - oa]) + (b[i] - b[i - ob])) + ((c[i] - c[i - oc]) + (d[i] - d[i - od]));
-        if constexpr (add) f[i] += sum;
-        else f[i] = sum;
-    }
-}
-
+/// f[i] += the sum over the four families of F[i] - F[i - offset].
 FRICTIONLAB_HOT_KERNEL
-void gather_add(const double* a, Index oa, const double* b, Index ob, const double* c, Index oc, const double* d,
-                Index od, Index n, double* f) {
-    gather<true>(a, oa, b, ob, c, oc, d, od, n, f);
-}
-
-FRICTIONLAB_HOT_KERNEL
-void gather_write(const double* a, Index oa, const double* b, Index ob, const double* c, Index oc, const double* d,
-                  Index od, Index n, double* f) {
-    gather<false>(a, oa, b, ob, c, oc, d, od, n, f);
+void gather_add(const double* __restrict a, Index oa, const double* __restrict b, Index ob, const double* __restrict c,
+                Index oc, const double* __restrict d, Index od, Index n, double* __restrict f) {
+    for (Index i = 0; i < n; ++i)
+        f[i] += ((a[i] - a[i - oa]) + (b[i] - b[i - ob])) + ((c[i] - c[i - oc]) + (d[i] - d[i - od]));
 }
 
 }  // namespace
@@ -45,12 +29,6 @@ void PairForces::add_to(double* fx, double* fz) const {
     const auto& o = offsets_;
     gather_add(slice(0), o[0], slice(2), o[1], slice(4), o[2], slice(6), o[3], nodes_, fx);
     gather_add(slice(1), o[0], slice(3), o[1], slice(5), o[2], slice(7), o[3], nodes_, fz);
-}
-
-void PairForces::write_to(double* fx, double* fz) const {
-    const auto& o = offsets_;
-    gather_write(slice(0), o[0], slice(2), o[1], slice(4), o[2], slice(6), o[3], nodes_, fx);
-    gather_write(slice(1), o[0], slice(3), o[1], slice(5), o[2], slice(7), o[3], nodes_, fz);
 }
 
 }  // namespace frictionlab

@@ -25,8 +25,6 @@ public:
 
     /// fx[i] += sum_f (Fx_f[i] - Fx_f[i - offset_f]), and the same for z, over all nodes.
     void add_to(double* fx, double* fz) const;
-    /// fx[i] = sum_f (Fx_f[i] - Fx_f[i - offset_f]), and the same for z: add_to() onto zeros.
-    void write_to(double* fx, double* fz) const;
 
 private:
     double* slice(std::size_t s) { return buffer_.data() + s * stride_ + pad_; }

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/errors.hpp"
+#include "lattice_bonds.hpp"
 
 namespace frictionlab {
 
@@ -117,9 +118,13 @@ void SpringLattice2d::build_connectivity() {
 }
 
 std::vector<std::unique_ptr<Effect>> SpringLattice2d::effects(const Context&) {
+    auto springs = std::make_unique<LatticeSprings>(grid_, body_.bond_stiffness, law_);
     std::vector<std::unique_ptr<Effect>> out;
-    out.push_back(std::make_unique<LatticeSprings>(grid_, body_.bond_stiffness, law_));
-    if (eta_ > 0) out.push_back(std::make_unique<BondDamping>(grid_, eta_, damping_mode_));
+    if (eta_ > 0)
+        out.push_back(std::make_unique<LatticeBonds>(std::move(springs),
+                                                     std::make_unique<BondDamping>(grid_, eta_, damping_mode_)));
+    else
+        out.push_back(std::move(springs));
     return out;
 }
 

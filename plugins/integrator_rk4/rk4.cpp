@@ -11,7 +11,7 @@ namespace {
 
 // The stage combinations, one pass each over one part of the state: the positions (whose rate k is
 // the stage's velocities), the velocities (whose rate is System::forces() times the inverse masses,
-// formed here as accelerations() would form it) or the aux variables (whose rate is System::forces()
+// formed here as System::derivative() would form it) or the aux variables (whose rate is System::forces()
 // as it is). The sum is formed as ((k1 + 2 k2) + 2 k3) + k4, in the order the textbook expression
 // y + h/6 (k1 + 2 k2 + 2 k3 + k4) evaluates left to right, so the step rounds exactly like it.
 

@@ -1,5 +1,5 @@
-// The system's force pipeline: accelerations() beside derivative(), and pairs of effects that
-// fuse their passes (Effect::fuses_with), with and without work accounting.
+// The system's force pipeline: forces() beside derivative(), stages that switch effects on and off,
+// and composite effects evaluated in one pass whose parts are accounted alone (Effect::parts()).
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -30,24 +30,33 @@ public:
     int alone = 0;
 };
 
-/// A spring -k x on node 0 that evaluates a Dashpot right after it in its own pass.
+/// A spring -k x on node 0.
 class Spring final : public Effect {
 public:
     std::string describe() const override { return "test spring"; }
+    std::string key() const override { return "spring"; }
     void add_forces(const StageView& s, ForceView& f) override {
         f.fx(0) -= k * s.x(0);
         f.fz(0) -= k * s.z(0);
         ++alone;
     }
-    bool fuses_with(const Effect& next) const override { return dynamic_cast<const Dashpot*>(&next) != nullptr; }
-    void add_forces_with(Effect& next, const StageView& s, ForceView& f) override {
-        const double c = static_cast<Dashpot&>(next).c;
-        f.fx(0) -= k * s.x(0) + c * s.vx(0);
-        f.fz(0) -= k * s.z(0) + c * s.vz(0);
-        ++fused;
-    }
     double k = 5.0;
-    int alone = 0, fused = 0;
+    int alone = 0;
+};
+
+/// The spring and the dashpot in one pass, as one effect with two parts.
+class Bond final : public Effect {
+public:
+    std::string describe() const override { return "test bond"; }
+    void add_forces(const StageView& s, ForceView& f) override {
+        f.fx(0) -= spring.k * s.x(0) + dashpot.c * s.vx(0);
+        f.fz(0) -= spring.k * s.z(0) + dashpot.c * s.vz(0);
+        ++together;
+    }
+    std::vector<Effect*> parts() override { return {&spring, &dashpot}; }
+    Spring spring;
+    Dashpot dashpot;
+    int together = 0;
 };
 
 /// A constant force and an aux rate, fusing with nothing.
@@ -61,14 +70,12 @@ public:
 };
 
 struct Pipeline {
-    /// Spring, Dashpot (only in stage "damped"), Push.
+    /// Bond (spring and dashpot, only in stage "damped"), Push.
     explicit Pipeline(bool accounting) : system(body, 1) {
-        auto s = std::make_unique<Spring>();
-        auto d = std::make_unique<Dashpot>();
-        spring = s.get(), dashpot = d.get();
-        system.add_effect(std::move(s));
-        system.add_effect(std::move(d), {"damped"});
-        system.add_effect(std::make_unique<Push>());
+        auto b = std::make_unique<Bond>();
+        bond = b.get();
+        system.add_effect(std::move(b), {"damped"});
+        system.add_effect(std::make_unique<Push>(), {}, "push");
         if (accounting) system.enable_work_accounting();
         y = system.y();
         y << 0.1, -0.2, 0.3, 0.7, 0.0;  // x, z, vx, vz, aux
@@ -76,73 +83,67 @@ struct Pipeline {
     }
     Body body = one_node();
     System system;
-    Spring* spring;
-    Dashpot* dashpot;
+    Bond* bond;
     Eigen::VectorXd y, dy;
 };
 
-TEST(System, EvaluatesAFusablePairInOnePass) {
+TEST(System, EvaluatesACompositeInOnePassAndNamesItsParts) {
     Pipeline p(false);
+    EXPECT_EQ(p.system.labels(), (std::vector<std::string>{"spring", "effect_1", "push"}));
+    EXPECT_EQ(p.system.pipeline(), (std::vector<std::string>{"test spring", "test dashpot", "test push"}));
     p.system.derivative(0, p.y, p.dy);
-    EXPECT_EQ(p.spring->fused, 1);
-    EXPECT_EQ(p.spring->alone + p.dashpot->alone, 0);
+    EXPECT_EQ(p.bond->together, 1);
+    EXPECT_EQ(p.bond->spring.alone + p.bond->dashpot.alone, 0);
     // [v | (-k x - c v + push) / m | aux rate]
     const Eigen::Vector<double, 5> expected(0.3, 0.7, (-5 * 0.1 - 3 * 0.3 + 1) / 2, (5 * 0.2 - 3 * 0.7) / 2, 0.5);
     EXPECT_LE((p.dy - expected).cwiseAbs().maxCoeff(), 1e-15);
-    // One effect alone (the stability estimate) takes its own pass.
+    // One part alone (the stability estimate) takes its own pass.
     p.system.effect_derivative(0, 0, p.y, p.dy);
-    EXPECT_EQ(p.spring->alone, 1);
+    EXPECT_EQ(p.bond->spring.alone, 1);
     EXPECT_DOUBLE_EQ(p.dy(2), -5 * 0.1 / 2);
+    p.system.effect_derivative(1, 0, p.y, p.dy);
+    EXPECT_DOUBLE_EQ(p.dy(2), -3 * 0.3 / 2);
 }
 
-TEST(System, FusesOnlyEffectsActiveSideBySide) {
+TEST(System, AStageSwitchesAWholeCompositeOff) {
     Pipeline p(false);
-    p.system.begin_stage({"undamped"});  // the dashpot is off: the spring is followed by the push
+    p.system.begin_stage({"undamped"});
+    EXPECT_EQ(p.system.pipeline(), std::vector<std::string>{"test push"});
     p.system.derivative(0, p.y, p.dy);
-    EXPECT_EQ(p.spring->fused, 0);
-    EXPECT_EQ(p.spring->alone, 1);
-    EXPECT_EQ(p.dashpot->alone, 0);
+    EXPECT_EQ(p.bond->together, 0);
+    EXPECT_EQ(p.dy(2), 0.5);  // the push alone, 1 N over 2 kg
     p.system.begin_stage({"damped"});
     p.system.derivative(0, p.y, p.dy);
-    EXPECT_EQ(p.spring->fused, 1);
+    EXPECT_EQ(p.bond->together, 1);
 }
 
-TEST(System, AccelerationsAreTheDerivativeAfterTheVelocities) {
+TEST(System, ForcesAreTheDerivativeTimesTheMasses) {
     Pipeline p(false);
+    Eigen::VectorXd f = Eigen::VectorXd::Constant(3, 99.0);  // not zeroed by the caller
     p.system.derivative(0.5, p.y, p.dy);
-    Eigen::VectorXd a = Eigen::VectorXd::Constant(3, 99.0);  // not zeroed by the caller
-    p.system.accelerations(0.5, p.y, a);
-    EXPECT_EQ(a, p.dy.tail(3));
-    EXPECT_EQ(p.system.evaluations(), 2);
-}
-
-TEST(System, ForcesAreTheAccelerationsTimesTheMasses) {
-    Pipeline p(false);
-    Eigen::VectorXd a(3), f = Eigen::VectorXd::Constant(3, 99.0);  // not zeroed by the caller
-    p.system.accelerations(0.5, p.y, a);
     p.system.forces(0.5, p.y, f);
     ASSERT_EQ(p.system.inverse_mass().size(), 1);
     EXPECT_EQ(p.system.inverse_mass()(0), 0.5);
-    // The product an integrator forms is accelerations() bit for bit; aux rates are as they are.
-    EXPECT_EQ(f(0) * p.system.inverse_mass()(0), a(0));
-    EXPECT_EQ(f(1) * p.system.inverse_mass()(0), a(1));
-    EXPECT_NE(f(0), a(0));
-    EXPECT_EQ(f(2), a(2));
+    // The product an integrator forms is derivative()'s bit for bit; aux rates are as they are.
+    EXPECT_EQ(f(0) * p.system.inverse_mass()(0), p.dy(2));
+    EXPECT_EQ(f(1) * p.system.inverse_mass()(0), p.dy(3));
+    EXPECT_NE(f(0), p.dy(2));
+    EXPECT_EQ(f(2), p.dy(4));
     EXPECT_EQ(p.system.evaluations(), 2);
 }
 
-TEST(System, WorkAccountingSplitsAFusedPairAndChangesNoForce) {
+TEST(System, WorkAccountingSplitsACompositeAndChangesNoForce) {
     Pipeline plain(false), accounted(true);
     plain.system.derivative(0, plain.y, plain.dy, 0.25);
     accounted.system.begin_step();
     accounted.system.derivative(0, accounted.y, accounted.dy, 0.25);
-    EXPECT_EQ(plain.dy, accounted.dy);  // bit for bit: the pair still moves the state fused
-    EXPECT_EQ(accounted.spring->fused, 1);
-    EXPECT_EQ(accounted.spring->alone, 1);  // once more, alone, for its power
+    EXPECT_EQ(plain.dy, accounted.dy);  // bit for bit: the composite still moves the state in one pass
+    EXPECT_EQ(accounted.bond->together, 1);
+    EXPECT_EQ(accounted.bond->spring.alone, 1);  // once more, alone, for its power
     accounted.system.accept(1.0, accounted.y);
     const std::vector<double>& work = accounted.system.work();
     ASSERT_EQ(work.size(), 3u);
-    // The weight times each effect's power F_e . v at the evaluated state.
+    // The weight times each part's power F_e . v at the evaluated state.
     EXPECT_DOUBLE_EQ(work[0], 0.25 * (-5 * 0.1 * 0.3 + 5 * 0.2 * 0.7));
     EXPECT_DOUBLE_EQ(work[1], 0.25 * (-3 * 0.3 * 0.3 - 3 * 0.7 * 0.7));
     EXPECT_DOUBLE_EQ(work[2], 0.25 * 0.3);

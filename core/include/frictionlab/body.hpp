@@ -3,7 +3,7 @@
 // named node sets and the connectivity for pictures. Loaders and friction laws address nodes only
 // through node sets, so they work on any bulk model that provides the sets they need.
 //
-// Standard node sets (share/glossary.md): "all", "top", "interface" (bottom row, in contact with the
+// Standard node sets (share/docs/glossary.md): "all", "top", "interface" (bottom row, in contact with the
 // base, ordered by increasing x), "trailing_edge" (x = 0 column, ordered by increasing z),
 // "leading_edge" (x = L column, ordered by increasing z).
 #include <array>

@@ -7,6 +7,7 @@
 // after the step is accepted, commit() judges and applies the state transitions once.
 #include <limits>
 #include <string_view>
+#include <vector>
 
 #include "frictionlab/component.hpp"
 #include "frictionlab/stage.hpp"
@@ -26,27 +27,11 @@ public:
 
     /// Adds this effect's forces at one state (whole arrays; no allocation, no I/O).
     virtual void add_forces(const StageView& s, ForceView& f) = 0;
-    /// Whether add_forces_with(next, ...) adds this effect's and `next`'s forces in one pass (e.g.
-    /// springs and dashpots on the same bonds: one load of each bond's nodes). The system then
-    /// evaluates the pair that way whenever `next` follows this effect in the pipeline.
-    virtual bool fuses_with(const Effect& /*next*/) const { return false; }
-    /// Adds this effect's and `next`'s forces (called only if fuses_with(next)): their sum as
-    /// add_forces() of each would give it, up to rounding.
-    virtual void add_forces_with(Effect& next, const StageView& s, ForceView& f) {
-        add_forces(s, f);
-        next.add_forces(s, f);
-    }
-    /// The first evaluation of the pipeline: this effect's forces (with `next`'s, fused, if it is
-    /// given: only if fuses_with(*next)) written into f.fx and f.fz whatever they hold, and its aux
-    /// rates added onto f.aux_rate, which holds zeros. The same values as add_forces() (or
-    /// add_forces_with()) onto zeroed arrays, so an effect that covers every node may write instead
-    /// of adding and spare the system the zeroing. Default: zero them, then add.
-    virtual void set_forces_with(Effect* next, const StageView& s, ForceView& f) {
-        f.fx.setZero();
-        f.fz.setZero();
-        if (next) add_forces_with(*next, s, f);
-        else add_forces(s, f);
-    }
+    /// The physical effects this one sums, if it evaluates several in one pass (a lattice's springs
+    /// and the dashpots on the same bonds share one load of each bond's nodes). Work accounting,
+    /// energy bookkeeping and the stable-step estimate then look at each part alone; its forces are
+    /// the sum of the parts' up to rounding. Empty (the default): the effect is its own single part.
+    virtual std::vector<Effect*> parts() { return {}; }
 
     /// Called at the start of every stage of the run, before any step of it.
     virtual void begin_stage(const StageInfo&, const StageView&) {}

@@ -29,8 +29,6 @@ struct JunctionCounts {
     /// The same for observers that only use the counts when the scene has them.
     static std::optional<JunctionCounts> find(const Quantities& q, Index blocks);
 
-    /// N_p + N_s + N_d per block, as an expression (no allocation until assigned).
-    auto total() const { return *pinned + *sliding + *dislocated; }
     /// N_p / (N_p + N_s + N_d) of block b; NaN for a block without junctions (detached).
     double pinned_fraction(Index b) const {
         const double all = (*pinned)(b) + (*sliding)(b) + (*dislocated)(b);

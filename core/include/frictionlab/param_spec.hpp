@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of a plugin type, declared once beside the type (design.md §1.4).
+// Parameters of a plugin type, declared once beside the type.
 //
 // A type binds scene keys to members of its typed `Params` struct:
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Where plugins are found (design.md §3), in order: `--plugin-path` options, the scene's
+// Where plugins are found (share/docs/architecture.md), in order: `--plugin-path` options, the scene's
 // `plugin_paths:`, FRICTIONLAB_PLUGIN_PATH, then the plugins shipped with the program, found next to
 // the running executable (<exe_dir>/../lib/frictionlab/plugins; the build tree mirrors the install
 // tree, so this holds in both). The first plugin of a given name wins, so each place can override

@@ -1,5 +1,5 @@
 #pragma once
-// Keyed random numbers (design.md §2). A draw is a pure function of
+// Keyed random numbers (theory.md §4). A draw is a pure function of
 // (scene seed, block, junction slot, purpose, draw counter), so results do not depend on thread
 // count or loop order, and runs that differ only in time step draw the same junction lifetimes.
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The run-owned registry of component types (design.md §1.2, §3). Plugins add their types by an
+// The run-owned registry of component types (share/docs/architecture.md). Plugins add their types by an
 // ordinary call, registry.add<T>(), from the register function their entry point names.
 #include <filesystem>
 #include <functional>

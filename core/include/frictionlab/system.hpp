@@ -18,9 +18,10 @@ public:
 
     /// Adds an effect to the pipeline, active in the named stages only (empty: in every stage).
     /// Effects are evaluated in the order added. `label` names it in outputs (default: its key(),
-    /// else "effect_<n>"); a label already taken gets a suffix "_2", "_3", ...
+    /// else "effect_<n>"); a label already taken gets a suffix "_2", "_3", ... The parts of a
+    /// composite effect (Effect::parts()) are labelled by their own key().
     void add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in = {}, std::string label = {});
-    /// The output label of every effect, in the order of for_each_effect().
+    /// The output label of every part, in the order of for_each_effect().
     const std::vector<std::string>& labels() const { return labels_; }
 
     const Body& body() const { return body_; }
@@ -37,17 +38,14 @@ public:
     /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
     /// to its work with that weight, so the work is integrated to the integrator's own order.
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
-    /// The rest of dy/dt after the velocities: [F/m | aux rates], layout().size() - 2N values,
-    /// i.e. derivative() without the copy of y's velocities into dy's first half. For integrators
-    /// that read those velocities from y itself (RK4's fused stages); same arguments, same values.
-    void accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight = 0);
-    /// accelerations() before the division by the masses: [F | aux rates], the forces in N. For
-    /// integrators that divide by the masses (inverse_mass()) within their own pass over the rates;
-    /// F_i * inverse_mass()(i) is then exactly what accelerations() gives. Counts as an evaluation.
+    /// The rest of dy/dt after the velocities before the division by the masses: [F | aux rates],
+    /// the forces in N, layout().size() - 2N values. For integrators that read the velocities from y
+    /// and divide by the masses (inverse_mass()) within their own pass over the rates (RK4's fused
+    /// stages); F_i * inverse_mass()(i) is exactly what derivative() gives. Counts as an evaluation.
     void forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight = 0);
     /// 1/m of every node.
     const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
-    /// dy/dt with only one active effect of the pipeline (index into pipeline()), for diagnostics
+    /// dy/dt with only one active part of the pipeline (index into pipeline()), for diagnostics
     /// such as the stability estimate that names the effect limiting the step.
     void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
     /// The x-forces and the diagonal d(fx)/d(vx) (both [nodes]) of the active effects whose velocity
@@ -56,8 +54,10 @@ public:
     /// read the quantities others published in the last derivative() (a friction law reads the base
     /// contact's normal force), so call it at the positions of that evaluation.
     bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx);
-    /// Whether an active effect (index into pipeline()) has a local velocity Jacobian.
-    bool has_velocity_jacobian(std::size_t active_index) const { return active_.at(active_index)->has_velocity_jacobian(); }
+    /// Whether an active part (index into pipeline()) has a local velocity Jacobian.
+    bool has_velocity_jacobian(std::size_t active_index) const {
+        return parts_.at(active_parts_.at(active_index))->has_velocity_jacobian();
+    }
     void begin_step();
     /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);
@@ -72,19 +72,20 @@ public:
     void refresh();
     /// Net force on every node at the last refresh(): [fx (N) | fz (N)].
     const Eigen::VectorXd& net_force() const { return net_force_; }
-    /// describe() of every effect active in the current stage, in evaluation order.
+    /// describe() of every part active in the current stage, in evaluation order.
     std::vector<std::string> pipeline() const;
-    /// Visits every effect of the pipeline (active or not), e.g. to set initial aux values.
+    /// Visits every part of the pipeline (active or not; a composite effect's parts one by one), e.g.
+    /// to set initial aux values or to book each physical effect's energy.
     template <class F>
     void for_each_effect(F&& visit) const {
-        for (const Slot& slot : slots_) visit(*slot.effect);
+        for (const Effect* part : parts_) visit(*part);
     }
-    /// Work accounting (energy bookkeeping) evaluates every effect once more, alone, to know its
+    /// Work accounting (energy bookkeeping) evaluates every part once more, alone, to know its
     /// power, so it is off unless an observer asks for it. The state advances with the forces summed
-    /// exactly as without accounting (fused pairs included): switching it on changes no result.
+    /// exactly as without accounting (composites in their one pass): switching it on changes no result.
     void enable_work_accounting();
     bool work_accounting() const { return !work_.empty(); }
-    /// Work (J) each effect of the pipeline has done on the nodes since accounting began, in the
+    /// Work (J) each part of the pipeline has done on the nodes since accounting began, in the
     /// order of for_each_effect(); empty without accounting.
     const std::vector<double>& work() const { return work_; }
     /// Number of derivative evaluations the integrator asked for so far: the cost of the time
@@ -92,41 +93,35 @@ public:
     long long evaluations() const { return evaluations_; }
 
 private:
-    /// derivative() and accelerations() without counting an evaluation (refresh() uses them).
+    /// derivative() without counting an evaluation (refresh() uses it).
     void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
-    void compute_accelerations(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight);
-    /// compute_accelerations() before the division by the masses.
+    /// forces() without counting an evaluation.
     void compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
-    /// Pairs each active effect with the next one where it fuses_with() it.
-    void plan_evaluations();
+    /// Makes the effects active in `stage` (every effect if none) the pipeline.
+    void activate(const StageInfo* stage);
     /// Forces to accelerations, F/m.
     void divide_by_mass(ForceView& f) const;
     /// After the accepted state is in y_: time, work and the effects' commits for the step to t.
     void commit_step(double t);
-    /// Adds the work of active effect `active_index` over this evaluation, with the quadrature weight.
-    void add_work(std::size_t active_index, const StageView& s, double weight);
+    /// Adds the work of part `part` (index into parts_) over this evaluation, with the quadrature weight.
+    void add_work(std::size_t part, const StageView& s, double weight);
 
     struct Slot {
         std::unique_ptr<Effect> effect;
         std::vector<std::string> active_in;
-        bool active = true;
+        std::size_t first_part, part_count;  // its parts: parts_[first_part, first_part + part_count)
     };
     const Body& body_;
     StateLayout layout_;
     Eigen::ArrayXd inverse_mass_;
     std::vector<Slot> slots_;
-    std::vector<std::string> labels_;
-    std::vector<Effect*> active_;  // the current stage's pipeline, evaluation order
-    /// How the pipeline is evaluated: active_[first] alone, or fused with active_[first + 1].
-    struct Evaluation {
-        std::size_t first;
-        bool fused;
-    };
-    std::vector<Evaluation> plan_;
+    std::vector<Effect*> parts_;  // every slot's parts (the effect itself if it has none), slot order
+    std::vector<std::string> labels_;           // per part
+    std::vector<const Slot*> active_;           // the current stage's pipeline, evaluation order
+    std::vector<std::size_t> active_parts_;     // indices into parts_ of the active slots' parts
     Eigen::VectorXd y_, scratch_, net_force_;
-    std::vector<double> work_, pending_work_;  // per slot; pending = this step's, until accepted
-    std::vector<std::size_t> active_slot_;     // slot index of each active effect
-    Eigen::VectorXd effect_force_;              // one effect's [fx | fz | aux rate], accounting only
+    std::vector<double> work_, pending_work_;  // per part; pending = this step's, until accepted
+    Eigen::VectorXd effect_force_;              // one part's [fx | fz | aux rate], accounting only
     Eigen::VectorXd local_scratch_;             // forces of the effects local in velocity
     double t_ = 0;
     long long steps_ = 0, evaluations_ = 0;

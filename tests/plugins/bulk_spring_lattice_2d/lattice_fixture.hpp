@@ -44,10 +44,8 @@ struct LatticeFixture {
     Eigen::VectorXd forces(Effect& e, const Eigen::VectorXd& y) const {
         return evaluated(y, [&](const StageView& s, ForceView& f) { e.add_forces(s, f); });
     }
-    /// [fx | fz] of the springs and the damping in their fused pass (Effect::add_forces_with).
-    Eigen::VectorXd fused_forces(const Eigen::VectorXd& y) {
-        return evaluated(y, [&](const StageView& s, ForceView& f) { springs().add_forces_with(damping(), s, f); });
-    }
+    /// [fx | fz] of the springs and the damping as the lattice hands them to the system: one effect.
+    Eigen::VectorXd bond_forces(const Eigen::VectorXd& y) { return forces(*effects.at(0), y); }
     template <class Evaluate>
     Eigen::VectorXd evaluated(const Eigen::VectorXd& y, Evaluate evaluate) const {
         Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout().size());
@@ -56,8 +54,13 @@ struct LatticeFixture {
         return dy.segment(2 * nodes(), 2 * nodes());
     }
 
-    Effect& springs() { return *effects.at(0); }
-    Effect& damping() { return *effects.at(1); }
+    /// The parts of the lattice's one effect (LatticeBonds), or that effect itself without damping.
+    LatticeSprings& springs() { return static_cast<LatticeSprings&>(part(0)); }
+    BondDamping& damping() { return static_cast<BondDamping&>(part(1)); }
+    Effect& part(std::size_t k) {
+        const std::vector<Effect*> parts = effects.at(0)->parts();
+        return parts.empty() ? *effects.at(0) : *parts.at(k);
+    }
 
     test_support::Services services;
     SpringLattice2d lattice;

@@ -156,53 +156,41 @@ TEST(LatticeSprings, BondFamiliesEqualThePerBondLoopOnAnotherShape) {
 
 /// Springs and full-vector dashpots in one pass over the bonds give the two effects' sum, where the
 /// series serves (small strain) and where bonds take the exact law (strains of ~10 %).
-TEST(LatticeSprings, FusedWithTheBondDampingEqualsBothPasses) {
+TEST(LatticeSprings, InOnePassWithTheBondDampingEqualsBothPasses) {
     LatticeFixture f;
-    ASSERT_TRUE(f.springs().fuses_with(f.damping()));
+    ASSERT_TRUE(f.springs().can_carry(f.damping()));
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> u(-0.01, 0.01);
     for (double amplitude : {1e-4, 0.1}) {
         Eigen::VectorXd y = randomly_deformed(f, amplitude * f.body().spacing, 13);
         for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = u(rng);  // m/s
         const Eigen::VectorXd damping = f.forces(f.damping(), y), both = f.forces(f.springs(), y) + damping;
-        const Eigen::VectorXd fused = f.fused_forces(y);
+        const Eigen::VectorXd one_pass = f.bond_forces(y);
         // Round-off of the sum only; leaving out the dashpots would be off by |damping|.
-        EXPECT_LE((fused - both).cwiseAbs().maxCoeff(), 1e-13 * both.cwiseAbs().maxCoeff()) << amplitude;
+        EXPECT_LE((one_pass - both).cwiseAbs().maxCoeff(), 1e-13 * both.cwiseAbs().maxCoeff()) << amplitude;
         EXPECT_GT(damping.cwiseAbs().maxCoeff(), 1e-6 * both.cwiseAbs().maxCoeff()) << amplitude;
     }
 }
 
-/// As the first effect of the pipeline the springs write the node forces (Effect::set_forces_with):
-/// whatever the arrays held, they then hold the values adding onto zeros gives, alone and fused.
-TEST(LatticeSprings, WrittenForcesEqualThoseAddedOntoZeros) {
-    LatticeFixture f;
-    Eigen::VectorXd y = randomly_deformed(f, 1e-4 * f.body().spacing, 5);
-    for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = 1e-3 * std::sin(0.37 * static_cast<double>(i));
-    const auto written = [&](Effect* next) {
-        Eigen::VectorXd dy = Eigen::VectorXd::Constant(f.layout().size(), 7.5);  // not zeroed
-        ForceView fv = forces_of(dy, f.layout());
-        f.springs().set_forces_with(next, view_of(y, f.layout(), 0.0), fv);
-        return Eigen::VectorXd(dy.segment(2 * f.nodes(), 2 * f.nodes()));
-    };
-    EXPECT_EQ(written(nullptr), f.forces(f.springs(), y));
-    EXPECT_EQ(written(&f.damping()), f.fused_forces(y));
-}
-
-TEST(LatticeSprings, FuseOnlyGeometricSpringsWithFullVectorDampingAfterThem) {
+/// Where one pass cannot carry the dashpots the lattice's effect takes two, with the same sum.
+TEST(LatticeSprings, OnePassOnlyForGeometricSpringsWithFullVectorDampingOfTheSameLattice) {
     LatticeFixture geometric;
-    EXPECT_FALSE(geometric.damping().fuses_with(geometric.springs()));  // the order of the pipeline counts
-    EXPECT_FALSE(geometric.springs().fuses_with(geometric.springs()));
     LatticeFixture small_strain(with_springs("small_strain"));
-    EXPECT_FALSE(small_strain.springs().fuses_with(small_strain.damping()));
+    EXPECT_FALSE(small_strain.springs().can_carry(small_strain.damping()));
     SpringLattice2d::Params projected;
     projected.damping_mode = "bond_projected";
     LatticeFixture bond_projected(projected);
-    EXPECT_FALSE(bond_projected.springs().fuses_with(bond_projected.damping()));
+    EXPECT_FALSE(bond_projected.springs().can_carry(bond_projected.damping()));
     SpringLattice2d::Params other_shape;
     other_shape.nx = 21;
     other_shape.height = 0.1 / 20 * 8;
     LatticeFixture other(other_shape);
-    EXPECT_FALSE(geometric.springs().fuses_with(other.damping()));  // another lattice's dashpots
+    EXPECT_FALSE(geometric.springs().can_carry(other.damping()));  // another lattice's dashpots
+    for (LatticeFixture* f : {&small_strain, &bond_projected}) {
+        Eigen::VectorXd y = randomly_deformed(*f, 1e-3 * f->body().spacing, 3);
+        for (Index i = 2 * f->nodes(); i < 4 * f->nodes(); ++i) y(i) = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+        EXPECT_EQ(f->bond_forces(y), f->forces(f->springs(), y) + f->forces(f->damping(), y));
+    }
 }
 
 }  // namespace

@@ -100,7 +100,8 @@ TEST(SpringLattice2d, SpecDeclaresEveryKeyWithDocAndDefaults) {
 
 TEST(SpringLattice2d, EffectsAreOnlyThoseTheParametersSwitchOn) {
     LatticeFixture damped;
-    ASSERT_EQ(damped.effects.size(), 2u);
+    ASSERT_EQ(damped.effects.size(), 1u);  // springs and dashpots: one effect, two parts
+    EXPECT_EQ(damped.effects[0]->parts().size(), 2u);
     EXPECT_EQ(damped.springs().describe(), "lattice springs 41x9 (geometric)");
     EXPECT_EQ(damped.damping().describe(), "bond damping eta=13.4 N s/m (full vector)");
 
@@ -109,6 +110,7 @@ TEST(SpringLattice2d, EffectsAreOnlyThoseTheParametersSwitchOn) {
     p.springs = "small_strain";
     LatticeFixture undamped(p);
     ASSERT_EQ(undamped.effects.size(), 1u);  // simulate only what the scene names
+    EXPECT_TRUE(undamped.effects[0]->parts().empty());
     EXPECT_EQ(undamped.springs().describe(), "lattice springs 41x9 (small strain)");
 }
 
