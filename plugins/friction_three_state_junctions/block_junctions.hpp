@@ -95,6 +95,8 @@ public:
     void remove(Index j);
     /// Puts junction j into the pinned state with force f0 at position x; returns its new index.
     Index pin(Index j, double f0, double x);
+    /// Re-anchors the pinned junction j with force f0 at position x; its index does not change.
+    void reset_pinned(Index j, double f0, double x) { set_pinned_force(j, f0, x); }
     /// Puts junction j into the sliding state with force s mu_d p; returns its new index.
     Index slide(Index j, double sign, double t, double lifetime);
     /// Puts the active junction j into the dislocated state with tangential part g >= 0.

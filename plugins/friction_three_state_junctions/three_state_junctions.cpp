@@ -45,6 +45,12 @@ ThreeStateJunctions::Removal parse_removal(const std::string& s) {
                      "' (random, most_loaded_pinned, non_pinned_first)");
 }
 
+ThreeStateJunctions::SettleOverload parse_settle_overload(const std::string& s) {
+    if (s == "hold") return ThreeStateJunctions::SettleOverload::hold;
+    if (s == "slip_and_repin") return ThreeStateJunctions::SettleOverload::slip_and_repin;
+    throw InputError("three_state_junctions: unknown settle_overload '" + s + "' (hold, slip_and_repin)");
+}
+
 const Params& validated(const Params& p) {
     for (const std::string& error : {angle_rule(p), order_rule(p)})
         if (!error.empty()) throw InputError("three_state_junctions: " + error);
@@ -90,6 +96,11 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
           "Which junctions go when P_b falls: uniformly at random, the most loaded pinned ones first, or the "
           "sliding and dislocated ones first (theory.md B.7).")
         .one_of({"random", "most_loaded_pinned", "non_pinned_first"});
+    s.add("settle_overload", &Params::settle_overload,
+          "While friction events are off (settling, theory.md B.18a), a pinned junction loaded above mu_s p: "
+          "'slip_and_repin' slips at once and re-pins carrying s mu_d p, as a junction that slid comes to rest; "
+          "'hold' keeps it pinned at any force (the run is refused if one is still above mu_s p when loading starts).")
+        .one_of({"hold", "slip_and_repin"});
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     s.rule("initial_angle", angle_rule);
     s.rule("mu_d", order_rule);
@@ -116,6 +127,7 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
       threshold_(params.mu_s * p_),
       tan_phi0_(std::tan(params.initial_angle)),
       removal_(parse_removal(params.removal)),
+      settle_overload_(parse_settle_overload(params.settle_overload)),
       sampler_(ctx.seed, {params.sliding_time_mean, params.sliding_time_sd},
                {params.dislocated_time_mean, params.dislocated_time_sd}),
       next_event_(infinity) {
@@ -200,6 +212,7 @@ void ThreeStateJunctions::commit_block(Index i, double x, double t) {
     b.advance(x - x_start_[k]);
     x_start_[k] = x;
     if (events_) break_pinned(b, i, x, t);
+    else if (settle_overload_ == SettleOverload::slip_and_repin) repin_overloaded(b, x);
     update_active(b, i, x, t);
     follow_normal_force(b, i, x);
     b.refresh_active();
@@ -216,6 +229,16 @@ void ThreeStateJunctions::break_pinned(BlockJunctions& b, Index i, double x, dou
         Junction& r = b.record(j);
         const double lifetime = sampler_.sliding(static_cast<std::uint64_t>(i), r.id, r.sliding_draws);
         b.slide(j, f > 0 ? 1.0 : -1.0, t, lifetime);
+    }
+}
+
+void ThreeStateJunctions::repin_overloaded(BlockJunctions& b, double x) const {
+    if (!b.pinned_beyond(x, threshold_)) return;
+    // B.18a: the slip of C1 -> C3 -> C5 collapsed into the step, without its clocks, so no junction
+    // is left sliding or dislocated when loading starts. The pinned set keeps its indices.
+    for (Index j = 0; j < b.pinned(); ++j) {
+        const double f = b.junction_force(j, x, x);
+        if (std::abs(f) > threshold_) b.reset_pinned(j, f > 0 ? mu_d_p_ : -mu_d_p_, x);
     }
 }
 
@@ -321,7 +344,8 @@ void ThreeStateJunctions::check_settled(const StageInfo& stage, const StageView&
         throw RunError(fmt::format(
             "{}: at the start of stage '{}', block {} (node {}) has a pinned junction at |f| = {:.6g} mu_s p, "
             "above the breaking threshold mu_s p = {:.6g} N; settling did not reach a state the junctions "
-            "can hold (theory.md B.18)",
+            "can hold (theory.md B.18). Set the friction's settle_overload: slip_and_repin to let overloaded "
+            "junctions slip and re-pin while the load is applied (B.18a)",
             name_, stage.name, i, nodes_[i], blocks_[i].max_pinned_force(x) / threshold_, threshold_));
     }
 }

@@ -49,8 +49,11 @@ namespace frictionlab {
 /// separation), the angle decay, and the count change to the end-of-step normal force P_b (read from
 /// the quantity "normal_force", which the base contact writes in its own, earlier, commit). While a
 /// stage has friction_events false (settling, B.18) no junction changes state; counts still follow
-/// P_b, so junctions are created, pinned and unloaded, as the load grows. When events are switched
-/// on, a pinned junction above mu_s p is a RunError.
+/// P_b, so junctions are created, pinned and unloaded, as the load grows. What a pinned junction
+/// loaded above mu_s p does then is settle_overload (B.18a): "hold" keeps it pinned at any force;
+/// "slip_and_repin" (default) lets it slip at once and re-pin carrying s mu_d p, where a junction
+/// that slid comes to rest (C5), anchored where the block is. When events are switched on, a pinned
+/// junction above mu_s p is a RunError that names the option.
 ///
 /// Readings where theory.md is silent (none contradicts it, so none needs an option):
 /// - entering a state at a commit starts its clock at that commit's time, not at the deadline that
@@ -91,9 +94,12 @@ public:
         double dislocated_time_sd = 3e-4;
         double initial_angle = 0.0349066;
         std::string removal = "random";
+        std::string settle_overload = "slip_and_repin";
         std::string node_set = "interface";
     };
     enum class Removal { random, most_loaded_pinned, non_pinned_first };
+    /// What a pinned junction does above mu_s p while friction events are off (settling, B.18).
+    enum class SettleOverload { hold, slip_and_repin };
 
     static constexpr std::string_view type = "three_state_junctions";
     static ParamSpec<Params> spec();
@@ -120,6 +126,7 @@ public:
 private:
     void commit_block(Index i, double x, double t);
     void break_pinned(BlockJunctions& b, Index i, double x, double t) const;
+    void repin_overloaded(BlockJunctions& b, double x) const;
     void update_active(BlockJunctions& b, Index i, double x, double t) const;
     void end_sliding(BlockJunctions& b, Index i, Index j, double x, double t) const;
     void end_dislocated(BlockJunctions& b, Index j, double x) const;
@@ -136,6 +143,7 @@ private:
     std::uint64_t seed_;
     double p_, k_s_, mu_d_p_, threshold_, tan_phi0_;
     Removal removal_;
+    SettleOverload settle_overload_;
     LifetimeSampler sampler_;
     NodeSet nodes_;
     std::vector<BlockJunctions> blocks_;

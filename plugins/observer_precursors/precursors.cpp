@@ -51,6 +51,18 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     s.add("stage", &Params::stage,
           "Observe only during stages of this name (empty: every stage), so settling is not taken for rupture.")
         .names_a_stage();
+    s.add("global_span", &Params::global_span,
+          "An event is global (a global slip, not a precursor) when its ruptured blocks span at least this fraction "
+          "of the interface length L, each block covering l_s (theory.md B.19a).")
+        .unit("1")
+        .greater_than(0)
+        .at_most(1);
+    s.add("nucleation_window_quiet_times", &Params::nucleation_window_quiet_times,
+          "A non-global event ending at most this many quiet_times before a larger one (a longer precursor or a "
+          "global slip) starts, within one block of its nucleation, is that rupture's nucleation and is reported "
+          "with it (B.19a); in quiet times so that it scales with the loading rate as quiet_time does; 0: never.")
+        .unit("1")
+        .at_least(0);
     s.add("events_file", &Params::events_file, "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
           "CSV file of the fronts: per event and block, when the block first ruptured.");
@@ -80,7 +92,9 @@ void Precursors::begin(const RunView& view) {
     for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0(interface_[i]) - body.x0(interface_[0]);
     geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
     geometry.spacing = body.spacing;
-    detector_.emplace(std::move(geometry), params_.quiet_time);
+    detector_.emplace(std::move(geometry), params_.quiet_time,
+                      RuptureEventDetector::Options{params_.global_span,
+                                                    params_.nucleation_window_quiet_times * params_.quiet_time});
 
     const Quantities& q = view.quantities;
     if (const auto* s = q.find_scalar("driving_force")) driving_force_ = &s->value;
@@ -118,7 +132,7 @@ void Precursors::observe(const RunView& view) {
 
 void Precursors::end(const RunView& view) {
     if (!detector_) return;  // the run failed before its first stage: nothing to write
-    if (auto open = detector_->close()) write(*open);
+    while (auto e = detector_->close()) write(*e);
     write_summary(view, true);
 }
 

@@ -26,7 +26,9 @@ namespace frictionlab {
 ///
 /// and RuptureEventDetector groups the ruptured blocks into events (start, end, nucleation block,
 /// extent l = min(L, x_max + l_s/2) with x_max the farthest ruptured block from the trailing edge,
-/// global when every block ruptured, mean front speed, largest slip). F_S and F_N are the published
+/// global when the ruptured blocks span global_span of L, mean front speed, largest slip); an
+/// event that ends within nucleation_window_quiet_times x quiet_time before a larger one starts
+/// where it ruptured is that rupture's nucleation and is reported with it (B.19a). F_S and F_N are the published
 /// scalars driving_force and normal_load at the event's start (NaN if the scene has none).
 ///
 /// Outputs, in the run's output directory (columns in share/docs/glossary.md):
@@ -47,6 +49,8 @@ public:
         double ruptured_fraction = 0.5;
         double slip_threshold = 0.5e-6;
         double quiet_time = 2e-3;
+        double global_span = 0.95;
+        double nucleation_window_quiet_times = 5;
         std::string stage = "load";
         std::string events_file = "precursors.csv";
         std::string fronts_file = "precursor_fronts.csv";

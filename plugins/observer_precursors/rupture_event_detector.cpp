@@ -9,8 +9,10 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 }
 
-RuptureEventDetector::RuptureEventDetector(Interface interface, double quiet_time)
-    : interface_(std::move(interface)), quiet_time_(quiet_time) {}
+RuptureEventDetector::RuptureEventDetector(Interface interface, double quiet_time, Options options)
+    : interface_(std::move(interface)), quiet_time_(quiet_time), options_(options) {
+    reported_.reserve(3);
+}
 
 std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const RuptureMask& ruptured,
                                                           const Eigen::ArrayXd& slip, double driving_force,
@@ -25,25 +27,47 @@ std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const Ruptur
 
     // Slack against rounding of observation times that are sums of a cadence.
     const bool quiet_long_enough = open_ && t - last_ruptured_t_ >= quiet_time_ * (1 - 1e-9);
-    std::optional<RuptureEvent> ended;
     if (ruptured.any()) {
-        if (quiet_long_enough) ended = finish(true);  // the observations were sparser than quiet_time
+        if (quiet_long_enough) settle(finish(true));  // the observations were sparser than quiet_time
         if (!open_) start(t, ruptured, slip, driving_force, normal_load);
         RuptureEvent& e = *open_;
         for (Index i = 0; i < ruptured.size(); ++i)
             if (ruptured(i) && std::isnan(e.first_rupture[i])) e.first_rupture[i] = t;
         e.t_end = last_ruptured_t_ = t;
     } else if (quiet_long_enough) {
-        ended = finish(true);
+        settle(finish(true));
     }
-    if (open_) open_->max_slip = std::max(open_->max_slip, (slip - base_slip_).maxCoeff());
+    if (open_) {
+        open_->max_slip = std::max(open_->max_slip, (slip - base_slip_).maxCoeff());
+        if (held_) open_slip_since_held_ = std::max(open_slip_since_held_, (slip - held_base_slip_).maxCoeff());
+    }
+    // The held event can no longer be a nucleation once its window has passed with no event
+    // started within it. At most one report per observation: a second waits for the next one.
+    // The same slack as for quiet_time, the other way: "more than" must not hinge on rounding.
+    const bool window_passed = held_ && t - held_->t_end > options_.nucleation_window * (1 + 1e-9);
+    const bool open_in_window = open_ && held_ && open_->t_start - held_->t_end <= options_.nucleation_window;
+    if (window_passed && !open_in_window && reported_.empty()) {
+        report(std::move(*held_));
+        held_.reset();
+    }
     previous_slip_ = slip;
-    return ended;
+    return take_reported();
 }
 
 std::optional<RuptureEvent> RuptureEventDetector::close() {
-    if (!open_) return std::nullopt;
-    return finish(false);
+    if (open_) settle(finish(false));
+    if (held_) {
+        report(std::move(*held_));
+        held_.reset();
+    }
+    return take_reported();
+}
+
+std::optional<RuptureEvent> RuptureEventDetector::take_reported() {
+    if (reported_.empty()) return std::nullopt;
+    RuptureEvent e = std::move(reported_.front());
+    reported_.erase(reported_.begin());
+    return e;
 }
 
 void RuptureEventDetector::start(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip,
@@ -60,6 +84,7 @@ void RuptureEventDetector::start(double t, const RuptureMask& ruptured, const Ei
         if (ruptured(i) && increment > most) most = increment, e.nucleation = static_cast<int>(i);
     }
     base_slip_ = previous_slip_;
+    open_slip_since_held_ = 0;
     open_ = std::move(e);
 }
 
@@ -68,6 +93,38 @@ RuptureEvent RuptureEventDetector::finish(bool finished) {
     open_.reset();
     e.finished = finished;
     measure(e);
+    return e;
+}
+
+bool RuptureEventDetector::is_nucleation_of(const RuptureEvent& held, const RuptureEvent& later) const {
+    if (held.global || later.ruptured_blocks <= held.ruptured_blocks ||
+        later.t_start - held.t_end > options_.nucleation_window)
+        return false;
+    // The same nucleation site, not merely a block the held event reached: a rupture that restarts
+    // at the arrest front of a precursor is a new rupture.
+    return std::abs(held.nucleation - later.nucleation) <= 1;
+}
+
+void RuptureEventDetector::settle(RuptureEvent e) {
+    if (options_.nucleation_window <= 0) return report(std::move(e));
+    if (held_ && is_nucleation_of(*held_, e)) {
+        RuptureEvent merged = std::move(*held_);
+        held_.reset();
+        for (std::size_t i = 0; i < merged.first_rupture.size(); ++i)
+            if (std::isnan(merged.first_rupture[i])) merged.first_rupture[i] = e.first_rupture[i];
+        merged.t_end = e.t_end;
+        merged.finished = e.finished;
+        merged.max_slip = std::max(merged.max_slip, open_slip_since_held_);
+        measure(merged);
+        return report(std::move(merged));
+    }
+    if (held_) report(std::move(*held_));
+    held_ = std::move(e);
+    held_base_slip_ = base_slip_;
+}
+
+void RuptureEventDetector::report(RuptureEvent e) {
+    e.index = reported_count_++;
     summary_.events += 1;
     if (!summary_.global_seen) {
         if (e.global) {
@@ -79,7 +136,7 @@ RuptureEvent RuptureEventDetector::finish(bool finished) {
             summary_.precursors_before_global += 1;
         }
     }
-    return e;
+    reported_.push_back(std::move(e));
 }
 
 void RuptureEventDetector::measure(RuptureEvent& e) const {
@@ -101,7 +158,10 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
         if (distance > farthest || (distance == farthest && distance > 0 && t - e.t_start < delay))
             farthest = distance, delay = t - e.t_start;
     }
-    e.global = e.ruptured_blocks == static_cast<int>(e.first_rupture.size());
+    // Each block covers l_s around its position, clipped to the interface [0, L].
+    const double span = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing) -
+                        std::max(0.0, e.min_x - 0.5 * interface_.spacing);
+    e.global = e.ruptured_blocks > 0 && span >= options_.global_span * interface_.length * (1 - 1e-12);
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
     e.front_speed = farthest > 0 && delay > 0 ? farthest / delay : nan;

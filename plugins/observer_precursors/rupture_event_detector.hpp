@@ -27,7 +27,7 @@ struct RuptureEvent {
 
     // Measures, filled when the event is closed (RuptureEventDetector::measure).
     int ruptured_blocks = 0;
-    bool global = false;           // every block ruptured during the event
+    bool global = false;           // the ruptured blocks span at least global_span of L (B.19a)
     double nucleation_x = 0;       // m, from the trailing edge
     double min_x = 0, max_x = 0;   // m, nearest and farthest ruptured block from the trailing edge
     double extent = 0;             // l = min(L, max_x + l_s/2), m
@@ -37,6 +37,12 @@ struct RuptureEvent {
 
     double duration() const { return t_end - t_start; }
     double force_ratio() const { return normal_load != 0 ? driving_force / normal_load : std::nan(""); }
+};
+
+/// How RuptureEventDetector classifies and groups events (B.19a).
+struct RuptureEventOptions {
+    double global_span = 1.0;        // fraction of L the ruptured blocks must span to be global
+    double nucleation_window = 0.0;  // s; 0: no event is taken for a global slip's nucleation
 };
 
 /// What the history says so far (B.20).
@@ -57,6 +63,14 @@ struct RuptureSummary {
 /// ruptured block and ends once `quiet_time` has passed since its last observation with one; a
 /// rupture sooner than that belongs to the same event, so two events are always more than
 /// `quiet_time` apart.
+///
+/// - Global (B.19a): the ruptured blocks span, from the trailing edge of the first to the leading
+///   edge of the last (each block covering l_s), at least `global_span` L.
+/// - Nucleation (B.19a): an event that is not global, ends at most `nucleation_window` before a
+///   larger event (more ruptured blocks: a longer precursor or a global slip) starts, and nucleated
+///   within one block of where that one nucleated, is its nucleation: the two are reported
+///   as one event, with the earlier start, F_S and nucleation block. To decide, every ended event
+///   is held until the next event has ended or `nucleation_window` has passed; 0 holds nothing.
 ///
 /// - Nucleation block: among the blocks ruptured at the first observation of the event, the one
 ///   that slipped most since the previous observation (ties: the one nearest the trailing edge).
@@ -79,14 +93,18 @@ public:
         double spacing = 0;    // l_s, m
     };
 
-    RuptureEventDetector(Interface interface, double quiet_time);
+    using Options = RuptureEventOptions;
+
+    RuptureEventDetector(Interface interface, double quiet_time, Options options = {});
 
     /// Feeds one observation; `slip` is the blocks' x-displacement (any fixed origin). Returns the
-    /// event that this observation ends, if any. An observation no later than the previous one
-    /// (the run observes again at stage ends) is ignored.
+    /// event reported at this observation, if any (at most one; see nucleation_window for why it
+    /// may be reported later than it ended). An observation no later than the previous one (the
+    /// run observes again at stage ends) is ignored.
     std::optional<RuptureEvent> observe(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip,
                                         double driving_force, double normal_load);
-    /// Closes the open event as unfinished (end of the history), if there is one.
+    /// End of the history: closes the open event as unfinished and returns the events not yet
+    /// reported, one per call, in order; nothing once all are.
     std::optional<RuptureEvent> close();
 
     const RuptureEvent* open_event() const { return open_ ? &*open_ : nullptr; }
@@ -97,11 +115,22 @@ private:
     void start(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip, double driving_force,
                double normal_load);
     RuptureEvent finish(bool finished);
+    /// An ended event: merged into the held one, held, or reported.
+    void settle(RuptureEvent e);
+    bool is_nucleation_of(const RuptureEvent& held, const RuptureEvent& later) const;
+    void report(RuptureEvent e);
     void measure(RuptureEvent& e) const;
+    std::optional<RuptureEvent> take_reported();
 
     Interface interface_;
     double quiet_time_;
+    Options options_;
     std::optional<RuptureEvent> open_;
+    std::optional<RuptureEvent> held_;  // ended, not yet reported (nucleation_window > 0)
+    Eigen::ArrayXd held_base_slip_;     // the held event's base_slip_
+    double open_slip_since_held_ = 0;   // the open event's largest slip measured from held_base_slip_
+    std::vector<RuptureEvent> reported_;  // reported, not yet returned
+    int reported_count_ = 0;
     double last_t_ = -std::numeric_limits<double>::infinity();
     double last_ruptured_t_ = 0;
     Eigen::ArrayXd previous_slip_;  // at the previous observation

@@ -75,6 +75,48 @@ TEST_F(AtRest, NoJunctionIsAboveThresholdAndNothingMoves) {
     EXPECT_NO_THROW(fixture_->sim().system().begin_stage(StageInfo{"load", 1, s.t, 1.0, true}));
 }
 
+/// B.18a: at 2 kN (Li2020 Fig. 7's largest load) the Poisson spreading stretches the edge blocks'
+/// first junctions past mu_s p; letting them slip and re-pin at mu_d p settles the slider, at rest
+/// with every junction pinned below threshold, where holding them is refused naming the remedy.
+TEST(SettleAt2kN, OverloadedJunctionsSlipAndRepinSoTheSliderSettles) {
+    SceneFixture f(scene("settle_400N.yaml"), {"loaders[1].total_force=2000"});
+    ASSERT_NO_THROW(f.run_all_stages());
+    f.sim().system().refresh();
+    const StageView s = f.sim().system().state();
+    EXPECT_LT((s.vx.square() + s.vz.square()).sqrt().maxCoeff(), 1e-6);
+    EXPECT_NEAR(f.field("normal_force").sum(), 2000.0, 1e-6 * 2000.0);
+    EXPECT_EQ(f.field("junctions_sliding").sum() + f.field("junctions_dislocated").sum(), 0.0);
+    const Eigen::ArrayXd& friction = f.field("friction_force");
+    EXPECT_LE(std::abs(friction.sum()), 1e-6 * 2000.0) << "at rest with nothing else pulling in x";
+    for (Index i = 0; i < 5; ++i) EXPECT_GT(friction(i), 0.0) << "block " << i << " resists the Poisson spreading";
+    EXPECT_LE(friction.abs().maxCoeff(), 0.7 * 0.0942478 * f.field("junctions_pinned").maxCoeff());
+    EXPECT_NO_THROW(f.sim().system().begin_stage(StageInfo{"load", 1, s.t, 1.0, true}));
+
+    SceneFixture held(scene("settle_400N.yaml"), {"loaders[1].total_force=2000", "friction.settle_overload=hold"});
+    held.run_all_stages();
+    const StageView h = held.sim().system().state();
+    try {
+        held.sim().system().begin_stage(StageInfo{"load", 1, h.t, 1.0, true});
+        FAIL() << "expected a RunError";
+    } catch (const RunError& e) {
+        EXPECT_NE(std::string(e.what()).find("block 0 (node 0)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("settle_overload: slip_and_repin"), std::string::npos) << e.what();
+    }
+}
+
+/// At 400 N no junction is ever overloaded while settling, so both settle_overload choices settle
+/// to the same bits (the Fig. 5 state above is that of either).
+TEST(SettleAt400N, NothingIsOverloadedSoBothChoicesGiveTheSameBits) {
+    const auto settled = [](const std::vector<std::string>& overrides) {
+        SceneFixture f(scene("settle_400N.yaml"), overrides);
+        f.run_all_stages();
+        return Eigen::VectorXd(f.sim().system().y());
+    };
+    const Eigen::VectorXd a = settled({}), b = settled({"friction.settle_overload=hold"});
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), sizeof(double) * a.size()));
+}
+
 /// The same scene and seed give bit-identical states; another seed draws other lifetimes.
 TEST(Determinism, SameSeedSameBitsOtherSeedOtherHistory) {
     const auto final_state = [](const std::vector<std::string>& overrides) {

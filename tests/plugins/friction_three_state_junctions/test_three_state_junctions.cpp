@@ -327,8 +327,14 @@ TEST(ThreeStateJunctions, RemovalRandomIsKeyedOnTheSeed) {
     EXPECT_NE(ids, survivors_of_random_removal(2));
 }
 
+ThreeStateJunctions::Params holding_params() {
+    ThreeStateJunctions::Params params = exact_params();
+    params.settle_overload = "hold";
+    return params;
+}
+
 TEST(ThreeStateJunctions, NoBreakingOrStateChangeWhileSettling) {
-    Rig r(exact_params(), 1);
+    Rig r(holding_params(), 1);
     r.stage(false);
     (*r.normal)(0) = r.p;
     r.hold(1);
@@ -349,7 +355,7 @@ TEST(ThreeStateJunctions, NoBreakingOrStateChangeWhileSettling) {
 }
 
 TEST(ThreeStateJunctions, StartOfLoadingRefusesAJunctionAboveThreshold) {
-    Rig r(exact_params(), 2);
+    Rig r(holding_params(), 2);
     r.stage(false);
     r.normal->setConstant(r.p);
     r.hold(1);
@@ -363,7 +369,38 @@ TEST(ThreeStateJunctions, StartOfLoadingRefusesAJunctionAboveThreshold) {
         EXPECT_NE(what.find("|f| = 2 mu_s p"), std::string::npos) << what;
         EXPECT_NE(what.find("mu_s p = 0.0659734 N"), std::string::npos) << what;
         EXPECT_NE(what.find("stage 'load'"), std::string::npos) << what;
+        EXPECT_NE(what.find("settle_overload: slip_and_repin"), std::string::npos) << what;
     }
+}
+
+// B.18a: while settling, an overloaded junction slips and re-pins at s mu_d p where the block is,
+// with no clock left running; one at or below mu_s p is untouched.
+TEST(ThreeStateJunctions, SettlingRepinsOverloadedJunctionsAtMuDp) {
+    Rig r(exact_params(), 1);
+    r.stage(false);
+    (*r.normal)(0) = r.p;
+    r.hold(1);
+    const double at_threshold = 0.7 * r.p / r.k;
+    r.move(0, at_threshold);
+    EXPECT_EQ(r.force(0), -0.7 * r.p);  // at mu_s p (not above): still carried elastically
+    const double beyond = 2 * at_threshold;
+    r.move(0, beyond);
+    ASSERT_EQ(r.block(0).pinned(), 1);
+    EXPECT_EQ(r.block(0).sliding() + r.block(0).dislocated(), 0);
+    EXPECT_DOUBLE_EQ(r.force(0), -0.35 * r.p);
+    EXPECT_EQ(r.law->next_event_time(), std::numeric_limits<double>::infinity());
+    r.move(0, beyond - 0.35 * r.p / r.k);  // re-anchored at `beyond`: backing off unloads it to 0
+    EXPECT_NEAR(r.force(0), 0, 1e-15);
+    r.move(0, beyond - 2 * at_threshold);  // the other way: it re-pins at -mu_d p
+    EXPECT_DOUBLE_EQ(r.force(0), 0.35 * r.p);
+    r.stage(true);  // nothing above threshold: loading starts
+    EXPECT_EQ(r.block(0).pinned(), 1);
+}
+
+TEST(ThreeStateJunctions, SettleOverloadRejectsUnknownValues) {
+    ThreeStateJunctions::Params params = exact_params();
+    params.settle_overload = "yield";
+    EXPECT_THROW(Rig r(params, 1), InputError);
 }
 
 /// Per-junction sum computed independently (long double, from f0 and anchor) for pinned junctions.
@@ -544,7 +581,7 @@ TEST(ThreeStateJunctions, ParameterRules) {
 
 TEST(ThreeStateJunctions, SpecDocumentsEveryKeyWithUnits) {
     const auto spec = ThreeStateJunctions::spec();
-    EXPECT_EQ(spec.params().size(), 14u);
+    EXPECT_EQ(spec.params().size(), 15u);
     for (const ParamInfo& info : spec.params()) {
         EXPECT_FALSE(info.doc.empty()) << info.key;
         if (info.type == ValueType::real) {

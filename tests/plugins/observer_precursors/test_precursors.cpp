@@ -159,7 +159,9 @@ TEST_F(PrecursorsTest, MissingJunctionCountsNameTheQuantityAndTheCriterion) {
 
 TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
     publish_junctions();
-    Precursors observer = make();
+    Precursors::Params immediate;
+    immediate.nucleation_window_quiet_times = 0;  // written as they end, none held for a global slip (B.19a)
+    Precursors observer = make(immediate);
     observer.begin(view());
     observe_at(observer, 1 * dt, {});
     observe_at(observer, 2 * dt, {0, 1});
@@ -204,6 +206,23 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
                                  "scene_hash: \"feedface\"\n", "seed: 42\n", "name: \"observer_precursors\""})
         EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
     EXPECT_FALSE(fs::exists(dir_ / "precursors_summary.yaml.tmp"));
+}
+
+// B.19a: an ended event may still be a global slip's nucleation, so it is written once
+// 5 quiet times (10 ms) have passed without a larger rupture starting.
+TEST_F(PrecursorsTest, AnEndedEventIsWrittenOnceItsNucleationWindowHasPassed) {
+    publish_junctions();
+    Precursors observer = make();
+    observer.begin(view());
+    observe_at(observer, 1 * dt, {});
+    observe_at(observer, 2 * dt, {0, 1});
+    for (int k = 3; k <= 1001; ++k) observe_at(observer, k * dt, {});  // ended at 2 dt + 2 ms, held
+    EXPECT_EQ(read_csv(dir_ / "precursors.csv").rows.size(), 0u);
+    observe_at(observer, 1003 * dt, {});  // more than 10 ms after its last rupture
+    CsvFile events = read_csv(dir_ / "precursors.csv");
+    ASSERT_EQ(events.rows.size(), 1u);
+    EXPECT_DOUBLE_EQ(column(events, 0, "t_start"), 2 * dt);
+    EXPECT_EQ(column(events, 0, "global"), 0);
 }
 
 TEST_F(PrecursorsTest, AGlobalSlipGivesTheStaticCoefficient) {

@@ -1,6 +1,8 @@
 // RuptureEventDetector on constructed histories (theory.md B.19, B.20): ruptures switched on and
 // off per block at chosen times, so every expected start, extent and front time is known exactly.
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -230,6 +232,132 @@ TEST(RuptureEventDetector, SparseObservationsStillSeparateEvents) {
     ASSERT_NE(d.open_event(), nullptr);
     EXPECT_EQ(d.open_event()->index, 1);
     EXPECT_DOUBLE_EQ(d.open_event()->driving_force, 2);
+}
+
+// B.19a: global means the ruptured blocks span global_span of L, each block covering l_s.
+TEST(RuptureEventDetector, GlobalWhenTheRupturedBlocksSpanTheStatedFractionOfTheInterface) {
+    const RuptureEventDetector::Options span95{0.95, 0.0};
+    for (const auto& [last, global] : {std::pair{38, true}, std::pair{37, false}}) {
+        RuptureEventDetector d(interface41(), quiet, span95);
+        auto events = History(front(0, last, 0.1)).run(d, 0.099, 0.11);
+        ASSERT_EQ(events.size(), 1u);
+        // Blocks 0..last cover [0, x(last) + l_s/2]: 38 -> 0.9625 L, 37 -> 0.9375 L.
+        EXPECT_EQ(events[0].global, global) << last << ": " << events[0].extent_over_length;
+        EXPECT_EQ(d.summary().global_seen, global);
+    }
+    RuptureEventDetector every_block(interface41(), quiet);  // global_span 1: every block, as in B.19
+    auto events = History(front(0, 38, 0.1)).run(every_block, 0.099, 0.11);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_FALSE(events[0].global);
+}
+
+TEST(RuptureEventDetector, GlobalSpanIsMeasuredFromTheFirstRupturedBlockNotTheTrailingEdge) {
+    RuptureEventDetector d(interface41(), quiet, {0.95, 0.0});
+    auto events = History(front(3, blocks - 1, 0.1)).run(d, 0.099, 0.11);  // blocks 3..40: 0.9375 L
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_FALSE(events[0].global);
+    EXPECT_DOUBLE_EQ(events[0].extent_over_length, 1.0);
+}
+
+constexpr RuptureEventDetector::Options merging{1.0, 10e-3};
+
+// B.19a: a one-block rupture that heals for longer than quiet_time and is followed, at the same
+// place, by a global slip is that slip's nucleation: one event, starting with it.
+TEST(RuptureEventDetector, TheNucleationOfAGlobalSlipBelongsToIt) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, hold = 5e-4, b = a + hold + 4e-3;  // 4 ms quiet: two events without merging
+    auto events = History(joined(front(0, 0, a, hold), front(0, blocks - 1, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 1u);
+    const RuptureEvent& e = events[0];
+    EXPECT_TRUE(e.global);
+    EXPECT_EQ(e.index, 0);
+    EXPECT_NEAR(e.t_start, a, 1e-12);
+    EXPECT_DOUBLE_EQ(e.driving_force, loading_rate * e.t_start) << "F_S where the slip nucleated";
+    EXPECT_EQ(e.nucleation, 0);
+    EXPECT_NEAR(e.first_rupture[0], a, 1e-12);
+    EXPECT_NEAR(e.first_rupture[blocks - 1], b + (blocks - 1) * dt, 1e-12);
+    EXPECT_NEAR(e.max_slip, 2e-6, 1e-15) << "block 0 slipped in both parts";
+    EXPECT_EQ(d.summary().events, 1);
+    EXPECT_EQ(d.summary().precursors_before_global, 0);
+    EXPECT_NEAR(d.summary().global_time, a, 1e-12);
+
+    RuptureEventDetector unmerged(interface41(), quiet);
+    EXPECT_EQ(History(joined(front(0, 0, a, hold), front(0, blocks - 1, b))).run(unmerged, a - 1e-3, b + 0.03).size(),
+              2u);
+}
+
+TEST(RuptureEventDetector, APrecursorOutsideTheNucleationWindowStaysAPrecursor) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, b = a + 5e-4 + 12e-3;  // 12 ms > nucleation_window
+    auto events = History(joined(front(0, 0, a), front(0, blocks - 1, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_FALSE(events[0].global);
+    EXPECT_TRUE(events[1].global);
+    EXPECT_EQ(events[1].index, 1);
+    EXPECT_EQ(d.summary().precursors_before_global, 1);
+}
+
+TEST(RuptureEventDetector, AnEventAwayFromWhereTheGlobalSlipNucleatesIsNotItsNucleation) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, b = a + 5e-4 + 4e-3;
+    auto events = History(joined(front(20, 22, a), front(0, blocks - 1, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].nucleation, 20);
+    EXPECT_TRUE(events[1].global);
+    EXPECT_EQ(events[1].nucleation, 0);
+}
+
+// The 1.2 kN headline (10x rate) has a one-block event 3 ms before a precursor of l/L = 0.56 at
+// the same place: that precursor's nucleation, as for a global slip.
+TEST(RuptureEventDetector, TheNucleationOfALongerPrecursorBelongsToIt) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, b = a + 5e-4 + 3e-3;
+    auto events = History(joined(front(0, 0, a), front(1, 22, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_FALSE(events[0].global);
+    EXPECT_NEAR(events[0].t_start, a, 1e-12);
+    EXPECT_EQ(events[0].nucleation, 0);
+    EXPECT_EQ(events[0].ruptured_blocks, 23);
+    EXPECT_EQ(d.summary().precursors_before_global, 1);
+}
+
+// The 21-block study scene at 200x: a precursor of 8 blocks from block 1 arrests, and 0.8 ms later
+// the global slip starts at its arrest front (block 8). That is a new rupture, not its nucleation.
+TEST(RuptureEventDetector, ARuptureRestartingAtAPrecursorsArrestFrontIsANewEvent) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, b = a + 7 * dt + 5e-4 + 3e-3;
+    auto events = History(joined(front(0, 7, a), front(8, 0, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].ruptured_blocks, 8);
+    EXPECT_EQ(events[1].nucleation, 8);
+}
+
+TEST(RuptureEventDetector, AShorterEventAfterALongerOneIsNotItsNucleation) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    const double a = 0.1, b = a + 9 * dt + 5e-4 + 4e-3;
+    auto events = History(joined(front(0, 9, a), front(0, 0, b))).run(d, a - 1e-3, b + 0.03);
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].ruptured_blocks, 10);
+    EXPECT_EQ(events[1].ruptured_blocks, 1);
+    EXPECT_EQ(events[1].index, 1);
+}
+
+TEST(RuptureEventDetector, AHeldEventIsReportedAfterItsWindowAndAtClose) {
+    RuptureEventDetector d(interface41(), quiet, merging);
+    auto events = History(front(0, 4, 0.1)).run(d, 0.099, 0.1 + 5e-4 + 4 * dt + 9e-3);
+    EXPECT_TRUE(events.empty()) << "held: a global slip may still start within 10 ms";
+    events = History(front(0, 4, 0.1)).run(d, 0.1 + 5e-4 + 4 * dt + 9e-3 + dt, 0.12);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].ruptured_blocks, 5);
+
+    RuptureEventDetector e(interface41(), quiet, merging);
+    History(joined(front(0, 4, 0.1), front(10, 12, 0.11))).run(e, 0.099, 0.1105);
+    auto first = e.close(), second = e.close();
+    ASSERT_TRUE(first && second);
+    EXPECT_TRUE(first->finished);
+    EXPECT_FALSE(second->finished) << "the event still open at the end";
+    EXPECT_EQ(second->index, 1);
+    EXPECT_FALSE(e.close());
 }
 
 }  // namespace
