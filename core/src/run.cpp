@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <memory>
 
 #include <fmt/format.h>
@@ -81,6 +82,11 @@ struct RunRecord {
         y << YAML::Key << "simulated_time" << YAML::Value << summary.simulated_time;
         y << YAML::Key << "wall_seconds" << YAML::Value << summary.wall_seconds;
         y << YAML::Key << "cpu_seconds" << YAML::Value << summary.cpu_seconds;
+        if (!summary.integrator_statistics.empty()) {
+            y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
+            for (const auto& [name, value] : summary.integrator_statistics) y << YAML::Key << name << YAML::Value << value;
+            y << YAML::EndMap;
+        }
         y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
         for (const auto& p : info.plugins)
             y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key
@@ -182,7 +188,8 @@ public:
         const auto summary = [&] {
             return RunSummary{sim_.system().step_index(), sim_.system().evaluations(), sim_.system().time(),
                               std::chrono::duration<double>(Clock::now() - start).count(),
-                              static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC};
+                              static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC,
+                              sim_.integrator().statistics()};
         };
         try {
             run_stages();
@@ -241,15 +248,26 @@ private:
     void run_stage(const StageInfo& stage, Progress& progress) {
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
+        const bool to_observations = sim_.integrator().steps_to_observations();
         while (!sim_.reached(t_end)) {
             try {
-                sim_.step(t_end - sys.time());
+                double until = to_observations ? std::min(t_end, next_observation()) : t_end;
+                if (until <= sys.time()) until = t_end;  // an observation already taken at this time
+                sim_.step(until - sys.time());
             } catch (const RunError& e) {
                 throw RunError(fmt::format("stage '{}', {}", stage.name, e.what()));
             }
             if (!observers_.empty()) observe_due(stage, false);
             progress.update(stage, sys.time(), sys.step_index());
         }
+    }
+
+    /// The earliest time an observer with a time cadence is due next (+infinity if none is).
+    double next_observation() const {
+        double next = std::numeric_limits<double>::infinity();
+        for (const auto& o : observers_)
+            if (o.every > 0) next = std::min(next, o.next_time);
+        return next;
     }
 
     void check_end_of_stage(const StageSpec& spec) {

@@ -174,6 +174,39 @@ double System::next_event_time() const {
     return next;
 }
 
+bool System::quasi_static_regime(const StageView& s) const {
+    for (const Effect* e : active_)
+        if (!e->quasi_static_regime(s)) return false;
+    return true;
+}
+
+void System::assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness) {
+    triplets_.clear();
+    for (const Effect* e : active_) e->add_stiffness(s, triplets_);
+    const Index dof = 2 * layout_.nodes;
+    stiffness.resize(dof, dof);
+    stiffness.setFromTriplets(triplets_.begin(), triplets_.end());
+}
+
+double System::foreseen_event_time(const StageView& s) const {
+    double next = std::numeric_limits<double>::infinity();
+    for (const Effect* e : active_) next = std::min(next, e->foreseen_event_time(s));
+    return next;
+}
+
+void System::add_straight_path_work(double t1, const Eigen::VectorXd& y1) {
+    if (!work_accounting()) return;
+    const Index n = layout_.nodes;
+    const double h = t1 - t_;
+    if (!(h > 0)) return;
+    path_state_ = y_;
+    path_state_.segment(2 * n, 2 * n) = (y1.head(2 * n) - y_.head(2 * n)) / h;
+    for (std::size_t k = 0; k < active_.size(); ++k) add_work(k, view_of(path_state_, layout_, t_), h / 2);
+    path_state_.head(2 * n) = y1.head(2 * n);
+    path_state_.tail(layout_.aux) = y1.tail(layout_.aux);
+    for (std::size_t k = 0; k < active_.size(); ++k) add_work(k, view_of(path_state_, layout_, t1), h / 2);
+}
+
 void System::begin_stage(const StageInfo& stage) {
     active_.clear();
     active_slot_.clear();

@@ -41,6 +41,10 @@ public:
     /// Writes the summed bond forces on the nodes instead of adding them (no zeroing needed).
     void set_forces_with(Effect* next, const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override;
+    /// Elastic at every state: the springs' stiffness is exact for either law (geometric: Newton on
+    /// the nonlinearity), and they have no discrete state.
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
 private:
     /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given, added
