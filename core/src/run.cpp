@@ -219,7 +219,10 @@ private:
 
     void observe_due(const StageInfo& stage, bool all) {
         System& sys = sim_.system();
-        const double tolerance = 0.5 * sim_.integrator().nominal_dt();
+        // A scheme that lands on observation times (Integrator::steps_to_observations) is observed at
+        // them to within round-off; a fixed step observes at the step end nearest the cadence.
+        const Integrator& integrator = sim_.integrator();
+        const double tolerance = (integrator.steps_to_observations() ? 1e-6 : 0.5) * integrator.nominal_dt();
         bool refreshed = false;
         for (auto& o : observers_) {
             if (o.last_step == sys.step_index() || (!all && !o.due(sys.time(), sys.step_index(), tolerance))) continue;

@@ -18,6 +18,7 @@ bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::Vecto
     ++counts_.factorisations;
     // A singular or indefinite stiffness (a body mode nothing holds) has no stable static equilibrium.
     factorised_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0).all();
+    stale_ = false;
     if (!factorised_) pattern_size_ = -1;
     return factorised_;
 }
@@ -33,6 +34,8 @@ bool EquilibriumSolver::equilibrium(System& system, double t, Eigen::VectorXd& y
     ++counts_.solves;
     const Index dof = 2 * system.layout().nodes;
     guess_ = y.head(dof);
+    // A kept K that made the last solve slow is renewed first.
+    if (stale_ && !refactorise(system, t, y)) return false;
     if (factorised_ && newton(system, t, y)) return true;
     // The kept K is too far from the current one: again from the guess, with K anew.
     y.head(dof) = guess_;
@@ -50,7 +53,10 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
         // Not contracting (a K far off, a contact flipping in and out): give up rather than wander.
         if (!std::isfinite(size) || size > contraction * previous) return false;
         y.head(dof) += dq_;
-        if (size <= s_.position_tolerance) return true;
+        if (size <= s_.position_tolerance) {
+            stale_ = stale_ || it >= s_.slow_after;
+            return true;
+        }
         previous = size;
     }
     return false;
@@ -90,6 +96,7 @@ bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::Vector
         if (!std::isfinite(size) || size > contraction * previous) return false;
         v += dv_;
         if (size <= s_.velocity_tolerance * speed) {
+            stale_ = stale_ || it >= s_.slow_after;
             node_forces(system, t, y, forces_);  // the published quantities describe (t, y) again
             return true;
         }

@@ -10,7 +10,8 @@
 //             geometric springs barely turn, K hardly changes, and Newton with the kept K (its
 //             residual always evaluated exactly, so the solution is exact) converges in an
 //             iteration or two. When a correction shrinks by less than half, K is assembled and
-//             factorised anew at the first guess and Newton starts again from it.
+//             factorised anew at the first guess and Newton starts again from it; when a solve
+//             needed more than slow_after iterations, K is renewed before the next one.
 //   Steady:   differentiating F(q(t), v, t) = 0 at constant v (no inertia, dv/dt = 0) gives
 //             K v = dF/dt at fixed q and v: the drive's rate (a difference quotient in time, exact
 //             for a drive linear in t). Solved with the kept factorisation and refined against the
@@ -30,9 +31,10 @@ public:
     struct Settings {
         double position_tolerance = 1e-13;   // m
         int max_iterations = 12;
+        int slow_after = 3;                  // iterations: a solve that needed more renews K for the next
         double rate_step = 2e-7;             // s: time step of the difference quotient dF/dt
         // Relative; the difference quotient's round-off leaves ~1e-9 of |v| (measured on the 41 x 9 lattice).
-        double velocity_tolerance = 1e-7;
+        double velocity_tolerance = 1e-6;
         double probe_displacement = 1e-8;    // m: largest displacement of the difference quotient K v
     };
     struct Counts {
@@ -65,7 +67,7 @@ private:
     Counts counts_;
     Eigen::SparseMatrix<double> stiffness_;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
-    bool factorised_ = false;
+    bool factorised_ = false, stale_ = false;
     Index pattern_size_ = -1;
     Eigen::VectorXd guess_, all_forces_, forces_, later_, rhs_, dq_, probe_, kv_, dv_;
 };

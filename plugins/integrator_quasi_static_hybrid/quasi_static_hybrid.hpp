@@ -39,7 +39,7 @@ public:
         double quiet_speed = 1e-5;
         double quiet_hold = 1e-4;
         double check_interval = 1e-5;
-        double max_quiet_step = 1e-2;
+        double max_quiet_step = 1e-4;
         double event_overshoot = 1e-12;
         double position_tolerance = 1e-13;
     };
@@ -74,7 +74,8 @@ private:
     spdlog::logger& log_;
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
-    Eigen::VectorXd y_;  // the quiet solution being formed
+    Eigen::VectorXd y_;            // the quiet solution being formed
+    Eigen::VectorXd start_, mean_;  // a quiet step's start, and its start with the step's mean velocity
     bool quiet_ = false;
     bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
     double next_check_ = -std::numeric_limits<double>::infinity();
