@@ -80,7 +80,7 @@ QuasiStaticHybrid::QuasiStaticHybrid(const Params& p, const Context& ctx)
     : p_(p),
       log_(ctx.log),
       dynamic_(dynamic_scheme(p, ctx)),
-      solver_({p.position_tolerance, 12, p.dt}) {
+      solver_({.position_tolerance = p.position_tolerance, .rate_step = p.dt}) {
     if (const std::string error = hold_rule(p); !error.empty()) throw InputError("quasi_static_hybrid: " + error);
 }
 
