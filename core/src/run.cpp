@@ -10,6 +10,7 @@
 #include <ctime>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 
 #include <fmt/format.h>
@@ -103,6 +104,11 @@ struct RunRecord {
         y << YAML::Key << "simulated_time" << YAML::Value << summary.simulated_time;
         y << YAML::Key << "wall_seconds" << YAML::Value << summary.wall_seconds;
         y << YAML::Key << "cpu_seconds" << YAML::Value << summary.cpu_seconds;
+        if (!summary.integrator_statistics.empty()) {
+            y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
+            for (const auto& [name, value] : summary.integrator_statistics) y << YAML::Key << name << YAML::Value << value;
+            y << YAML::EndMap;
+        }
         y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
         for (const auto& p : info.plugins)
             // The full path and a checksum: a copy earlier in the search path wins over the shipped
@@ -236,7 +242,8 @@ public:
         const auto summary = [&] {
             return RunSummary{sim_.system().step_index(), sim_.system().evaluations(), sim_.system().time(),
                               std::chrono::duration<double>(Clock::now() - start).count(),
-                              static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC};
+                              static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC,
+                              sim_.integrator().statistics()};
         };
         try {
             run_stages();
@@ -274,7 +281,10 @@ private:
 
     void observe_due(const StageInfo& stage, bool all) {
         System& sys = sim_.system();
-        const double tolerance = 0.5 * sim_.integrator().nominal_dt();
+        // A scheme that lands on observation times (Integrator::steps_to_observations) is observed at
+        // them to within round-off; a fixed step observes at the step end nearest the cadence.
+        const Integrator& integrator = sim_.integrator();
+        const double tolerance = (integrator.steps_to_observations() ? 1e-6 : 0.5) * integrator.nominal_dt();
         bool refreshed = false;
         for (auto& o : observers_) {
             if (o.last_step == sys.step_index() || (!all && !o.due(sys.time(), sys.step_index(), tolerance))) continue;
@@ -304,9 +314,12 @@ private:
     void run_stage(const StageInfo& stage, Progress& progress) {
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
+        const bool to_observations = sim_.integrator().steps_to_observations();
         while (!sim_.reached(t_end)) {
             try {
-                sim_.step(t_end - sys.time());
+                double until = to_observations ? std::min(t_end, next_observation()) : t_end;
+                if (until <= sys.time()) until = t_end;  // an observation already taken at this time
+                sim_.step(until - sys.time());
             } catch (const RunError& e) {
                 throw RunError(fmt::format("stage '{}', {}", stage.name, e.what()));
             }
@@ -325,6 +338,14 @@ private:
                                       signal == SIGTERM ? "SIGTERM" : signal == SIGINT ? "SIGINT" : "a signal",
                                       sys.step_index(), sys.time(), stage.name),
                           signal);
+    }
+
+    /// The earliest time an observer with a time cadence is due next (+infinity if none is).
+    double next_observation() const {
+        double next = std::numeric_limits<double>::infinity();
+        for (const auto& o : observers_)
+            if (o.every > 0) next = std::min(next, o.next_time);
+        return next;
     }
 
     void check_end_of_stage(const StageSpec& spec) {

@@ -155,6 +155,39 @@ double System::next_event_time() const {
     return next;
 }
 
+bool System::quasi_static_regime(const StageView& s) const {
+    for (const Slot* slot : active_)
+        if (!slot->effect->quasi_static_regime(s)) return false;
+    return true;
+}
+
+void System::assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness) {
+    triplets_.clear();
+    for (const Slot* slot : active_) slot->effect->add_stiffness(s, triplets_);
+    const Index dof = 2 * layout_.nodes;
+    stiffness.resize(dof, dof);
+    stiffness.setFromTriplets(triplets_.begin(), triplets_.end());
+}
+
+double System::foreseen_event_time(const StageView& s) const {
+    double next = std::numeric_limits<double>::infinity();
+    for (const Slot* slot : active_) next = std::min(next, slot->effect->foreseen_event_time(s));
+    return next;
+}
+
+void System::add_straight_path_work(double t1, const Eigen::VectorXd& y1) {
+    if (!work_accounting()) return;
+    const Index n = layout_.nodes;
+    const double h = t1 - t_;
+    if (!(h > 0)) return;
+    path_state_ = y_;
+    path_state_.segment(2 * n, 2 * n) = (y1.head(2 * n) - y_.head(2 * n)) / h;
+    for (const std::size_t k : active_parts_) add_work(k, view_of(path_state_, layout_, t_), h / 2);
+    path_state_.head(2 * n) = y1.head(2 * n);
+    path_state_.tail(layout_.aux) = y1.tail(layout_.aux);
+    for (const std::size_t k : active_parts_) add_work(k, view_of(path_state_, layout_, t1), h / 2);
+}
+
 void System::activate(const StageInfo* stage) {
     active_.clear();
     active_parts_.clear();

@@ -26,6 +26,10 @@ public:
     std::string describe() const override;
     std::string key() const override { return "bond_damping"; }
     void add_forces(const StageView& s, ForceView& f) override;
+    /// Linear in the velocities and (full vector) independent of the positions: no stiffness. The
+    /// bond-projected form turns with the bonds; at quiet-phase speeds that dependence is left out
+    /// of the stiffness (the quasi-static residual still evaluates it exactly).
+    bool quasi_static_regime(const StageView&) const override { return true; }
 
     Mode mode() const { return mode_; }
     const LatticeGrid& grid() const { return grid_; }

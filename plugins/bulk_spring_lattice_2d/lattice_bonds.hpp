@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,18 @@ public:
     void add_forces(const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override { return springs_->potential_energy(s); }
     std::vector<Effect*> parts() override { return {springs_.get(), dashpots_.get()}; }
+
+    // Quasi-static solving sees the two parts together.
+    bool quasi_static_regime(const StageView& s) const override {
+        return springs_->quasi_static_regime(s) && dashpots_->quasi_static_regime(s);
+    }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override {
+        springs_->add_stiffness(s, stiffness);
+        dashpots_->add_stiffness(s, stiffness);
+    }
+    double foreseen_event_time(const StageView& s) const override {
+        return std::min(springs_->foreseen_event_time(s), dashpots_->foreseen_event_time(s));
+    }
 
 private:
     std::unique_ptr<LatticeSprings> springs_;

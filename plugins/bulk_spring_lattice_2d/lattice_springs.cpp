@@ -179,6 +179,38 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
     pair_.add_to(f.fx.data(), f.fz.data());
 }
 
+void LatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    // Bond force on its "from" node F = t Delta, t = k (1 - l/r): dF/dDelta = G with
+    //     geometric     G = k (1 - l/r) I + k l / r^3 Delta Delta^T
+    //     small strain  G = k e e^T
+    // and K = -dF/dq takes +G on both nodes' diagonal blocks and -G on the coupling blocks.
+    const Index n = grid_.size();
+    for (const BondFamily& b : families_) {
+        const double k = stiffness_ * b.relative_stiffness, l = b.rest_length, inverse_l2 = 1 / (l * l);
+        for (Index i = 0; i < b.count; ++i) {
+            if (b.mask[static_cast<std::size_t>(i)] == 0) continue;
+            const Index j = i + b.offset;
+            double gxx = k * b.ex * b.ex, gxz = k * b.ex * b.ez, gzz = k * b.ez * b.ez;
+            if (law_ == Law::geometric) {
+                const double dx = s.x[j] - s.x[i], dz = s.z[j] - s.z[i];
+                const double delta = squared_stretch(dx, dz, b.ref_x, b.ref_z, b.rest_defect, inverse_l2);
+                const double tension = k * tension_factor_exact(delta), r2 = dx * dx + dz * dz;
+                const double axial = k * l / (r2 * std::sqrt(r2));
+                gxx = tension + axial * dx * dx;
+                gxz = axial * dx * dz;
+                gzz = tension + axial * dz * dz;
+            }
+            const Index dof[2][2] = {{i, n + i}, {j, n + j}};  // (x, z) of the from and to nodes
+            const double g[2][2] = {{gxx, gxz}, {gxz, gzz}};
+            for (int a = 0; a < 2; ++a)
+                for (int c = 0; c < 2; ++c)
+                    for (int u = 0; u < 2; ++u)
+                        for (int w = 0; w < 2; ++w)
+                            stiffness.emplace_back(dof[a][u], dof[c][w], (a == c ? 1.0 : -1.0) * g[u][w]);
+        }
+    }
+}
+
 double LatticeSprings::potential_energy(const StageView& s) const {
     double energy = 0;
     for (const BondFamily& b : families_) {

@@ -36,6 +36,10 @@ public:
     std::string key() const override { return "lattice_springs"; }
     void add_forces(const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override;
+    /// Elastic at every state: the springs' stiffness is exact for either law (geometric: Newton on
+    /// the nonlinearity), and they have no discrete state.
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
     /// Whether add_forces_with_dashpots() can take `damping` into its pass: geometric springs and
     /// full-vector dashpots on the same lattice.

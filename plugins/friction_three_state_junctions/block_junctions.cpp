@@ -57,6 +57,14 @@ bool BlockJunctions::pinned_beyond(double x, double threshold) const {
     return b_max_ + kx > threshold || b_min_ + kx < -threshold;
 }
 
+double BlockJunctions::time_to_threshold(double x, double v, double threshold) const {
+    if (pinned_ == 0 || v == 0) return infinity;
+    const double kx = c_.k_s * (x - x_ref_), rate = c_.k_s * v;
+    // Moving in +x the most loaded junction (b_max) reaches +threshold first; in -x, b_min reaches -threshold.
+    const double room = v > 0 ? threshold - (b_max_ + kx) : -threshold - (b_min_ + kx);
+    return std::max(0.0, room / rate);
+}
+
 double BlockJunctions::max_pinned_force(double x) const {
     if (pinned_ == 0) return 0;
     const double kx = c_.k_s * (x - x_ref_);

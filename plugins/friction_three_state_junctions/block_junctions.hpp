@@ -84,6 +84,9 @@ public:
 
     /// Largest |f| / threshold over pinned junctions is above 1 (strictly), in O(1).
     bool pinned_beyond(double x, double threshold) const;
+    /// How long until a pinned junction reaches |f| = threshold if the block moves on from x at
+    /// velocity v (every pinned force changes at k_s v): +infinity if none will, 0 if one is there.
+    double time_to_threshold(double x, double v, double threshold) const;
     /// Largest |f| over pinned junctions at x, from the aggregates; 0 if none.
     double max_pinned_force(double x) const;
 

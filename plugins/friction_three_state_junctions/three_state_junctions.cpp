@@ -188,6 +188,26 @@ double ThreeStateJunctions::potential_energy(const StageView& s) const {
     return force_squared / (2 * k_s_);
 }
 
+bool ThreeStateJunctions::quasi_static_regime(const StageView&) const {
+    return std::all_of(blocks_.begin(), blocks_.end(), [](const BlockJunctions& b) { return b.pinned() == b.size(); });
+}
+
+void ThreeStateJunctions::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+        if (blocks_[i].pinned() > 0)
+            stiffness.emplace_back(nodes_[i], nodes_[i], static_cast<double>(blocks_[i].pinned()) * k_s_);
+}
+
+double ThreeStateJunctions::foreseen_event_time(const StageView& s) const {
+    if (!events_) return infinity;
+    double next = infinity;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const Index node = nodes_[i];
+        next = std::min(next, s.t + blocks_[i].time_to_threshold(s.x[node], s.vx[node], threshold_));
+    }
+    return next;
+}
+
 void ThreeStateJunctions::begin_stage(const StageInfo& stage, const StageView& s) {
     const bool had_events = events_;
     events_ = stage.friction_events;

@@ -117,6 +117,13 @@ public:
     void commit(const StageView& end, double dt) override;
     double next_event_time() const override { return next_event_; }
     double potential_energy(const StageView& s) const override;
+    /// Quasi-static regime: every junction pinned (the force is then B_p + N_p k_s x per block,
+    /// linear). Its stiffness is N_p k_s on the block's x; its foreseen event the first pinned
+    /// junction to reach mu_s p at the blocks' velocities (none while friction events are off).
+    /// Count changes (B.7) stay judged at commits, as in every step.
+    bool quasi_static_regime(const StageView&) const override;
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
+    double foreseen_event_time(const StageView& s) const override;
 
     Index blocks() const { return static_cast<Index>(blocks_.size()); }
     const BlockJunctions& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }

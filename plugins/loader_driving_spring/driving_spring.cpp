@@ -139,6 +139,12 @@ void DrivingSpring::add_forces(const StageView& s, ForceView& f) {
     for (const Attachment& a : attachment_) f.fx(a.node) += a.weight * force_;
 }
 
+void DrivingSpring::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (const Attachment& a : attachment_)
+        for (const Attachment& b : attachment_)
+            stiffness.emplace_back(a.node, b.node, params_.stiffness * a.weight * b.weight);
+}
+
 double DrivingSpring::potential_energy(const StageView& s) const {
     if (!started_) return 0;  // not yet in the pipeline: no spring to store anything
     // The stretch add_forces() turns into F_S = K_S * stretch, without publishing it.

@@ -49,6 +49,9 @@ public:
     void commit(const StageView& end, double dt) override;
     double next_event_time() const override { return next_reversal_; }
     double potential_energy(const StageView& s) const override;
+    /// Linear in the driving point's position: K_S w_a w_b on the x of its nodes (weights w).
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
     /// Position X(t) of the far end since loading began (m): V (t - t0), or the triangle wave.
     double far_end(double t) const;
 

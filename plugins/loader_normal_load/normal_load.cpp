@@ -1,6 +1,7 @@
 #include "normal_load.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -74,6 +75,11 @@ void NormalLoad::begin_stage(const StageInfo& stage, const StageView&) {
 double NormalLoad::ramp(double t) const {
     if (params_.ramp_time <= 0) return 1.0;
     return std::clamp((t - ramp_start_) / params_.ramp_time, 0.0, 1.0);
+}
+
+double NormalLoad::foreseen_event_time(const StageView& s) const {
+    const double ramp_end = ramp_start_ + params_.ramp_time;
+    return params_.ramp_time > 0 && ramp_end > s.t ? ramp_end : std::numeric_limits<double>::infinity();
 }
 
 void NormalLoad::add_forces(const StageView& s, ForceView& f) {

@@ -34,6 +34,9 @@ public:
     std::string describe() const override;
     void add_forces(const StageView& s, ForceView& f) override;
     void begin_stage(const StageInfo& stage, const StageView& s) override;
+    /// A prescribed force: no stiffness; the end of its ramp (a kink in time) is a foreseen event.
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    double foreseen_event_time(const StageView& s) const override;
 
     /// The full (un-ramped) load W_i on each node of the set, N, in set order.
     const Eigen::ArrayXd& weights() const { return weights_; }

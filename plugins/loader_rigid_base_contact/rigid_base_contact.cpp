@@ -1,6 +1,7 @@
 #include "rigid_base_contact.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -53,6 +54,23 @@ void RigidBaseContact::add_forces(const StageView& s, ForceView& f) {
 }
 
 void RigidBaseContact::commit(const StageView& end, double) { update_normal_force(end); }
+
+void RigidBaseContact::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    const Index n = s.x.size();
+    for (std::size_t k = 0; k < nodes_.size(); ++k)
+        if (s.z(nodes_[k]) < z0_(k)) stiffness.emplace_back(n + nodes_[k], n + nodes_[k], stiffness_);
+}
+
+double RigidBaseContact::foreseen_event_time(const StageView& s) const {
+    // Node k crosses the base, z = z0_k, at t + (z0_k - z) / vz if it moves towards it.
+    double next = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const double gap = z0_(k) - s.z(nodes_[k]), vz = s.vz(nodes_[k]);
+        const bool in_contact = gap > 0;
+        if ((in_contact && vz > 0) || (!in_contact && vz < 0)) next = std::min(next, s.t + gap / vz);
+    }
+    return next;
+}
 
 double RigidBaseContact::potential_energy(const StageView& s) const {
     double penetration_squared = 0;

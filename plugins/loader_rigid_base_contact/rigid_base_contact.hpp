@@ -34,6 +34,11 @@ public:
     void add_forces(const StageView& s, ForceView& f) override;
     void commit(const StageView& end, double dt) override;
     double potential_energy(const StageView& s) const override;
+    /// Linear while the contact set stays: K_b on z of each node in contact. A node's contact
+    /// opening or closing is a foreseen event.
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
+    double foreseen_event_time(const StageView& s) const override;
 
     double contact_stiffness() const { return stiffness_; }
 

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/SparseCore>
+
 #include "frictionlab/component.hpp"
 #include "frictionlab/stage.hpp"
 #include "frictionlab/state.hpp"
@@ -56,6 +58,25 @@ public:
     /// Adds the diagonal d(fx_i)/d(vx_i) of this effect's x-force at a stage (N s/m, <= 0: the force
     /// resists the velocity) into dfx_dvx (one entry per node). Called only if has_velocity_jacobian().
     virtual void add_velocity_jacobian(const StageView&, Eigen::Ref<Eigen::ArrayXd> /*dfx_dvx*/) const {}
+
+    // Quasi-static solving (share/docs/quasi-static.md). Between discrete events a stuck system is an
+    // elastic structure loaded by its drive: an integrator may then solve for static equilibrium
+    // instead of stepping through time, if every effect can say what that needs. An effect that
+    // cannot say keeps the defaults, and the run stays dynamic: safe by default.
+
+    /// Whether, from state s on, this effect's forces are smooth in the positions (add_stiffness()
+    /// gives their Jacobian) and linear in the velocities, and no discrete transition can occur
+    /// before foreseen_event_time(s) or next_event_time(). E.g. a friction law with every junction
+    /// pinned, a compression-only contact with its contact set known.
+    virtual bool quasi_static_regime(const StageView&) const { return false; }
+    /// Adds the stiffness K = -dF/dq of this effect at s (N/m) as triplets (row, column, value),
+    /// q = [x (N) | z (N)]: the Jacobian of its forces with respect to the positions, velocities held.
+    /// Duplicate entries are summed. Called only while quasi_static_regime(s).
+    virtual void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& /*stiffness*/) const {}
+    /// The earliest time after s.t at which a position-dependent transition occurs if every node
+    /// moves on from s at its velocity in s (in a quiet phase, the linear response of the state to
+    /// the drive): a pinned junction reaching its threshold, a contact opening. +infinity: none.
+    virtual double foreseen_event_time(const StageView&) const { return std::numeric_limits<double>::infinity(); }
 };
 
 }  // namespace frictionlab

@@ -4,6 +4,8 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "frictionlab/body.hpp"
@@ -65,6 +67,13 @@ public:
     /// Whether the scheme treats the local velocity dependence of effects that give their velocity
     /// Jacobian (Effect::has_velocity_jacobian) implicitly, so that it does not limit the step.
     virtual bool implicit_in_local_velocity() const { return false; }
+    /// Whether the scheme takes steps far longer than its nominal step (a quiet phase solved for
+    /// rather than stepped through): the run then passes the next observation time within max_dt,
+    /// so observers still get their samples at their cadence. Fixed-step schemes keep their steps.
+    virtual bool steps_to_observations() const { return false; }
+    /// Named figures the run records in run.yaml under integrator_statistics (e.g. the fractions
+    /// of simulated and wall time spent in each phase of a hybrid scheme).
+    virtual std::vector<std::pair<std::string, double>> statistics() const { return {}; }
 
     /// u -> J u, J the Jacobian of dy/dt at the state a step starts from (discrete state frozen).
     using JacobianProduct = std::function<void(const Eigen::VectorXd& u, Eigen::VectorXd& ju)>;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <spdlog/logger.h>
@@ -61,6 +62,7 @@ struct RunSummary {
     long long evaluations = 0;  // derivative evaluations of the time stepping
     double simulated_time = 0, wall_seconds = 0;
     double cpu_seconds = 0;  // processor time of the run: what it costs, whatever else shares the machine
+    std::vector<std::pair<std::string, double>> integrator_statistics;  // Integrator::statistics()
 };
 
 /// Builds every component of a validated scene as `run` would (bulk, loaders, friction law,

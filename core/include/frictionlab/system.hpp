@@ -66,6 +66,21 @@ public:
     void accept_swap(double t, Eigen::VectorXd& y);
     double next_event_time() const;
 
+    /// Quasi-static solving (Effect::quasi_static_regime): whether every active effect is in its
+    /// quasi-static regime at s; the stiffness K = -dF/dq ([x | z], 2N x 2N) of the active effects
+    /// at s, assembled into `stiffness` (its pattern kept when unchanged); and the earliest event
+    /// they foresee if the nodes move on at the velocities of s.
+    bool quasi_static_regime(const StageView& s) const;
+    void assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness);
+    double foreseen_event_time(const StageView& s) const;
+    /// The forces [fx | fz | aux rates] at (t, y), as forces(), without counting an evaluation or
+    /// adding work: for solvers that evaluate the pipeline outside a time step (a quiet phase).
+    void static_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f) { compute_forces(t, y, f, 0); }
+    /// Adds work to each active effect as the trapezoid rule over a straight path from the accepted
+    /// state to y1 (positions q0 -> q1 in time h at the constant velocity (q1 - q0)/h), with the
+    /// frozen discrete state: how a quiet phase keeps the energy balance (work accounting only).
+    void add_straight_path_work(double t1, const Eigen::VectorXd& y1);
+
     void begin_stage(const StageInfo& stage);
     /// Evaluates every active effect at the accepted state, so published quantities and net_force()
     /// describe it (observers call this; its cost is proportional to their cadence).
@@ -123,6 +138,8 @@ private:
     std::vector<double> work_, pending_work_;  // per part; pending = this step's, until accepted
     Eigen::VectorXd effect_force_;              // one part's [fx | fz | aux rate], accounting only
     Eigen::VectorXd local_scratch_;             // forces of the effects local in velocity
+    std::vector<Eigen::Triplet<double>> triplets_;  // stiffness assembly scratch
+    Eigen::VectorXd path_state_;                    // straight-path work scratch
     double t_ = 0;
     long long steps_ = 0, evaluations_ = 0;
 };

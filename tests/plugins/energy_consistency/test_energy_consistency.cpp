@@ -18,6 +18,7 @@
 #include "driving_spring.hpp"
 #include "plate_springs.hpp"
 #include "bulk_at_rest.hpp"
+#include "random_lattice_state.hpp"
 #include "rig.hpp"
 #include "rigid_base_contact.hpp"
 #include "spring_lattice_2d.hpp"
@@ -47,30 +48,8 @@ double gradient_mismatch(Effect& e, const StateLayout& layout, Eigen::VectorXd y
     return worst / scale;
 }
 
-/// A bulk model with every node displaced by up to u at random.
-template <class Bulk>
-struct RandomState : test_support::BulkAtRest<Bulk> {
-    RandomState(const typename Bulk::Params& p, double u, unsigned seed) : test_support::BulkAtRest<Bulk>(p) {
-        std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> d(-u, u);
-        for (Index q = 0; q < 2 * this->layout.nodes; ++q) this->y(q) += d(rng);
-    }
-};
-
-/// A small lattice (5 x 3, 1 mm spacing) displaced at random.
-struct RandomLatticeState : RandomState<SpringLattice2d> {
-    explicit RandomLatticeState(double u, const std::string& springs = "geometric", unsigned seed = 11)
-        : RandomState(params(springs), u, seed) {}
-    static SpringLattice2d::Params params(const std::string& springs) {
-        SpringLattice2d::Params p;
-        p.nx = 5;
-        p.nz = 3;
-        p.length = 4e-3;
-        p.height = 2e-3;
-        p.springs = springs;
-        return p;
-    }
-};
+using test_support::RandomLatticeState;
+using test_support::RandomState;
 
 TEST(EnergyConsistency, LatticeSpringsForceIsMinusTheGradientOfTheirEnergy) {
     const double u = 1e-6;  // 1e-3 of the spacing: geometric springs are nonlinear on the scale l

@@ -1,0 +1,108 @@
+#include "equilibrium_solver.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace frictionlab {
+
+namespace {
+/// A Newton or refinement iteration whose correction shrinks by less than this is not converging.
+constexpr double contraction = 0.5;
+}  // namespace
+
+bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::VectorXd& y) {
+    system.assemble_stiffness(view_of(y, system.layout(), t), stiffness_);
+    // The symbolic analysis (AMD ordering, elimination tree) only when the pattern may have changed.
+    if (stiffness_.nonZeros() != pattern_size_) ldlt_.analyzePattern(stiffness_), pattern_size_ = stiffness_.nonZeros();
+    ldlt_.factorize(stiffness_);
+    ++counts_.factorisations;
+    // A singular or indefinite stiffness (a body mode nothing holds) has no stable static equilibrium.
+    factorised_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0).all();
+    stale_ = false;
+    if (!factorised_) pattern_size_ = -1;
+    return factorised_;
+}
+
+void EquilibriumSolver::node_forces(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& out) {
+    const Index dof = 2 * system.layout().nodes;
+    all_forces_.resize(system.layout().size() - dof);
+    system.static_forces(t, y, all_forces_);
+    out = all_forces_.head(dof);
+}
+
+bool EquilibriumSolver::equilibrium(System& system, double t, Eigen::VectorXd& y) {
+    ++counts_.solves;
+    const Index dof = 2 * system.layout().nodes;
+    guess_ = y.head(dof);
+    // A kept K that made the last solve slow is renewed first.
+    if (stale_ && !refactorise(system, t, y)) return false;
+    if (factorised_ && newton(system, t, y)) return true;
+    // The kept K is too far from the current one: again from the guess, with K anew.
+    y.head(dof) = guess_;
+    return refactorise(system, t, y) && newton(system, t, y);
+}
+
+bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
+    const Index dof = 2 * system.layout().nodes;
+    double previous = std::numeric_limits<double>::infinity();
+    for (int it = 0; it < s_.max_iterations; ++it) {
+        ++counts_.iterations;
+        node_forces(system, t, y, forces_);
+        dq_ = ldlt_.solve(forces_);
+        const double size = dq_.lpNorm<Eigen::Infinity>();
+        // Not contracting (a K far off, a contact flipping in and out): give up rather than wander.
+        if (!std::isfinite(size) || size > contraction * previous) return false;
+        y.head(dof) += dq_;
+        if (size <= s_.position_tolerance) {
+            stale_ = stale_ || it >= s_.slow_after;
+            return true;
+        }
+        previous = size;
+    }
+    return false;
+}
+
+bool EquilibriumSolver::steady_velocity(System& system, double t, Eigen::VectorXd& y) {
+    // The drive's rate dF/dt; the later evaluation first, so the quantities the effects publish
+    // describe (t, y) after it.
+    const Index dof = 2 * system.layout().nodes;
+    node_forces(system, t + s_.rate_step, y, later_);
+    node_forces(system, t, y, forces_);
+    rhs_ = (later_ - forces_) / s_.rate_step;
+    // With a kept K far from the current one the refinement does not contract: then with K anew.
+    return refined_velocity(system, t, y) || (refactorise(system, t, y) && refined_velocity(system, t, y));
+}
+
+bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::VectorXd& y) {
+    const Index dof = 2 * system.layout().nodes;
+    Eigen::Ref<Eigen::VectorXd> v = y.segment(dof, dof);
+    v = ldlt_.solve(rhs_);
+    double previous = std::numeric_limits<double>::infinity();
+    for (int it = 0; it < s_.max_iterations; ++it) {
+        const double speed = v.lpNorm<Eigen::Infinity>();
+        if (!std::isfinite(speed)) return false;
+        if (speed == 0) return true;
+        // K v = -(F(q + e v) - F(q - e v)) / 2e at the exact state (the velocities of y held in both),
+        // e giving a displacement of probe_displacement: K v to second order in e.
+        const double e = s_.probe_displacement / speed;
+        probe_ = y;
+        probe_.head(dof) += e * v;
+        node_forces(system, t, probe_, kv_);
+        probe_.head(dof) -= (2 * e) * v;
+        node_forces(system, t, probe_, later_);
+        kv_ = (later_ - kv_) / (2 * e);
+        dv_ = ldlt_.solve(rhs_ - kv_);
+        const double size = dv_.lpNorm<Eigen::Infinity>();
+        if (!std::isfinite(size) || size > contraction * previous) return false;
+        v += dv_;
+        if (size <= s_.velocity_tolerance * speed) {
+            stale_ = stale_ || it >= s_.slow_after;
+            node_forces(system, t, y, forces_);  // the published quantities describe (t, y) again
+            return true;
+        }
+        previous = size;
+    }
+    return false;
+}
+
+}  // namespace frictionlab

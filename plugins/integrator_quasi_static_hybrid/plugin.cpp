@@ -1,0 +1,9 @@
+#include "frictionlab/plugin.hpp"
+#include "frictionlab/registry.hpp"
+#include "quasi_static_hybrid.hpp"
+
+namespace {
+void register_types(frictionlab::Registry& registry) { registry.add<frictionlab::QuasiStaticHybrid>(); }
+}  // namespace
+
+FRICTIONLAB_PLUGIN("integrator_quasi_static_hybrid", "0.1.0", register_types)

@@ -1,0 +1,88 @@
+#pragma once
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "frictionlab/kinds.hpp"
+#include "frictionlab/param_spec.hpp"
+
+#include "equilibrium_solver.hpp"
+
+namespace frictionlab {
+
+/// Quasi-static / dynamic hybrid stepper (share/docs/quasi-static.md): quiet phases crossed in a
+/// few static solves, ruptures integrated by an explicit scheme at its own step.
+///
+/// Quiet phase: every active effect is in its quasi-static regime (Effect::quasi_static_regime:
+/// all junctions pinned, contact set known). Each quiet step jumps from t to the first of: the next
+/// scheduled event (Effect::next_event_time: a lifetime ending, a drive reversal), the earliest
+/// foreseen one (Effect::foreseen_event_time at the steady velocities: a pinned junction reaching
+/// mu_s p, a contact opening), the next observation or stage end (the run passes them within
+/// max_dt), and max_quiet_step. There it solves static equilibrium with the steady velocity field
+/// held (the viscous lag, EquilibriumSolver), sets the velocities to that field and commits. A step
+/// to a foreseen event overshoots it by event_overshoot so the strict threshold is crossed.
+///
+/// Dynamic phase: the scene's explicit scheme (rk4 or velocity_verlet) at its step dt. It starts
+/// when an effect leaves its regime (a junction broke at a commit) or an event is foreseen within
+/// one step dt. Every check_interval of simulated time the stepper checks whether it may return:
+/// every effect in its regime, and the state within quiet_speed of the quasi-static one (largest
+/// |v - v*| over the nodes, v* the steady velocities at the equilibrium of that time). It returns
+/// only when this has held at every check for quiet_hold: the hysteresis that keeps a marginal case
+/// (a ringing lattice, a junction close to its threshold) from switching at every check. On return
+/// the residual vibration (speeds below quiet_speed) is projected away; its kinetic energy shows
+/// in the energy observer's residual, bounded by 1/2 M quiet_speed^2.
+class QuasiStaticHybrid final : public Integrator {
+public:
+    struct Params {
+        std::string dynamic = "rk4";
+        double dt = 2e-7;
+        double quiet_speed = 1e-5;
+        double quiet_hold = 1e-4;
+        double check_interval = 1e-5;
+        double max_quiet_step = 1e-4;
+        double event_overshoot = 1e-12;
+        double position_tolerance = 1e-13;
+    };
+    static constexpr std::string_view type = "quasi_static_hybrid";
+    static ParamSpec<Params> spec();
+
+    QuasiStaticHybrid(const Params& p, const Context& ctx);
+    ~QuasiStaticHybrid() override;
+
+    double step(System& system, double max_dt) override;
+    double nominal_dt() const override { return p_.dt; }
+    double stability_radius() const override { return dynamic_->stability_radius(); }
+    bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
+                         Eigen::VectorXd& out) const override {
+        return dynamic_->linearised_step(jacobian, h, positions, u, out);
+    }
+    bool steps_to_observations() const override { return true; }
+    std::vector<std::pair<std::string, double>> statistics() const override;
+
+    bool quiet() const { return quiet_; }
+    long long switches_to_quiet() const { return to_quiet_; }
+    long long switches_to_dynamic() const { return to_dynamic_; }
+    long long quiet_steps() const { return quiet_steps_; }
+
+private:
+    /// One quiet step, or false (nothing done) if the system must be stepped dynamically now.
+    bool quiet_step(System& system, double max_dt, double& h);
+    /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis).
+    bool may_turn_quiet(System& system);
+
+    Params p_;
+    spdlog::logger& log_;
+    std::unique_ptr<Integrator> dynamic_;
+    EquilibriumSolver solver_;
+    Eigen::VectorXd y_;            // the quiet solution being formed
+    Eigen::VectorXd start_, mean_;  // a quiet step's start, and its start with the step's mean velocity
+    bool quiet_ = false;
+    bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
+    double next_check_ = -std::numeric_limits<double>::infinity();
+    double calm_since_ = std::numeric_limits<double>::quiet_NaN();  // start of the current calm spell
+    long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0;
+    double quiet_time_ = 0, dynamic_time_ = 0;                // simulated, s
+    std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{};
+};
+
+}  // namespace frictionlab

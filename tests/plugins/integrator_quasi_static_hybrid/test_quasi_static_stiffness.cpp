@@ -1,0 +1,121 @@
+// K = -dF/dq for every effect that gives its stiffness (Effect::add_stiffness), by central
+// differences of its forces on a displaced state: the quasi-static solver's Newton iteration and
+// its steady velocities rely on it. Relative to the largest entry of K, with h = 1e-9 m: the
+// truncation h^2 / l^2 ~ 1e-12 of the geometric springs (the other forces are linear in q) and the
+// round-off eps |F| / (h |K|) ~ 1e-9 are far below the tolerance 1e-6; a wrong term (a missing
+// rotation term, a sign, a factor 1/2) misses it by orders of magnitude.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "random_lattice_state.hpp"
+#include "driving_spring.hpp"
+#include "rig.hpp"
+#include "rigid_base_contact.hpp"
+#include "spring_lattice_2d.hpp"
+
+namespace frictionlab {
+namespace {
+
+constexpr double relative_tolerance = 1e-6;
+
+/// Largest |K + dF/dq| over all entries, relative to the largest |K|, with K from add_stiffness().
+double stiffness_mismatch(Effect& e, const StateLayout& layout, Eigen::VectorXd y, double t, double h) {
+    const Index dof = 2 * layout.nodes;
+    std::vector<Eigen::Triplet<double>> triplets;
+    e.add_stiffness(view_of(y, layout, t), triplets);
+    Eigen::SparseMatrix<double> k(dof, dof);
+    k.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::MatrixXd given = Eigen::MatrixXd(k);
+    Eigen::MatrixXd differenced(dof, dof);
+    for (Index q = 0; q < dof; ++q) {
+        const double q0 = y(q);
+        y(q) = q0 + h;
+        const double plus = y(q);
+        const Eigen::VectorXd f_plus = test_support::forces_of_effect(e, y, layout, t);
+        y(q) = q0 - h;
+        const double minus = y(q);
+        const Eigen::VectorXd f_minus = test_support::forces_of_effect(e, y, layout, t);
+        y(q) = q0;
+        differenced.col(q) = -(f_plus - f_minus) / (plus - minus);
+    }
+    const double scale = given.cwiseAbs().maxCoeff();
+    EXPECT_GT(scale, 0) << "the effect must have a stiffness";
+    return (given - differenced).cwiseAbs().maxCoeff() / scale;
+}
+
+/// A small lattice (5 x 3, 1 mm spacing), every node displaced by up to u at random.
+struct DisplacedLattice : test_support::RandomLatticeState {
+    DisplacedLattice(double u, const std::string& springs) : RandomLatticeState(u, springs, 3) {}
+};
+
+TEST(QuasiStaticStiffness, LatticeSpringsGiveMinusTheirForceJacobian) {
+    // Large displacements (a tenth of the spacing), so the geometric law's rotation terms matter.
+    for (const char* law : {"geometric", "small_strain"}) {
+        DisplacedLattice s(1e-4, law);
+        auto effects = s.bulk.effects(s.context());
+        Effect& springs = *effects.at(0);
+        ASSERT_EQ(springs.key(), "lattice_springs");
+        EXPECT_TRUE(springs.quasi_static_regime(view_of(s.y, s.layout, 0)));
+        EXPECT_LT(stiffness_mismatch(springs, s.layout, s.y, 0, 1e-9), relative_tolerance) << law;
+    }
+}
+
+TEST(QuasiStaticStiffness, BaseContactStiffensOnlyTheNodesInContact) {
+    DisplacedLattice s(1e-6, "geometric");
+    RigidBaseContact contact(RigidBaseContact::Params{}, s.context());
+    const NodeSet& interface = s.bulk.body().nodes("interface");
+    // Half the interface pressed into the base, half lifted off it.
+    for (std::size_t k = 0; k < interface.size(); ++k)
+        s.y(s.layout.nodes + interface[k]) = s.bulk.body().z0(interface[k]) + (k % 2 ? 1e-6 : -1e-6);
+    EXPECT_LT(stiffness_mismatch(contact, s.layout, s.y, 0, 1e-9), relative_tolerance);
+    std::vector<Eigen::Triplet<double>> k;
+    contact.add_stiffness(view_of(s.y, s.layout, 0), k);
+    EXPECT_EQ(k.size(), (interface.size() + 1) / 2);
+    // Moving up at 1 mm/s, the first pressed node (1 um in) leaves the base 1 ms later.
+    Eigen::VectorXd y = s.y;
+    y.segment(3 * s.layout.nodes, s.layout.nodes).setConstant(1e-3);
+    EXPECT_NEAR(contact.foreseen_event_time(view_of(y, s.layout, 0.5)), 0.5 + 1e-3, 1e-12);
+}
+
+TEST(QuasiStaticStiffness, DrivingSpringStiffensItsDrivingPoint) {
+    DisplacedLattice s(1e-6, "geometric");
+    for (const auto& [height, attachment] : {std::pair{1e-3, "node"}, std::pair{1.25e-3, "interpolated"}}) {
+        DrivingSpring::Params p;
+        p.height = height;
+        p.attachment = attachment;
+        DrivingSpring spring(p, s.context());
+        spring.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(s.y, s.layout, 0.0));
+        EXPECT_LT(stiffness_mismatch(spring, s.layout, s.y, 1e-4, 1e-9), relative_tolerance) << attachment;
+    }
+}
+
+TEST(QuasiStaticStiffness, PinnedJunctionsStiffenTheirBlockAndForeseeTheirThreshold) {
+    testing::Rig r(testing::exact_params());
+    const double u = r.p / r.k;
+    r.normal->setConstant(3 * r.p);
+    r.stage(false);
+    r.hold(1);
+    r.stage(true);
+    r.move(0, 0.25 * u);  // block 0's three junctions at 0.25 p: all pinned
+    ASSERT_EQ(r.block(0).pinned(), 3);
+    EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
+    std::vector<Eigen::Triplet<double>> k;
+    r.law->add_stiffness(r.view(), k);
+    ASSERT_EQ(k.size(), 3u);  // one diagonal entry per block
+    EXPECT_EQ(k[0].row(), 0);
+    EXPECT_EQ(k[0].value(), 3 * r.k);
+    // Block 0 moving on at velocity v: its junctions reach mu_s p after (mu_s - 0.25) u / v; the
+    // others stand still.
+    const double v = 1e-3;
+    r.y(r.layout.nodes * 2) = v;
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + (0.7 - 0.25) * u / v, 1e-12 * u / v);
+    // Beyond the threshold it breaks at the commit, and the law leaves its quasi-static regime.
+    r.y(r.layout.nodes * 2) = 0;
+    r.move(0, 0.71 * u);
+    EXPECT_EQ(r.block(0).sliding(), 3);
+    EXPECT_FALSE(r.law->quasi_static_regime(r.view()));
+}
+
+}  // namespace
+}  // namespace frictionlab
