@@ -5,6 +5,11 @@
 namespace frictionlab {
 
 CampaignFileKind campaign_file_kind(const std::filesystem::path& file) {
+    // Only a regular file of sensible size is opened here (a FIFO would block, /dev/zero never
+    // end); anything else is left to the scene reader, which refuses it with the reason.
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec) || std::filesystem::file_size(file, ec) > 4 * 1024 * 1024 || ec)
+        return CampaignFileKind::scene;
     try {
         const YAML::Node root = YAML::LoadFile(file.string());
         if (!root.IsMap()) return CampaignFileKind::scene;

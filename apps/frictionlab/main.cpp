@@ -230,6 +230,8 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
     log.info("sweep: {} cases, {} failed, {} finished earlier; tables in {}", records.size(), failed, reused,
              (std::filesystem::path(output) / "sweep.csv").string());
     return failed > 0 ? fl::exit_code::run_failure : fl::exit_code::ok;
+}
+
 /// The subcommand a mistyped first word was probably meant to be: "unknown command 'rn'; did you
 /// mean 'run'?". CLI11 would only say the argument was not expected. Global options and their
 /// values before the subcommand are skipped; empty if the first word is a subcommand or absent.

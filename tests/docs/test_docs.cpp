@@ -4,11 +4,11 @@
 // - Fenced ```sh lines that call `build/bin/frictionlab`: run from the source tree. `run` becomes
 //   `check` with the same arguments (a run takes minutes and writes into the tree; `check` reads the
 //   scene, applies every --set and -o, and estimates the stable step), `study` becomes
-//   `study --check`, and `plot` draws two tiny runs made here. SCENE stands for a shipped scene.
+//   `study --check`, `sweep` becomes `sweep --check`, and `plot` draws two tiny runs made here. SCENE stands for a shipped scene.
 //   Other shell lines (package installation, cmake) are the build's own business.
 // - Lines `--set ...` in any fence: applied to a shipped scene with `frictionlab check`.
-// - Fenced ```yaml blocks: a scene (it has `bulk:`) is written out and checked; a study (it has
-//   `scene:`) is written beside the base scene it names and checked with `study --check`.
+// - Fenced ```yaml blocks: a scene (it has `bulk:`) is written out and checked; a study or sweep (it has
+//   `scene:`) is written beside the base scene it names and checked with `check`.
 // - share/docs/glossary.md names every CSV column, VTU array and run.yaml key a run writes.
 #include <filesystem>
 #include <optional>
@@ -85,6 +85,7 @@ std::string as_checked(std::string args) {
     args = std::regex_replace(args, std::regex("\\bSCENE\\b"), shipped_scene);
     if (args.rfind("run ", 0) == 0) return "check " + args.substr(4);
     if (args.rfind("study ", 0) == 0) return "study --check " + args.substr(6);
+    if (args.rfind("sweep ", 0) == 0) return "sweep --check " + args.substr(6);
     return args;
 }
 
@@ -151,11 +152,13 @@ TEST_F(Docs, EveryDocumentedSceneAndStudyIsValid) {
             EXPECT_EQ(r.code, 0) << where << "\n" << r.output;
         } else if (node["scene"]) {
             ++files;
-            const auto base = source / "configs/study" / node["scene"].as<std::string>();
+            // A study's base scene is in configs/study, a sweep's in configs/li2020.
+            auto base = source / "configs/study" / node["scene"].as<std::string>();
+            if (!fs::exists(base)) base = source / "configs/li2020" / node["scene"].as<std::string>();
             ASSERT_TRUE(fs::exists(base)) << where << ": the base scene " << base;
             fs::copy_file(base, dir_ / base.filename(), fs::copy_options::overwrite_existing);
-            std::ofstream(dir_ / "study.yaml") << f.text;
-            const auto r = frictionlab("study --check study.yaml", dir_);
+            std::ofstream(dir_ / "campaign.yaml") << f.text;
+            const auto r = frictionlab("check campaign.yaml", dir_);  // a study or a sweep
             EXPECT_EQ(r.code, 0) << where << "\n" << r.output;
         }
     }

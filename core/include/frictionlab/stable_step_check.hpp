@@ -1,5 +1,5 @@
 #pragma once
-// What `frictionlab check` adds to validation: the stable-step estimate `run` makes before each
+// What `frictionlab check` adds to validation: the stable-step estimate `run` makes before the first
 // stage, so that a step `run` would refuse is reported by `check` too, at `integrator.dt`.
 #include <spdlog/logger.h>
 
@@ -10,7 +10,7 @@ namespace frictionlab {
 
 class Registry;
 
-/// Builds the scene's components and estimates the stable step of every stage's pipeline at the
+/// Builds the scene's components and estimates the stable step of the first stage's pipeline at the
 /// scene's initial state; a step above it is reported to `diagnostics` where `integrator.dt` is
 /// written (the integrator's mapping if dt is left at its default). `run` estimates again at the
 /// start of each stage, from the state the earlier stages left. A component that refuses its set-up
