@@ -99,6 +99,9 @@ public:
             target = &*redirected;
         }
         fl::RunOptions options;
+        // Provenance as the command records it: how this process was started, and the --set list.
+        options.command_line = py::module_::import("sys").attr("argv").cast<std::vector<std::string>>();
+        options.overrides = overrides_;
         options.overwrite = overwrite;
         options.allow_unstable_step = allow_unstable_step;
         options.live_progress = progress;

@@ -15,6 +15,8 @@ import frictionlab
 from conftest import HDF5_OVERRIDES, SCENE, run_cli
 
 WALL_CLOCK_KEYS = ("wall_seconds", "cpu_seconds")
+# How the run was started differs between a command and a Python call by design.
+INVOCATION_KEYS = ("command_line",)
 
 
 def without_wall_clock(path):
@@ -27,9 +29,15 @@ def without_wall_clock(path):
         import json
 
         data = json.loads(text)
-        for k in WALL_CLOCK_KEYS:
+        for k in WALL_CLOCK_KEYS + INVOCATION_KEYS:
             data.pop(k)
         return json.dumps(data)
+    data = yaml.safe_load(text)
+    if "command_line" in data:
+        data.pop("command_line")
+        for k in WALL_CLOCK_KEYS:
+            data.pop(k)
+        return yaml.safe_dump(data)
     return "".join(line for line in text.splitlines(True) if not line.startswith(WALL_CLOCK_KEYS))
 
 
