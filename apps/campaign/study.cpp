@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/json.hpp"
+#include "frictionlab/campaign_file.hpp"
 #include "frictionlab/campaign_keys.hpp"
 #include "frictionlab/scene_keys.hpp"
 #include "frictionlab/scene_values.hpp"
@@ -152,16 +153,9 @@ std::vector<SceneOverride> study_observers(const Study& study, const Scene& scen
 Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics) {
     Study study;
     study.file = file;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) {
-        diagnostics.error({file.string(), 0, 0}, "",
-                          std::filesystem::exists(file, ec) ? "cannot read the study file: it is not a file"
-                                                            : "cannot read the study file: it does not exist");
-        return study;
-    }
-    std::ifstream in(file, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto root = detail::read_yaml(text, file.string(), diagnostics);
+    const auto text = read_campaign_text(file, "study", diagnostics);
+    if (!text) return study;
+    const auto root = detail::read_yaml(*text, file.string(), diagnostics);
     if (!root) return study;
     const detail::SourceMap sources(file.string());
     if (!root->IsDefined() || root->IsNull()) {

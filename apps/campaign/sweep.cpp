@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "frictionlab/campaign_file.hpp"
 #include "frictionlab/campaign_keys.hpp"
 #include "frictionlab/json.hpp"
 #include "frictionlab/scene_values.hpp"
@@ -161,16 +162,9 @@ std::string name_part(const std::string& key, const std::string& value) {
 Sweep read_sweep(const std::filesystem::path& file, Diagnostics& diagnostics) {
     Sweep sweep;
     sweep.file = file;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) {
-        diagnostics.error({file.string(), 0, 0}, "",
-                          std::filesystem::exists(file, ec) ? "cannot read the sweep file: it is not a file"
-                                                            : "cannot read the sweep file: it does not exist");
-        return sweep;
-    }
-    std::ifstream in(file, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto root = detail::read_yaml(text, file.string(), diagnostics);
+    const auto text = read_campaign_text(file, "sweep", diagnostics);
+    if (!text) return sweep;
+    const auto root = detail::read_yaml(*text, file.string(), diagnostics);
     if (!root) return sweep;
     if (!root->IsDefined() || root->IsNull()) {
         diagnostics.error({file.string(), 1, 1}, "", "the sweep is empty; expected scene and grid, cases or seeds");
