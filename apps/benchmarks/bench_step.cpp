@@ -19,11 +19,11 @@
 #include <benchmark/benchmark.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/diagnostics.hpp"
-#include "frictionlab/plugin_search.hpp"
-#include "frictionlab/registry.hpp"
-#include "frictionlab/scene.hpp"
-#include "frictionlab/simulation.hpp"
+#include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/plugins/search.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/scene/scene.hpp"
+#include "frictionlab/simulation/simulation.hpp"
 
 namespace frictionlab {
 namespace {

@@ -8,8 +8,8 @@
 #include <benchmark/benchmark.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/context.hpp"
-#include "frictionlab/stage.hpp"
+#include "frictionlab/model/context.hpp"
+#include "frictionlab/model/stage.hpp"
 
 #include "three_state_junctions.hpp"
 

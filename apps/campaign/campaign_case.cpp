@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "frictionlab/json.hpp"
+#include "frictionlab/output/json.hpp"
 
 namespace frictionlab {
 

@@ -1,6 +1,6 @@
 #include "frictionlab/campaign_keys.hpp"
 
-#include "frictionlab/scene_keys.hpp"
+#include "frictionlab/scene/keys.hpp"
 
 namespace frictionlab::detail {
 

@@ -20,7 +20,7 @@
 #include <spdlog/sinks/stdout_sinks.h>
 
 #include "frictionlab/campaign_mpi.hpp"
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 

@@ -7,12 +7,12 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/json.hpp"
+#include "frictionlab/output/json.hpp"
 #include "frictionlab/campaign_file.hpp"
 #include "frictionlab/campaign_keys.hpp"
-#include "frictionlab/scene_keys.hpp"
-#include "frictionlab/scene_values.hpp"
-#include "frictionlab/scene_yaml.hpp"
+#include "frictionlab/scene/keys.hpp"
+#include "frictionlab/scene/values.hpp"
+#include "frictionlab/scene/yaml.hpp"
 
 namespace frictionlab {
 

@@ -6,7 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "frictionlab/csv_columns.hpp"
+#include "frictionlab/output/csv_columns.hpp"
 
 namespace frictionlab {
 

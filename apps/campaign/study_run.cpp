@@ -7,11 +7,12 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "frictionlab/base/version.hpp"
 #include "frictionlab/campaign_runner.hpp"
 #include "frictionlab/case_outputs.hpp"
 #include "frictionlab/csv_cell.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/output_directory.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/output_directory.hpp"
 
 namespace frictionlab {
 

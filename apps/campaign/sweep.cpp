@@ -11,9 +11,9 @@
 
 #include "frictionlab/campaign_file.hpp"
 #include "frictionlab/campaign_keys.hpp"
-#include "frictionlab/json.hpp"
-#include "frictionlab/scene_values.hpp"
-#include "frictionlab/scene_yaml.hpp"
+#include "frictionlab/output/json.hpp"
+#include "frictionlab/scene/values.hpp"
+#include "frictionlab/scene/yaml.hpp"
 
 namespace frictionlab {
 

@@ -10,8 +10,8 @@
 
 #include "frictionlab/case_outputs.hpp"
 #include "frictionlab/csv_cell.hpp"
-#include "frictionlab/csv_columns.hpp"
-#include "frictionlab/errors.hpp"
+#include "frictionlab/output/csv_columns.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 

@@ -1,6 +1,6 @@
 #include "doc_writer.hpp"
 
-#include "frictionlab/json.hpp"
+#include "frictionlab/output/json.hpp"
 
 #include <fmt/format.h>
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 namespace frictionlab::cli {
 

@@ -20,11 +20,12 @@
 #include <spdlog/spdlog.h>
 
 #include "../frictionlab/doc_writer.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/plugin_search.hpp"
-#include "frictionlab/registry.hpp"
-#include "frictionlab/run.hpp"
-#include "frictionlab/scene.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/plugins/search.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/run.hpp"
+#include "frictionlab/scene/scene.hpp"
+#include "frictionlab/base/version.hpp"
 
 namespace py = pybind11;
 namespace fl = frictionlab;

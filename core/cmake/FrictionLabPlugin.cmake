@@ -4,7 +4,7 @@ include(GNUInstallDirs)
 # frictionlab_add_plugin(<name> SOURCES <src>... [ENTRY <file>] [LIBRARIES <lib>...] [NO_INSTALL])
 #
 # Builds a plugin library: a MODULE named exactly <name>.so that exports one C symbol (see
-# frictionlab/plugin.hpp). Used for the plugins shipped with FrictionLab and, after
+# frictionlab/plugins/plugin.hpp). Used for the plugins shipped with FrictionLab and, after
 # find_package(FrictionLab), for plugins built out of tree. In the FrictionLab tree the module goes
 # to lib/frictionlab/plugins of the build tree; out of tree to <build>/plugins, the directory to
 # name in a scene's plugin_paths or with --plugin-path.

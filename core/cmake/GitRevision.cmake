@@ -6,7 +6,7 @@ execute_process(COMMAND git -C "${SOURCE_DIR}" describe --always --dirty --abbre
 if(failed OR revision STREQUAL "")
   set(revision "unknown")  # a source archive without git history
 endif()
-set(text "#include \"frictionlab/run.hpp\"\n\nstd::string frictionlab::git_revision() { return \"${revision}\"; }\n")
+set(text "#include \"frictionlab/base/version.hpp\"\n\nstd::string frictionlab::git_revision() { return \"${revision}\"; }\n")
 if(EXISTS "${OUTPUT}")
   file(READ "${OUTPUT}" old)
 endif()

@@ -6,7 +6,7 @@
 
 #include "chain_damping.hpp"
 #include "chain_springs.hpp"
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 #include "vertical_damping.hpp"
 
 namespace frictionlab {

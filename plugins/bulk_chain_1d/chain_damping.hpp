@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "frictionlab/effect.hpp"
+#include "frictionlab/model/effect.hpp"
 
 namespace frictionlab {
 

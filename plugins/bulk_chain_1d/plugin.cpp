@@ -1,6 +1,6 @@
 #include "chain_1d.hpp"
-#include "frictionlab/plugin.hpp"
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/plugin.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 namespace {
 void register_types(frictionlab::Registry& r) { r.add<frictionlab::Chain1d>(); }

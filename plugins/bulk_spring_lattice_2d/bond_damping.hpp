@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "frictionlab/effect.hpp"
+#include "frictionlab/model/effect.hpp"
 #include "damping_stencil.hpp"
 #include "lattice_grid.hpp"
 #include "pair_forces.hpp"

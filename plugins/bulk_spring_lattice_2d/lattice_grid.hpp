@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/state.hpp"
 
 namespace frictionlab {
 

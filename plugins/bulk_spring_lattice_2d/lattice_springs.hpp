@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/effect.hpp"
+#include "frictionlab/model/effect.hpp"
 #include "lattice_grid.hpp"
 #include "pair_forces.hpp"
 

@@ -10,7 +10,7 @@
 #include <array>
 #include <vector>
 
-#include "frictionlab/hot_kernel.hpp"
+#include "frictionlab/base/hot_kernel.hpp"
 #include "lattice_grid.hpp"
 
 namespace frictionlab {

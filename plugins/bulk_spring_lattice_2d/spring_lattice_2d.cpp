@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 #include "lattice_bonds.hpp"
 
 namespace frictionlab {

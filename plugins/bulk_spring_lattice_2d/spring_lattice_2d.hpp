@@ -4,9 +4,9 @@
 #include <string_view>
 #include <vector>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
-#include "frictionlab/slider_params.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/model/slider_params.hpp"
 #include "bond_damping.hpp"
 #include "lattice_grid.hpp"
 #include "lattice_springs.hpp"

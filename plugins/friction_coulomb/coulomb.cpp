@@ -1,10 +1,10 @@
 #include "coulomb.hpp"
 
-#include "frictionlab/friction_rules.hpp"
+#include "frictionlab/model/friction_rules.hpp"
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 

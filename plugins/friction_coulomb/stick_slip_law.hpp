@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab {
 

@@ -1,12 +1,12 @@
 #include "slip_weakening.hpp"
 
-#include "frictionlab/friction_rules.hpp"
+#include "frictionlab/model/friction_rules.hpp"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 

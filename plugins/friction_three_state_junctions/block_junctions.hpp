@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/state.hpp"
 
 namespace frictionlab {
 

@@ -1,6 +1,6 @@
 #include "lifetime_sampler.hpp"
 
-#include "frictionlab/random.hpp"
+#include "frictionlab/model/random.hpp"
 
 namespace frictionlab {
 

@@ -1,6 +1,6 @@
 #include "three_state_junctions.hpp"
 
-#include "frictionlab/friction_rules.hpp"
+#include "frictionlab/model/friction_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/random.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/random.hpp"
 
 namespace frictionlab {
 

@@ -1,5 +1,5 @@
-#include "frictionlab/plugin.hpp"
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/plugin.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 #include "two_state_junctions.hpp"
 

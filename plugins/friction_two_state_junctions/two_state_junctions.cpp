@@ -1,6 +1,6 @@
 #include "two_state_junctions.hpp"
 
-#include "frictionlab/friction_rules.hpp"
+#include "frictionlab/model/friction_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <optional>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 #include "error_norm.hpp"
 #include "step_size_controller.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/state.hpp"
 
 namespace frictionlab {
 

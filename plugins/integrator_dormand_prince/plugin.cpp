@@ -1,6 +1,6 @@
 #include "dormand_prince.hpp"
-#include "frictionlab/plugin.hpp"
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/plugin.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 namespace {
 void register_types(frictionlab::Registry& registry) { registry.add<frictionlab::DormandPrince>(); }

@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/partitioned_step.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/partitioned_step.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

@@ -22,7 +22,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include "frictionlab/system.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "rk4.hpp"
 #include "velocity_verlet.hpp"
 

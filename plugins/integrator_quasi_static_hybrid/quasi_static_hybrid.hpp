@@ -3,8 +3,8 @@
 #include <memory>
 #include <string>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 #include "equilibrium_solver.hpp"
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "frictionlab/hot_kernel.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/hot_kernel.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "frictionlab/fixed_step_integrator.hpp"
+#include "frictionlab/model/fixed_step_integrator.hpp"
 
 namespace frictionlab {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "frictionlab/partitioned_step.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/model/partitioned_step.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

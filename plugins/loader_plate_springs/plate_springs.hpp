@@ -2,8 +2,8 @@
 #include <string>
 #include <string_view>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab {
 

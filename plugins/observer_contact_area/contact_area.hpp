@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/table_writer.hpp"
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
-#include "frictionlab/junction_counts.hpp"
+#include "frictionlab/output/table_writer.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/model/junction_counts.hpp"
 
 namespace frictionlab {
 

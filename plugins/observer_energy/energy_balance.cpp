@@ -2,9 +2,9 @@
 
 #include <limits>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/output_file_name.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/output_file_name.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

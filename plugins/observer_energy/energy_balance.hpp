@@ -5,9 +5,9 @@
 #include <string_view>
 #include <vector>
 
-#include "frictionlab/csv_table.hpp"
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/output/csv_table.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab {
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/junction_counts.hpp"
+#include "frictionlab/model/junction_counts.hpp"
 
 namespace frictionlab {
 

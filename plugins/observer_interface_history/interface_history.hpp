@@ -2,9 +2,9 @@
 #include <memory>
 #include <vector>
 
-#include "frictionlab/table_writer.hpp"
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/output/table_writer.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab {
 

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "frictionlab/output_file_name.hpp"
+#include "frictionlab/output/output_file_name.hpp"
 
 namespace frictionlab {
 

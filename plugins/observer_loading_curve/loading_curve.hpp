@@ -1,9 +1,9 @@
 #pragma once
 #include <memory>
 
-#include "frictionlab/csv_table.hpp"
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/output/csv_table.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab {
 

@@ -5,10 +5,10 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/atomic_file.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/json.hpp"
-#include "frictionlab/output_file_name.hpp"
+#include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/json.hpp"
+#include "frictionlab/output/output_file_name.hpp"
 
 namespace frictionlab {
 

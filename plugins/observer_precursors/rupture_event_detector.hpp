@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/state.hpp"
 #include "rupture_criterion.hpp"
 
 namespace frictionlab {

@@ -20,9 +20,9 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include "frictionlab/atomic_file.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 

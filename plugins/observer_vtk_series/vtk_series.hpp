@@ -6,9 +6,9 @@
 
 #include <vtkSmartPointer.h>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
-#include "frictionlab/run.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/simulation/run.hpp"
 
 class vtkDoubleArray;
 class vtkIntArray;

@@ -4,12 +4,12 @@
 #include <string>
 #include <string_view>
 
-#include <frictionlab/errors.hpp>
-#include <frictionlab/kinds.hpp>
-#include <frictionlab/param_spec.hpp>
-#include <frictionlab/plugin.hpp>
-#include <frictionlab/registry.hpp>
-#include <frictionlab/run.hpp>
+#include <frictionlab/base/errors.hpp>
+#include <frictionlab/model/kinds.hpp>
+#include <frictionlab/base/param_spec.hpp>
+#include <frictionlab/plugins/plugin.hpp>
+#include <frictionlab/plugins/registry.hpp>
+#include <frictionlab/simulation/run.hpp>
 
 namespace {
 

@@ -8,12 +8,12 @@
 
 #include <fmt/format.h>
 
-#include <frictionlab/errors.hpp>
-#include <frictionlab/kinds.hpp>
-#include <frictionlab/param_spec.hpp>
-#include <frictionlab/plugin.hpp>
-#include <frictionlab/quantities.hpp>
-#include <frictionlab/registry.hpp>
+#include <frictionlab/base/errors.hpp>
+#include <frictionlab/model/kinds.hpp>
+#include <frictionlab/base/param_spec.hpp>
+#include <frictionlab/plugins/plugin.hpp>
+#include <frictionlab/model/quantities.hpp>
+#include <frictionlab/plugins/registry.hpp>
 
 namespace {
 

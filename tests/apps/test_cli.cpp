@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cli.hpp"
-#include "frictionlab/output_directory.hpp"
+#include "frictionlab/output/output_directory.hpp"
 #include <yaml-cpp/yaml.h>
 
 namespace {

@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/plugin_search.hpp"
-#include "frictionlab/registry.hpp"
-#include "frictionlab/scene.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/plugins/search.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/scene/scene.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 namespace {

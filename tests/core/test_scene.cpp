@@ -1,4 +1,4 @@
-#include "frictionlab/scene.hpp"
+#include "frictionlab/scene/scene.hpp"
 
 #include <filesystem>
 #include <random>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/registry.hpp"
 #include "test_scene_types.hpp"
 
 namespace frictionlab {

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/registry.hpp"
-#include "frictionlab/scene.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/scene/scene.hpp"
 #include "test_scene_types.hpp"
 
 namespace frictionlab {

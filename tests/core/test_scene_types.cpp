@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/kinds.hpp"
+#include "frictionlab/model/kinds.hpp"
 
 namespace frictionlab::testing {
 

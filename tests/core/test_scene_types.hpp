@@ -3,7 +3,7 @@
 // cross-key rule, registered in-process for the scene tests.
 #include <string>
 
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 namespace frictionlab::testing {
 

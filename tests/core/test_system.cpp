@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/system.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 namespace {

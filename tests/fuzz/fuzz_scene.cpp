@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <string>
 
-#include "frictionlab/registry.hpp"
-#include "frictionlab/scene.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/scene/scene.hpp"
 #include "test_scene_types.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -10,8 +10,8 @@
 #include "cli.hpp"
 #include "csv.hpp"
 #include "scene_fixture.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/stability.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/stability.hpp"
 
 namespace frictionlab {
 namespace {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_fixture.hpp"
-#include "frictionlab/stability.hpp"
+#include "frictionlab/simulation/stability.hpp"
 
 namespace frictionlab {
 namespace {

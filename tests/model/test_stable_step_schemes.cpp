@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/stability.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/stability.hpp"
 #include "scene_fixture.hpp"
 
 namespace frictionlab {

@@ -10,9 +10,9 @@ foreach(file
     ${LIBDIR}/cmake/FrictionLab/FrictionLabConfigVersion.cmake
     ${LIBDIR}/cmake/FrictionLab/FrictionLabTargets.cmake
     ${LIBDIR}/cmake/FrictionLab/FrictionLabPlugin.cmake
-    ${INCLUDEDIR}/frictionlab/plugin.hpp
-    ${INCLUDEDIR}/frictionlab/registry.hpp
-    ${INCLUDEDIR}/frictionlab/plugin_search.hpp
+    ${INCLUDEDIR}/frictionlab/plugins/plugin.hpp
+    ${INCLUDEDIR}/frictionlab/plugins/registry.hpp
+    ${INCLUDEDIR}/frictionlab/plugins/search.hpp
     ${DATADIR}/frictionlab/plugin_template/CMakeLists.txt
     ${DATADIR}/frictionlab/plugin_template/max_speed_csv.cpp
     ${DATADIR}/frictionlab/plugin_template/README.md

@@ -1,6 +1,6 @@
 // PluginLibrary: the checks made before any C++ of a plugin runs. Every refusal names the file and
 // the reason, and leaves the registry that tried the load as it was.
-#include "frictionlab/plugin_library.hpp"
+#include "frictionlab/plugins/library.hpp"
 
 #include <unistd.h>
 

@@ -1,6 +1,6 @@
 // Plugin search: the order of the places (command line, scene, FRICTIONLAB_PLUGIN_PATH, shipped),
 // the environment value's parsing, the shipped directory next to the executable, and loading in order.
-#include "frictionlab/plugin_search.hpp"
+#include "frictionlab/plugins/search.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Registry::load and load_directory: a good plugin's types are listed with their library and made
 // through the registry; duplicate names and failing register functions are refused whole.
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 #include <sstream>
 
@@ -8,9 +8,9 @@
 #include <spdlog/logger.h>
 #include <spdlog/sinks/ostream_sink.h>
 
-#include "frictionlab/quantities.hpp"
-#include "frictionlab/run.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/model/quantities.hpp"
+#include "frictionlab/simulation/run.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "test_support.hpp"
 #include "test_types.hpp"
 

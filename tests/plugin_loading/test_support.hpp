@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/registry.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 namespace frictionlab::test {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Reads a CsvTable back (comment lines, a header, numeric rows) as columns by name.
-#include "frictionlab/csv_columns.hpp"
+#include "frictionlab/output/csv_columns.hpp"
 
 namespace frictionlab::testing {
 

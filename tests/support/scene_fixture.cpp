@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "frictionlab/plugin_search.hpp"
+#include "frictionlab/plugins/search.hpp"
 
 #ifndef FRICTIONLAB_PLUGIN_DIR
 #error "the build passes FRICTIONLAB_PLUGIN_DIR, the build tree's plugin folder"

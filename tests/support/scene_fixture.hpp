@@ -7,9 +7,9 @@
 
 #include <spdlog/logger.h>
 
-#include "frictionlab/registry.hpp"
-#include "frictionlab/scene.hpp"
-#include "frictionlab/simulation.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/scene/scene.hpp"
+#include "frictionlab/simulation/simulation.hpp"
 
 namespace frictionlab::testing {
 

@@ -9,10 +9,10 @@
 
 #include <spdlog/logger.h>
 
-#include <frictionlab/quantities.hpp>
-#include <frictionlab/registry.hpp>
-#include <frictionlab/run.hpp>
-#include <frictionlab/system.hpp>
+#include <frictionlab/model/quantities.hpp>
+#include <frictionlab/plugins/registry.hpp>
+#include <frictionlab/simulation/run.hpp>
+#include <frictionlab/simulation/system.hpp>
 
 namespace fl = frictionlab;
 

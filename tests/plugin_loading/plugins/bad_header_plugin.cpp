@@ -1,7 +1,7 @@
 // A plugin whose entry point returns a header that the host must refuse, before calling any of its
 // C++. Which field is wrong is chosen by one compile definition (BREAK_*). Its register function
 // would add a type, so a host that called it anyway would be caught.
-#include "frictionlab/plugin.hpp"
+#include "frictionlab/plugins/plugin.hpp"
 #include "test_types.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 // DUPLICATE_FIRST_ADDS_LOADER: a loader is added before the duplicate, to show it is rolled back.
 // DUPLICATE_TWICE: the same type is added twice, the second time inside a try block that swallows
 // any exception, to show that a plugin cannot talk its way past the refusal.
-#include "frictionlab/plugin.hpp"
+#include "frictionlab/plugins/plugin.hpp"
 #include "test_types.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
 // A well-formed plugin: one observer and one loader.
-#include "frictionlab/plugin.hpp"
+#include "frictionlab/plugins/plugin.hpp"
 #include "test_types.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
 // A well-formed plugin whose name, version and one observer type come from compile definitions, so
 // several plugins of a directory (and a same-named one elsewhere) are built from this file.
-#include "frictionlab/plugin.hpp"
+#include "frictionlab/plugins/plugin.hpp"
 #include "test_types.hpp"
 
 namespace {

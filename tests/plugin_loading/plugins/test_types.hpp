@@ -4,10 +4,10 @@
 #include <string>
 #include <string_view>
 
-#include "frictionlab/kinds.hpp"
-#include "frictionlab/param_spec.hpp"
-#include "frictionlab/registry.hpp"
-#include "frictionlab/run.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/run.hpp"
 
 namespace frictionlab::test {
 

@@ -1,7 +1,7 @@
 // A register function that adds a type, then throws: nothing of it may stay registered.
 #include <stdexcept>
 
-#include "frictionlab/plugin.hpp"
+#include "frictionlab/plugins/plugin.hpp"
 #include "test_types.hpp"
 
 namespace {

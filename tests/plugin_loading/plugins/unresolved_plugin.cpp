@@ -1,7 +1,7 @@
 // Links only without -z defs: it calls a function nobody defines, so dlopen(RTLD_NOW) must fail
 // with the missing symbol instead of crashing when the function is first called.
-#include "frictionlab/plugin.hpp"
-#include "frictionlab/registry.hpp"
+#include "frictionlab/plugins/plugin.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 extern "C" void frictionlab_test_function_nobody_defines();
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "chain_fixture.hpp"
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 namespace {

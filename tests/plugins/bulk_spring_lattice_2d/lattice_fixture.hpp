@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/state.hpp"
 #include "plugin_test_support.hpp"
 #include "spring_lattice_2d.hpp"
 

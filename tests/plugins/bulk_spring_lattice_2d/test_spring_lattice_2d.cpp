@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 #include "lattice_fixture.hpp"
 
 namespace frictionlab {

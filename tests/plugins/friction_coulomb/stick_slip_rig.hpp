@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "frictionlab/body.hpp"
-#include "frictionlab/stage.hpp"
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/body.hpp"
+#include "frictionlab/model/stage.hpp"
+#include "frictionlab/model/state.hpp"
 
 #include "plugin_test_support.hpp"
 #include "stick_slip_law.hpp"

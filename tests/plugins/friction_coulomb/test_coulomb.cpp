@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 
 #include "coulomb.hpp"
 #include "stick_slip_rig.hpp"

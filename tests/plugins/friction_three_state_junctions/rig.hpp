@@ -7,11 +7,11 @@
 
 #include <spdlog/logger.h>
 
-#include "frictionlab/body.hpp"
-#include "frictionlab/context.hpp"
-#include "frictionlab/quantities.hpp"
-#include "frictionlab/stage.hpp"
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/body.hpp"
+#include "frictionlab/model/context.hpp"
+#include "frictionlab/model/quantities.hpp"
+#include "frictionlab/model/stage.hpp"
+#include "frictionlab/model/state.hpp"
 
 #include "three_state_junctions.hpp"
 

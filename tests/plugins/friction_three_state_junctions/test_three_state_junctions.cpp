@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/random.hpp"
-#include "frictionlab/registry.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/random.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 #include "rig.hpp"
 

@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/body.hpp"
-#include "frictionlab/context.hpp"
-#include "frictionlab/quantities.hpp"
-#include "frictionlab/stage.hpp"
-#include "frictionlab/state.hpp"
+#include "frictionlab/model/body.hpp"
+#include "frictionlab/model/context.hpp"
+#include "frictionlab/model/quantities.hpp"
+#include "frictionlab/model/stage.hpp"
+#include "frictionlab/model/state.hpp"
 
 #include "two_state_junctions.hpp"
 

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "dormand_prince.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "oscillator.hpp"
 
 namespace frictionlab {

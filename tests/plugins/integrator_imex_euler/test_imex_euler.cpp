@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/stability.hpp"
+#include "frictionlab/simulation/stability.hpp"
 #include "imex_euler.hpp"
 #include "load_point.hpp"
 #include "oscillator.hpp"

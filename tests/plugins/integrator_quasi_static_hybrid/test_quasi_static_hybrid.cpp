@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/effect.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/model/effect.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "oscillator.hpp"
 #include "quasi_static_hybrid.hpp"
 

@@ -6,7 +6,7 @@
 #include <spdlog/logger.h>
 
 #include "oscillator.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "rk4.hpp"
 
 namespace frictionlab {

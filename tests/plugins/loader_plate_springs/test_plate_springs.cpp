@@ -4,7 +4,7 @@
 
 #include "chain_1d.hpp"
 #include "driving_spring.hpp"
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 #include "plate_springs.hpp"
 #include "bulk_at_rest.hpp"
 #include "spring_lattice_2d.hpp"

@@ -1,7 +1,7 @@
 // Compression-only base contact of Li2020 Eq. 5 (theory.md B.5).
 #include <gtest/gtest.h>
 
-#include "frictionlab/errors.hpp"
+#include "frictionlab/base/errors.hpp"
 #include "plugin_test_support.hpp"
 #include "rigid_base_contact.hpp"
 #include "spring_lattice_2d.hpp"

@@ -10,8 +10,8 @@
 #include <spdlog/logger.h>
 
 #include "contact_area.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "csv.hpp"
 #include "energy_balance.hpp"
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 namespace {

@@ -13,11 +13,11 @@
 #include "cli.hpp"
 #include "csv.hpp"
 #include "scene_fixture.hpp"
-#include "frictionlab/plugin_search.hpp"
-#include "frictionlab/registry.hpp"
-#include "frictionlab/run.hpp"
-#include "frictionlab/scene.hpp"
-#include "frictionlab/simulation.hpp"
+#include "frictionlab/plugins/search.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/run.hpp"
+#include "frictionlab/scene/scene.hpp"
+#include "frictionlab/simulation/simulation.hpp"
 
 namespace frictionlab {
 namespace {

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "precursors.hpp"
 
 namespace frictionlab {

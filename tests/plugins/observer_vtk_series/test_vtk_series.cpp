@@ -25,9 +25,9 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include "frictionlab/errors.hpp"
-#include "frictionlab/registry.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "vtk_series.hpp"
 
 namespace frictionlab {

@@ -1,7 +1,7 @@
 #pragma once
 // A bulk model built on test-owned services, with a state vector at its reference positions, for
 // tests that evaluate single effects (loaders, springs) on it.
-#include "frictionlab/effect.hpp"
+#include "frictionlab/model/effect.hpp"
 #include "plugin_test_support.hpp"
 
 namespace frictionlab::test_support {

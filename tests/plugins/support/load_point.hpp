@@ -2,7 +2,7 @@
 // A spring-slider's loading point for friction-law and integrator tests.
 #include <string>
 
-#include "frictionlab/effect.hpp"
+#include "frictionlab/model/effect.hpp"
 
 namespace frictionlab::test_support {
 

@@ -10,8 +10,8 @@
 #include <memory>
 #include <utility>
 
-#include "frictionlab/effect.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/model/effect.hpp"
+#include "frictionlab/simulation/system.hpp"
 #include "plugin_test_support.hpp"
 
 namespace frictionlab::test_support {

@@ -8,8 +8,8 @@
 
 #include <spdlog/logger.h>
 
-#include "frictionlab/context.hpp"
-#include "frictionlab/system.hpp"
+#include "frictionlab/model/context.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab::test_support {
 

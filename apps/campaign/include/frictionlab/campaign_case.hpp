@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "frictionlab/run.hpp"
-#include "frictionlab/scene.hpp"
+#include "frictionlab/simulation/run.hpp"
+#include "frictionlab/scene/scene.hpp"
 
 namespace frictionlab {
 

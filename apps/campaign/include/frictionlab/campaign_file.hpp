@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "frictionlab/diagnostics.hpp"
+#include "frictionlab/base/diagnostics.hpp"
 
 namespace frictionlab {
 

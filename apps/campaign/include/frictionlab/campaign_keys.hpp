@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/param_spec.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab::detail {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "frictionlab/scene.hpp"
+#include "frictionlab/scene/scene.hpp"
 
 namespace frictionlab {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/diagnostics.hpp"
-#include "frictionlab/scene.hpp"
+#include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/scene/scene.hpp"
 
 namespace frictionlab {
 

@@ -11,7 +11,7 @@
 
 #include <spdlog/logger.h>
 
-#include "frictionlab/run.hpp"
+#include "frictionlab/simulation/run.hpp"
 #include "frictionlab/study.hpp"
 #include "frictionlab/study_metrics.hpp"
 

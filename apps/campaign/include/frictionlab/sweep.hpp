@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "frictionlab/campaign_case.hpp"
-#include "frictionlab/diagnostics.hpp"
-#include "frictionlab/scene.hpp"
+#include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/scene/scene.hpp"
 
 namespace frictionlab {
 

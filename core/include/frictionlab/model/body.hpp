@@ -1,0 +1,38 @@
+#pragma once
+// What a bulk model exposes to loaders, friction laws and observers: reference geometry, masses,
+// named node sets and the connectivity for pictures. Loaders and friction laws address nodes only
+// through node sets, so they work on any bulk model that provides the sets they need.
+//
+// Standard node sets (share/docs/glossary.md): "all", "top", "interface" (bottom row, in contact with the
+// base, ordered by increasing x), "trailing_edge" (x = 0 column, ordered by increasing z),
+// "leading_edge" (x = L column, ordered by increasing z).
+#include <array>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frictionlab/model/state.hpp"
+
+namespace frictionlab {
+
+using NodeSet = std::vector<Index>;
+
+struct Body {
+    Eigen::ArrayXd x0, z0;  // reference (undeformed) positions [nnode], m
+    Eigen::ArrayXd mass;    // [nnode], kg
+    double length = 0, height = 0, width = 0;  // L (x), H (z), B (y), m
+    double spacing = 0;                        // rest spacing of neighbouring nodes l_s, m
+    /// Stiffness K of the bulk's nearest-neighbour springs (N/m): boundary effects that the model
+    /// defines relative to it (the paper's base contact K_b = K/2) read it from here.
+    double bond_stiffness = 0;
+    std::map<std::string, NodeSet, std::less<>> node_sets;
+    std::vector<std::array<Index, 2>> bonds;  // springs, for pictures and bond-force output
+    std::vector<std::array<Index, 4>> cells;  // quads, counter-clockwise; empty for a chain
+
+    Index size() const { return x0.size(); }
+    /// The named set; throws InputError listing the available sets if there is none.
+    const NodeSet& nodes(std::string_view set) const;
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,39 @@
+#pragma once
+// The junction counts per interface block that a friction law with junctions publishes (glossary:
+// junctions_pinned, junctions_sliding, junctions_dislocated over "interface"). Every observer that
+// reads them finds and checks them here, so the names and the checks exist once.
+#include <limits>
+#include <optional>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "frictionlab/model/quantities.hpp"
+#include "frictionlab/model/state.hpp"
+
+namespace frictionlab {
+
+struct JunctionCounts {
+    static constexpr std::string_view pinned_name = "junctions_pinned";
+    static constexpr std::string_view sliding_name = "junctions_sliding";
+    static constexpr std::string_view dislocated_name = "junctions_dislocated";
+
+    const Eigen::ArrayXd* pinned = nullptr;      // N_p per block
+    const Eigen::ArrayXd* sliding = nullptr;     // N_s per block
+    const Eigen::ArrayXd* dislocated = nullptr;  // N_d per block
+
+    /// The three fields, each over "interface" with `blocks` values. Throws RunError naming the
+    /// first missing (or mis-shaped) field and `needed_by`, e.g. "precursors (criterion
+    /// 'pinned_fraction')", so the user learns which friction law the scene lacks and who needs it.
+    static JunctionCounts require(const Quantities& q, Index blocks, std::string_view needed_by);
+    /// The same for observers that only use the counts when the scene has them.
+    static std::optional<JunctionCounts> find(const Quantities& q, Index blocks);
+
+    /// N_p / (N_p + N_s + N_d) of block b; NaN for a block without junctions (detached).
+    double pinned_fraction(Index b) const {
+        const double all = (*pinned)(b) + (*sliding)(b) + (*dislocated)(b);
+        return all > 0 ? (*pinned)(b) / all : std::numeric_limits<double>::quiet_NaN();
+    }
+};
+
+}  // namespace frictionlab

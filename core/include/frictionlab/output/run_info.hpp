@@ -1,0 +1,22 @@
+#pragma once
+// The facts every output of a run records, whichever writer writes it.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "frictionlab/plugins/library.hpp"
+
+namespace frictionlab {
+
+/// Facts every output records (brief: version, scene hash, seed, plugins used).
+struct RunInfo {
+    std::string framework_version;
+    std::filesystem::path scene_file;
+    std::string scene_hash;
+    std::uint64_t seed = 0;
+    std::vector<PluginRecord> plugins;  // the libraries that provide the scene's types
+    std::string resolved_scene;         // YAML, every default written out
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,48 @@
+#pragma once
+// Where an observer's table goes, whatever its format: one row of numbers per call, in the column
+// order given when it was opened. Observers open tables through open_table() and never see the
+// format, which the scene chooses per observer (`format: csv` or `format: hdf5`).
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/output/run_info.hpp"
+
+namespace frictionlab {
+
+class TableWriter {
+public:
+    virtual ~TableWriter();
+    /// One row, as many values as columns; throws RunError if it cannot be written.
+    virtual void row(const std::vector<double>& values) = 0;
+    const std::filesystem::path& file() const { return file_; }
+
+protected:
+    explicit TableWriter(std::filesystem::path file) : file_(std::move(file)) {}
+    std::filesystem::path file_;
+};
+
+enum class TableFormat { csv, hdf5 };
+
+/// The names a scene may give: what an observer's `format` parameter accepts.
+const std::vector<std::string>& table_format_names();
+/// "csv" or "hdf5"; throws InputError otherwise (the scene has already checked it).
+TableFormat table_format(std::string_view name);
+
+/// Opens a table at `file` (e.g. out/interface_velocity.csv); in HDF5 its extension becomes .h5.
+std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
+                                        const RunInfo& info, TableFormat format);
+
+/// Declares an observer's `format` parameter (csv or hdf5), the same for every observer with tables.
+template <class P>
+void add_table_format_param(ParamSpec<P>& spec, std::string P::*member) {
+    spec.add("format", member,
+             "Format of the tables: csv (one header line, provenance in NAME.csv.meta.yaml) or hdf5 (NAME.h5, "
+             "chunked and compressed, provenance as attributes).")
+        .one_of(table_format_names());
+}
+
+}  // namespace frictionlab

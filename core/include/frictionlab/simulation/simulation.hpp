@@ -1,0 +1,92 @@
+#pragma once
+// A scene assembled into a runnable system: the components built through the registry, the force
+// pipeline in evaluation order (bulk effects, loaders, friction law), the integrator. It knows
+// nothing of outputs; run_scene() drives it with observers, and tests and benchmarks drive it
+// directly.
+#include <memory>
+#include <vector>
+
+#include <spdlog/logger.h>
+
+#include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/kinds.hpp"
+#include "frictionlab/model/quantities.hpp"
+#include "frictionlab/simulation/run.hpp"
+#include "frictionlab/scene/scene.hpp"
+#include "frictionlab/simulation/system.hpp"
+
+namespace frictionlab {
+
+class Registry;
+
+/// Runs `make`, which builds the scene component `c`, and reports a refusal it throws (InputError)
+/// at the component's place in the scene: "scene.yaml:16:5: error: loaders[2]: ...". Components
+/// can only judge some set-ups once built (a driving point between node rows, say).
+template <class Make>
+auto located_in_scene(const ComponentSpec& c, Make&& make) -> decltype(make()) {
+    try {
+        return make();
+    } catch (const InputError& e) {
+        throw InputError(Diagnostic{c.where, c.path, e.what()}.format());
+    }
+}
+
+class Simulation {
+public:
+    /// Builds every component of the scene (not its observers). A component that refuses its
+    /// parameters throws InputError.
+    Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log);
+    ~Simulation();
+
+    System& system() { return *system_; }
+    const System& system() const { return *system_; }
+    Integrator& integrator() { return *integrator_; }
+    Quantities& quantities() { return quantities_; }
+    /// Version, scene hash, seed and the plugins that provide the scene's components.
+    const RunInfo& info() const { return info_; }
+    const Scene& scene() const { return scene_; }
+    /// A context for components built later against this simulation (observers).
+    Context context(const std::string& name);
+
+    /// Starts stage `index` of the scene at the current time and logs its pipeline. Estimates the
+    /// stable step of the stage's pipeline (stability.hpp) and throws InputError, naming the limit
+    /// and the effect that sets it, if the integrator's step is above it, unless told not to.
+    StageInfo begin_stage(std::size_t index);
+    /// Whether begin_stage refuses a step above the estimated stable step (default) or only warns.
+    void refuse_unstable_steps(bool refuse) { refuse_unstable_ = refuse; }
+    /// One integrator step, no longer than max_dt. Throws RunError, naming the step, time, block
+    /// and quantity, if the state is no longer finite.
+    double step(double max_dt);
+    /// Whether the simulated time has reached t_end (to within round-off of the step sum).
+    bool reached(double t_end) const;
+    /// Steps until t_end (the last step shortened to land on it).
+    void advance_to(double t_end);
+
+    /// Every this many steps the state is checked for a runaway: a block farther than
+    /// runaway_factor times the slider's size from its reference position stops the run.
+    static constexpr long long runaway_check_interval = 8;
+    static constexpr double runaway_factor = 10.0;
+    /// A scene whose stages need more steps than this is refused before it starts: a step or a
+    /// duration off by orders of magnitude (15 days at the baseline's 76,000 steps per second).
+    static constexpr double most_steps = 1e11;
+
+private:
+    void check_bounded() const;
+    void check_step_count() const;
+    void check_stability(const StageInfo& stage);
+    void record_plugin(const ComponentSpec& component, Kind kind);
+
+    const Scene& scene_;
+    const Registry& registry_;
+    spdlog::logger& log_;
+    RunInfo info_;
+    Quantities quantities_;
+    AuxAllocator aux_;
+    std::unique_ptr<BulkModel> bulk_;  // owns the Body the system refers to: declared first
+    std::unique_ptr<Integrator> integrator_;
+    std::unique_ptr<System> system_;
+    bool refuse_unstable_ = true;
+};
+
+}  // namespace frictionlab

@@ -1,0 +1,147 @@
+#pragma once
+// The assembled system: state vector, masses and the force pipeline. Integrators drive it through
+// derivative(), begin_step() and accept(); the run drives stages and observation.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "frictionlab/model/body.hpp"
+#include "frictionlab/model/effect.hpp"
+#include "frictionlab/model/stage.hpp"
+#include "frictionlab/model/state.hpp"
+
+namespace frictionlab {
+
+class System {
+public:
+    System(const Body& body, Index aux_size);
+
+    /// Adds an effect to the pipeline, active in the named stages only (empty: in every stage).
+    /// Effects are evaluated in the order added. `label` names it in outputs (default: its key(),
+    /// else "effect_<n>"); a label already taken gets a suffix "_2", "_3", ... The parts of a
+    /// composite effect (Effect::parts()) are labelled by their own key().
+    void add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in = {}, std::string label = {});
+    /// The output label of every part, in the order of for_each_effect().
+    const std::vector<std::string>& labels() const { return labels_; }
+
+    const Body& body() const { return body_; }
+    const StateLayout& layout() const { return layout_; }
+    double time() const { return t_; }
+    long long step_index() const { return steps_; }
+    const Eigen::VectorXd& y() const { return y_; }
+    StageView state() const { return view_of(y_, layout_, t_); }
+    /// Initial conditions before the first stage (positions default to the reference ones).
+    Eigen::VectorXd& initial_state() { return y_; }
+
+    /// dy/dt at (t, y): [v | F/m | aux rates]. Pure in (t, y) given the frozen discrete state.
+    /// `work_weight` is this evaluation's weight in the integrator's quadrature of the step (RK4:
+    /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
+    /// to its work with that weight, so the work is integrated to the integrator's own order.
+    void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
+    /// The rest of dy/dt after the velocities before the division by the masses: [F | aux rates],
+    /// the forces in N, layout().size() - 2N values. For integrators that read the velocities from y
+    /// and divide by the masses (inverse_mass()) within their own pass over the rates (RK4's fused
+    /// stages); F_i * inverse_mass()(i) is exactly what derivative() gives. Counts as an evaluation.
+    void forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight = 0);
+    /// 1/m of every node.
+    const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
+    /// dy/dt with only one active part of the pipeline (index into pipeline()), for diagnostics
+    /// such as the stability estimate that names the effect limiting the step.
+    void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
+    /// The x-forces and the diagonal d(fx)/d(vx) (both [nodes]) of the active effects whose velocity
+    /// dependence is local (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats
+    /// that dependence implicitly solves with. False, and both zero, when no effect has one. Effects
+    /// read the quantities others published in the last derivative() (a friction law reads the base
+    /// contact's normal force), so call it at the positions of that evaluation.
+    bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx);
+    /// Whether an active part (index into pipeline()) has a local velocity Jacobian.
+    bool has_velocity_jacobian(std::size_t active_index) const {
+        return parts_.at(active_parts_.at(active_index))->has_velocity_jacobian();
+    }
+    void begin_step();
+    /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
+    void accept(double t, const Eigen::VectorXd& y);
+    /// accept(t, y) that takes y's storage instead of copying it: y is left holding the previous
+    /// accepted state (for integrators that overwrite their stage vector at the next step anyway).
+    void accept_swap(double t, Eigen::VectorXd& y);
+    double next_event_time() const;
+
+    /// Quasi-static solving (Effect::quasi_static_regime): whether every active effect is in its
+    /// quasi-static regime at s; the stiffness K = -dF/dq ([x | z], 2N x 2N) of the active effects
+    /// at s, assembled into `stiffness` (its pattern kept when unchanged); and the earliest event
+    /// they foresee if the nodes move on at the velocities of s.
+    bool quasi_static_regime(const StageView& s) const;
+    void assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness);
+    double foreseen_event_time(const StageView& s) const;
+    /// The forces [fx | fz | aux rates] at (t, y), as forces(), without counting an evaluation or
+    /// adding work: for solvers that evaluate the pipeline outside a time step (a quiet phase).
+    void static_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f) { compute_forces(t, y, f, 0); }
+    /// Adds work to each active effect as the trapezoid rule over a straight path from the accepted
+    /// state to y1 (positions q0 -> q1 in time h at the constant velocity (q1 - q0)/h), with the
+    /// frozen discrete state: how a quiet phase keeps the energy balance (work accounting only).
+    void add_straight_path_work(double t1, const Eigen::VectorXd& y1);
+
+    void begin_stage(const StageInfo& stage);
+    /// Evaluates every active effect at the accepted state, so published quantities and net_force()
+    /// describe it (observers call this; its cost is proportional to their cadence).
+    void refresh();
+    /// Net force on every node at the last refresh(): [fx (N) | fz (N)].
+    const Eigen::VectorXd& net_force() const { return net_force_; }
+    /// describe() of every part active in the current stage, in evaluation order.
+    std::vector<std::string> pipeline() const;
+    /// Visits every part of the pipeline (active or not; a composite effect's parts one by one), e.g.
+    /// to set initial aux values or to book each physical effect's energy.
+    template <class F>
+    void for_each_effect(F&& visit) const {
+        for (const Effect* part : parts_) visit(*part);
+    }
+    /// Work accounting (energy bookkeeping) evaluates every part once more, alone, to know its
+    /// power, so it is off unless an observer asks for it. The state advances with the forces summed
+    /// exactly as without accounting (composites in their one pass): switching it on changes no result.
+    void enable_work_accounting();
+    bool work_accounting() const { return !work_.empty(); }
+    /// Work (J) each part of the pipeline has done on the nodes since accounting began, in the
+    /// order of for_each_effect(); empty without accounting.
+    const std::vector<double>& work() const { return work_; }
+    /// Number of derivative evaluations the integrator asked for so far: the cost of the time
+    /// stepping (refresh() for observers is not counted).
+    long long evaluations() const { return evaluations_; }
+
+private:
+    /// derivative() without counting an evaluation (refresh() uses it).
+    void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
+    /// forces() without counting an evaluation.
+    void compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
+    /// Makes the effects active in `stage` (every effect if none) the pipeline.
+    void activate(const StageInfo* stage);
+    /// Forces to accelerations, F/m.
+    void divide_by_mass(ForceView& f) const;
+    /// After the accepted state is in y_: time, work and the effects' commits for the step to t.
+    void commit_step(double t);
+    /// Adds the work of part `part` (index into parts_) over this evaluation, with the quadrature weight.
+    void add_work(std::size_t part, const StageView& s, double weight);
+
+    struct Slot {
+        std::unique_ptr<Effect> effect;
+        std::vector<std::string> active_in;
+        std::size_t first_part, part_count;  // its parts: parts_[first_part, first_part + part_count)
+    };
+    const Body& body_;
+    StateLayout layout_;
+    Eigen::ArrayXd inverse_mass_;
+    std::vector<Slot> slots_;
+    std::vector<Effect*> parts_;  // every slot's parts (the effect itself if it has none), slot order
+    std::vector<std::string> labels_;           // per part
+    std::vector<const Slot*> active_;           // the current stage's pipeline, evaluation order
+    std::vector<std::size_t> active_parts_;     // indices into parts_ of the active slots' parts
+    Eigen::VectorXd y_, scratch_, net_force_;
+    std::vector<double> work_, pending_work_;  // per part; pending = this step's, until accepted
+    Eigen::VectorXd effect_force_;              // one part's [fx | fz | aux rate], accounting only
+    Eigen::VectorXd local_scratch_;             // forces of the effects local in velocity
+    std::vector<Eigen::Triplet<double>> triplets_;  // stiffness assembly scratch
+    Eigen::VectorXd path_state_;                    // straight-path work scratch
+    double t_ = 0;
+    long long steps_ = 0, evaluations_ = 0;
+};
+
+}  // namespace frictionlab

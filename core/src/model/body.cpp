@@ -1,0 +1,14 @@
+#include "frictionlab/model/body.hpp"
+
+#include "frictionlab/base/errors.hpp"
+
+namespace frictionlab {
+
+const NodeSet& Body::nodes(std::string_view set) const {
+    if (auto it = node_sets.find(set); it != node_sets.end()) return it->second;
+    std::string known;
+    for (const auto& [name, nodes] : node_sets) known += (known.empty() ? "" : ", ") + name;
+    throw InputError("the bulk model has no node set '" + std::string(set) + "' (it has: " + known + ")");
+}
+
+}  // namespace frictionlab

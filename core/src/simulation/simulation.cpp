@@ -1,0 +1,181 @@
+#include "frictionlab/simulation/simulation.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#include <fmt/format.h>
+
+#include "frictionlab/base/version.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/hot_kernel.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/stability.hpp"
+
+namespace frictionlab {
+
+namespace {
+/// Where the first non-finite value of the state is, said in the physics' terms.
+std::string locate_non_finite(const System& sys) {
+    const StageView s = sys.state();
+    const std::pair<const char*, const Eigen::Map<const Eigen::ArrayXd>*> arrays[] = {
+        {"x", &s.x}, {"z", &s.z}, {"vx", &s.vx}, {"vz", &s.vz}};
+    for (const auto& [name, values] : arrays)
+        for (Index i = 0; i < values->size(); ++i)
+            if (!std::isfinite((*values)(i))) return fmt::format("{} of block {} is {}", name, i, (*values)(i));
+    for (Index i = 0; i < s.aux.size(); ++i)
+        if (!std::isfinite(s.aux(i))) return fmt::format("auxiliary variable {} is {}", i, s.aux(i));
+    return "a value is not finite";
+}
+
+/// Whether every value of y is finite: none has an all-ones exponent (NaN, infinity). Adding 1 to
+/// the exponent field carries into the sign bit exactly then; integer and, add and or make one
+/// vectorised pass with no branch, where allFinite() tests value by value.
+FRICTIONLAB_HOT_KERNEL
+bool all_finite(const double* __restrict y, Index n) {
+    constexpr std::uint64_t exponent = 0x7ff0'0000'0000'0000, exponent_one = 0x0010'0000'0000'0000;
+    std::uint64_t carries = 0;
+    for (Index i = 0; i < n; ++i) carries |= (std::bit_cast<std::uint64_t>(y[i]) & exponent) + exponent_one;
+    return (carries >> 63) == 0;
+}
+}  // namespace
+
+Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
+    : scene_(scene), registry_(registry), log_(log) {
+    info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml};
+    bulk_ = located_in_scene(scene.bulk, [&] {
+        return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk"));
+    });
+    record_plugin(scene.bulk, Kind::bulk_model);
+
+    struct Pending {
+        std::unique_ptr<Effect> effect;
+        std::vector<std::string> stages;
+        std::string label;
+    };
+    std::vector<Pending> effects;
+    for (auto& e : bulk_->effects(context("bulk"))) effects.push_back({std::move(e), {}, {}});
+    // Loaders come before the friction law: it reads the normal force the base contact publishes.
+    for (const auto& l : scene.loaders) {
+        auto loader = located_in_scene(l, [&] { return registry.create<Loader>(l.type, l.values, context(l.path)); });
+        effects.push_back({std::move(loader), l.stages, l.type});
+        record_plugin(l, Kind::loader);
+    }
+    if (scene.friction) {
+        const auto& f = *scene.friction;
+        auto law = located_in_scene(f, [&] { return registry.create<FrictionLaw>(f.type, f.values, context(f.path)); });
+        effects.push_back({std::move(law), {}, f.type});
+        record_plugin(f, Kind::friction_law);
+    }
+    integrator_ = located_in_scene(scene.integrator, [&] {
+        return registry.create<Integrator>(scene.integrator.type, scene.integrator.values, context("integrator"));
+    });
+    record_plugin(scene.integrator, Kind::integrator);
+    for (const auto& o : scene.observers) record_plugin(o, Kind::observer);
+
+    system_ = std::make_unique<System>(bulk_->body(), aux_.count);
+    for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages), std::move(e.label));
+    Eigen::VectorXd& y = system_->initial_state();
+    Eigen::Ref<Eigen::ArrayXd> aux = y.tail(system_->layout().aux).array();
+    system_->for_each_effect([&](const Effect& e) { e.initialise_aux(aux); });
+    check_step_count();
+}
+
+void Simulation::check_step_count() const {
+    const double dt = integrator_->nominal_dt();
+    double steps = 0, duration = 0;
+    for (const auto& stage : scene_.stages) steps += std::ceil(stage.duration / dt), duration += stage.duration;
+    if (steps <= most_steps) return;
+    throw InputError(Diagnostic{scene_.integrator.where, "integrator",
+                                fmt::format("{:.3g} s of stages at dt = {:.3g} s is {:.3g} steps, more than the {:.0e} "
+                                            "a run may take: a step or a stage duration is off by orders of magnitude",
+                                            duration, dt, steps, most_steps)}
+                         .format());
+}
+
+Simulation::~Simulation() = default;
+
+Context Simulation::context(const std::string& name) {
+    return Context{log_, scene_.seed, bulk_ ? &bulk_->body() : nullptr, &quantities_, &aux_, name};
+}
+
+void Simulation::record_plugin(const ComponentSpec& component, Kind kind) {
+    const TypeInfo* t = registry_.find(kind, component.type);
+    if (!t || t->library.empty()) return;
+    for (const auto& p : info_.plugins)
+        if (p.file == t->library) return;
+    for (const auto& p : registry_.plugins())
+        if (p.file == t->library) info_.plugins.push_back(p);
+}
+
+StageInfo Simulation::begin_stage(std::size_t index) {
+    const StageSpec& spec = scene_.stages.at(index);
+    StageInfo stage{spec.name, static_cast<int>(index), system_->time(), spec.duration, spec.friction_events};
+    system_->begin_stage(stage);
+    log_.info("stage {} '{}': {:.6g} s from t = {:.6g} s, friction events {}", stage.index + 1, stage.name,
+              stage.duration, stage.t_start, stage.friction_events ? "on" : "off");
+    for (const auto& e : system_->pipeline()) log_.info("  effect: {}", e);
+    check_stability(stage);
+    return stage;
+}
+
+void Simulation::check_stability(const StageInfo& stage) {
+    const double radius = integrator_->stability_radius(), dt = integrator_->nominal_dt();
+    if (!std::isfinite(radius)) return;
+    const StabilityEstimate e = estimate_stable_step(*system_, *integrator_);
+    if (!std::isfinite(e.lambda_max) || !(e.dt_limit > 0)) {
+        // A degenerate system (a mass of 1e-300 kg, an infinite stiffness) has no stable step to name.
+        const std::string message = fmt::format(
+            "stage '{}': the stable time step cannot be estimated: the linearised system's largest |eigenvalue| is "
+            "{} 1/s (set by {}), so some mass is too small or some stiffness or damping too large for double "
+            "precision; check the bulk's density and size and the loaders' stiffnesses",
+            stage.name, e.lambda_max, e.limiting_effect.empty() ? "no single effect" : e.limiting_effect);
+        if (refuse_unstable_) throw InputError(message);
+        log_.warn("{}", message);
+        return;
+    }
+    log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s",
+              e.dt_limit, e.lambda_max, e.limiting_effect, dt);
+    if (dt <= e.dt_limit) return;
+    const std::string message = fmt::format(
+        "stage '{}': the time step dt = {:.3g} s is above the estimated stable step {:.3g} s of the {} integrator "
+        "for this system (largest |eigenvalue| {:.3g} 1/s, which times dt must stay below {:.4g}); the limit is set by "
+        "{} (alone: {:.3g} 1/s). Use a smaller integrator.dt, or --allow-unstable-step to run anyway",
+        stage.name, dt, e.dt_limit, scene_.integrator.type, e.lambda_max, e.lambda_max * e.dt_limit, e.limiting_effect,
+        e.limiting_lambda);
+    if (refuse_unstable_) throw InputError(message);
+    log_.warn("{}", message);
+}
+
+double Simulation::step(double max_dt) {
+    const double dt = integrator_->step(*system_, max_dt);
+    if (!all_finite(system_->y().data(), system_->y().size()))
+        throw RunError(fmt::format("step {}, t = {:.9g} s: {}", system_->step_index(), system_->time(),
+                                   locate_non_finite(*system_)));
+    // A finite but exploding state (an unstable step) is caught long before it overflows.
+    if (system_->step_index() % runaway_check_interval == 0) check_bounded();
+    return dt;
+}
+
+void Simulation::check_bounded() const {
+    const StageView s = system_->state();
+    const Body& body = system_->body();
+    const double limit = runaway_factor * std::max(body.length, body.height);
+    Index node = 0;
+    const double dx = (s.x - body.x0).abs().max((s.z - body.z0).abs()).maxCoeff(&node);
+    if (dx > limit)
+        throw RunError(fmt::format("step {}, t = {:.9g} s: block {} has moved {:.3g} m from its reference position, "
+                                   "more than {} times the slider size: the run is unstable (time step too large?)",
+                                   system_->step_index(), system_->time(), node, dx, runaway_factor));
+}
+
+bool Simulation::reached(double t_end) const {
+    // Time is a sum of steps, so it may miss t_end by round-off; a millionth of a step is no step.
+    return t_end - system_->time() <= 1e-6 * integrator_->nominal_dt();
+}
+
+void Simulation::advance_to(double t_end) {
+    while (!reached(t_end)) step(t_end - system_->time());
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,222 @@
+#include "frictionlab/simulation/system.hpp"
+
+#include <algorithm>
+
+#include "frictionlab/base/hot_kernel.hpp"
+
+namespace frictionlab {
+
+namespace {
+/// f *= inverse_mass, node by node.
+FRICTIONLAB_HOT_KERNEL
+void scale(double* __restrict f, const double* __restrict inverse_mass, Index n) {
+    for (Index i = 0; i < n; ++i) f[i] *= inverse_mass[i];
+}
+}  // namespace
+
+System::System(const Body& body, Index aux_size)
+    : body_(body), layout_{body.size(), aux_size}, inverse_mass_(body.mass.inverse()) {
+    const Index n = layout_.nodes;
+    y_ = Eigen::VectorXd::Zero(layout_.size());
+    y_.segment(0, n) = body.x0.matrix();
+    y_.segment(n, n) = body.z0.matrix();
+    scratch_ = Eigen::VectorXd::Zero(layout_.size());
+    net_force_ = Eigen::VectorXd::Zero(2 * n);
+}
+
+void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in, std::string label) {
+    std::vector<Effect*> parts = effect->parts();
+    if (parts.empty()) parts = {effect.get()};
+    else label.clear();  // each part is labelled by its own key
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        std::string name = label.empty() ? parts[k]->key() : label;
+        if (name.empty()) name = "effect_" + std::to_string(parts_.size() + k);
+        const std::string base = name;
+        for (int n = 2; std::find(labels_.begin(), labels_.end(), name) != labels_.end(); ++n)
+            name = base + "_" + std::to_string(n);
+        labels_.push_back(std::move(name));
+        if (work_accounting()) work_.push_back(0), pending_work_.push_back(0);
+    }
+    slots_.push_back({std::move(effect), std::move(active_in), parts_.size(), parts.size()});
+    parts_.insert(parts_.end(), parts.begin(), parts.end());
+    activate(nullptr);
+}
+
+void System::enable_work_accounting() {
+    work_.assign(parts_.size(), 0.0);
+    pending_work_.assign(parts_.size(), 0.0);
+    effect_force_ = Eigen::VectorXd::Zero(layout_.size());
+}
+
+void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
+    evaluate(t, y, dy, work_weight);
+    ++evaluations_;
+}
+
+void System::evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
+    const Index n = layout_.nodes;
+    dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    compute_forces(t, y, dy.tail(layout_.size() - 2 * n), work_weight);
+    ForceView f = forces_of(dy, layout_);
+    divide_by_mass(f);
+}
+
+void System::forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
+    compute_forces(t, y, f, work_weight);
+    ++evaluations_;
+}
+
+void System::compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
+    a.setZero();
+    const StageView s = view_of(y, layout_, t);
+    ForceView f = forces_at(a.data(), layout_);
+    const bool accounting = work_accounting() && work_weight != 0;
+    for (const Slot* slot : active_) {
+        if (accounting)
+            for (std::size_t k = slot->first_part; k < slot->first_part + slot->part_count; ++k)
+                add_work(k, s, work_weight);
+        slot->effect->add_forces(s, f);
+    }
+}
+
+void System::add_work(std::size_t part, const StageView& s, double weight) {
+    // The part alone into a scratch vector, to know its power F_e . v at this stage. The forces
+    // that move the state are summed apart, as without accounting, so accounting changes no result.
+    const Index n = layout_.nodes;
+    effect_force_.tail(layout_.size() - 2 * n).setZero();
+    ForceView fe = forces_of(effect_force_, layout_);
+    parts_[part]->add_forces(s, fe);
+    const Eigen::Map<const Eigen::VectorXd> velocity(s.vx.data(), 2 * n);  // [vx | vz]
+    pending_work_[part] += weight * effect_force_.segment(2 * n, 2 * n).dot(velocity);
+}
+
+void System::effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+    const Index n = layout_.nodes;
+    dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    dy.tail(layout_.size() - 2 * n).setZero();
+    ForceView f = forces_of(dy, layout_);
+    parts_.at(active_parts_.at(active_index))->add_forces(view_of(y, layout_, t), f);
+    divide_by_mass(f);
+}
+
+void System::divide_by_mass(ForceView& f) const {
+    scale(f.fx.data(), inverse_mass_.data(), layout_.nodes);
+    scale(f.fz.data(), inverse_mass_.data(), layout_.nodes);
+}
+
+bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx) {
+    const Index n = layout_.nodes;
+    fx.setZero(n);
+    dfx_dvx.setZero(n);
+    if (local_scratch_.size() != layout_.size()) local_scratch_.resize(layout_.size());
+    local_scratch_.setZero();
+    const StageView s = view_of(y, layout_, t);
+    ForceView f = forces_of(local_scratch_, layout_);
+    bool any = false;
+    for (const std::size_t k : active_parts_) {
+        Effect* e = parts_[k];
+        if (!e->has_velocity_jacobian()) continue;
+        any = true;
+        e->add_forces(s, f);
+        e->add_velocity_jacobian(s, dfx_dvx);
+    }
+    fx = f.fx;
+    return any;
+}
+
+void System::begin_step() {
+    std::fill(pending_work_.begin(), pending_work_.end(), 0.0);
+    const StageView s = state();
+    for (const Slot* slot : active_) slot->effect->begin_step(s);
+}
+
+void System::accept(double t, const Eigen::VectorXd& y) {
+    y_ = y;
+    commit_step(t);
+}
+
+void System::accept_swap(double t, Eigen::VectorXd& y) {
+    y_.swap(y);
+    commit_step(t);
+}
+
+void System::commit_step(double t) {
+    const double dt = t - t_;
+    t_ = t;
+    ++steps_;
+    for (std::size_t k = 0; k < work_.size(); ++k) work_[k] += pending_work_[k];
+    const StageView s = state();
+    for (const Slot* slot : active_) slot->effect->commit(s, dt);
+}
+
+double System::next_event_time() const {
+    double next = std::numeric_limits<double>::infinity();
+    for (const Slot* slot : active_) next = std::min(next, slot->effect->next_event_time());
+    return next;
+}
+
+bool System::quasi_static_regime(const StageView& s) const {
+    for (const Slot* slot : active_)
+        if (!slot->effect->quasi_static_regime(s)) return false;
+    return true;
+}
+
+void System::assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness) {
+    triplets_.clear();
+    for (const Slot* slot : active_) slot->effect->add_stiffness(s, triplets_);
+    const Index dof = 2 * layout_.nodes;
+    stiffness.resize(dof, dof);
+    stiffness.setFromTriplets(triplets_.begin(), triplets_.end());
+}
+
+double System::foreseen_event_time(const StageView& s) const {
+    double next = std::numeric_limits<double>::infinity();
+    for (const Slot* slot : active_) next = std::min(next, slot->effect->foreseen_event_time(s));
+    return next;
+}
+
+void System::add_straight_path_work(double t1, const Eigen::VectorXd& y1) {
+    if (!work_accounting()) return;
+    const Index n = layout_.nodes;
+    const double h = t1 - t_;
+    if (!(h > 0)) return;
+    path_state_ = y_;
+    path_state_.segment(2 * n, 2 * n) = (y1.head(2 * n) - y_.head(2 * n)) / h;
+    for (const std::size_t k : active_parts_) add_work(k, view_of(path_state_, layout_, t_), h / 2);
+    path_state_.head(2 * n) = y1.head(2 * n);
+    path_state_.tail(layout_.aux) = y1.tail(layout_.aux);
+    for (const std::size_t k : active_parts_) add_work(k, view_of(path_state_, layout_, t1), h / 2);
+}
+
+void System::activate(const StageInfo* stage) {
+    active_.clear();
+    active_parts_.clear();
+    for (const Slot& slot : slots_) {
+        const bool active = !stage || slot.active_in.empty() ||
+                            std::find(slot.active_in.begin(), slot.active_in.end(), stage->name) != slot.active_in.end();
+        if (!active) continue;
+        active_.push_back(&slot);
+        for (std::size_t k = slot.first_part; k < slot.first_part + slot.part_count; ++k) active_parts_.push_back(k);
+    }
+}
+
+void System::begin_stage(const StageInfo& stage) {
+    activate(&stage);
+    const StageView s = state();
+    for (const Slot* slot : active_) slot->effect->begin_stage(stage, s);
+}
+
+void System::refresh() {
+    evaluate(t_, y_, scratch_, 0);
+    const Index n = layout_.nodes;
+    net_force_.head(n) = (scratch_.segment(2 * n, n).array() * body_.mass).matrix();
+    net_force_.tail(n) = (scratch_.segment(3 * n, n).array() * body_.mass).matrix();
+}
+
+std::vector<std::string> System::pipeline() const {
+    std::vector<std::string> names;
+    for (const std::size_t k : active_parts_) names.push_back(parts_[k]->describe());
+    return names;
+}
+
+}  // namespace frictionlab
