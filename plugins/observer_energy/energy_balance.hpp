@@ -8,6 +8,7 @@
 #include "frictionlab/output/csv_table.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/simulation/run.hpp"
 
 namespace frictionlab {
 

@@ -5,6 +5,7 @@
 #include "frictionlab/output/table_writer.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/simulation/run.hpp"
 
 namespace frictionlab {
 

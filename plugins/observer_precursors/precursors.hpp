@@ -9,6 +9,7 @@
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 #include "frictionlab/model/junction_counts.hpp"
+#include "frictionlab/simulation/run.hpp"
 #include "rupture_criterion.hpp"
 #include "rupture_event_detector.hpp"
 
