@@ -505,10 +505,14 @@ def sweep_figures(sweep_dir):
     fig, ax = plt.subplots(figsize=(7, 5))
     for k, g in enumerate(groups):
         pts = [(number(e["force_ratio"]), number(e["extent_over_length"])) for e in events if group(e) == g]
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=f"C{k % 10}", label=g, ms=4, alpha=0.8)
+        if pts:
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=f"C{k % 10}", label=g, ms=4, alpha=0.8)
     ax.set_xlabel("$F_S/F_N$ at the event's start")
     ax.set_ylabel("rupture length $l/L$")
-    ax.legend(fontsize=8)
+    if ax.lines:
+        ax.legend(fontsize=8)
+    else:
+        no_data(ax, "no rupture event in any case")
     ax.set_title("every rupture event of every case (Li2020 Fig. 7)")
     save(fig, out, "sweep_precursor_lengths")
     plt.close(fig)
@@ -548,6 +552,8 @@ def sweep_figures(sweep_dir):
     ax.set_ylabel("driving force $F_S$ (N)")
     if ax.lines:
         ax.legend(fontsize=8)
+    else:
+        no_data(ax, "no case has a loading_curve table")
     save(fig, out, "sweep_loading_curves")
     plt.close(fig)
 

@@ -116,6 +116,14 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
     const auto again = frictionlab("sweep " SWEEP_FILES "/tiny_sweep.yaml -o j1 -j 2", dir);
     ASSERT_EQ(again.code, 0) << again.output;
     EXPECT_NE(again.output.find("4 of 4 cases finished earlier"), std::string::npos) << again.output;
+
+    // The campaign's figures, drawn from the collected tables: every event's l/L against F_S/F_N
+    // (Li 2020 Fig. 7), the counts and ratios against the varied rate with the seeds' spread (Fig. 8),
+    // the cases' loading curves overlaid.
+    const auto plot = frictionlab("plot j1", dir);
+    ASSERT_EQ(plot.code, 0) << plot.output;
+    for (const char* name : {"sweep_precursor_lengths", "sweep_against_velocity", "sweep_loading_curves"})
+        frictionlab::testing::expect_figure(dir / "j1" / "plots", name);
 }
 
 #ifdef MPIRUN
