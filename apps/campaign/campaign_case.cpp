@@ -1,29 +1,23 @@
 #include "frictionlab/campaign_case.hpp"
 
-#include <fstream>
-
-#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "frictionlab/output/json.hpp"
+#include "frictionlab/output/atomic_file.hpp"
 
 namespace frictionlab {
 
 void write_case_record(const std::filesystem::path& dir, const CaseRecord& record) {
-    const auto file = dir / case_record_file;
-    const auto aside = dir / (std::string(case_record_file) + ".part");
-    {
-        std::ofstream out(aside, std::ios::trunc);
-        // JSON strings are YAML strings: the reason may hold any character.
-        out << fmt::format("status: {}\nreason: {}\nscene_hash: {}\nsteps: {}\nevaluations: {}\n"
-                           "simulated_time: {:.17g}\nwall_seconds: {:.6g}\ncpu_seconds: {:.6g}\n",
-                           record.status, json_quote(record.reason), json_quote(record.scene_hash),
-                           record.summary.steps, record.summary.evaluations, record.summary.simulated_time,
-                           record.summary.wall_seconds, record.summary.cpu_seconds);
-        if (!out) return;
-    }
-    std::error_code ec;
-    std::filesystem::rename(aside, file, ec);
+    YAML::Emitter y;
+    y.SetDoublePrecision(17);
+    y << YAML::BeginMap << YAML::Key << "status" << YAML::Value << record.status;
+    y << YAML::Key << "reason" << YAML::Value << record.reason;
+    y << YAML::Key << "scene_hash" << YAML::Value << record.scene_hash;
+    y << YAML::Key << "steps" << YAML::Value << record.summary.steps;
+    y << YAML::Key << "evaluations" << YAML::Value << record.summary.evaluations;
+    y << YAML::Key << "simulated_time" << YAML::Value << record.summary.simulated_time;
+    y << YAML::Key << "wall_seconds" << YAML::Value << record.summary.wall_seconds;
+    y << YAML::Key << "cpu_seconds" << YAML::Value << record.summary.cpu_seconds << YAML::EndMap;
+    write_file_atomically(dir / case_record_file, std::string(y.c_str()) + "\n");
 }
 
 CaseRecord read_case_record(const std::filesystem::path& dir) {

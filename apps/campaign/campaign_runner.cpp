@@ -54,7 +54,12 @@ using Clock = std::chrono::steady_clock;
         code = exit_code::run_failure;
     }
     std::error_code ec;
-    if (fs::is_directory(c.scene.output_directory, ec)) write_case_record(c.scene.output_directory, record);
+    try {
+        if (fs::is_directory(c.scene.output_directory, ec)) write_case_record(c.scene.output_directory, record);
+    } catch (const RunError& e) {  // a full disk: without its record, the case counts as not run and reruns
+        log->error("{}", e.what());
+        code = exit_code::run_failure;
+    }
     log->flush();
     std::fflush(nullptr);
     std::_Exit(code);  // no atexit handlers: they belong to the parent (and MPI)

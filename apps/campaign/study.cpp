@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/output/json.hpp"
 #include "frictionlab/campaign_file.hpp"
 #include "frictionlab/campaign_keys.hpp"
 #include "frictionlab/scene/keys.hpp"
@@ -145,7 +144,7 @@ std::vector<SceneOverride> study_observers(const Study& study, const Scene& scen
     const std::string observers =
         fmt::format("observers=[{{{}}}, {{type: interface_history, every: {}}}]", detector,
                     detail::yaml_text(study.profile_every));
-    return {{observers, study.scene_where}, {"output=" + json_quote(out.string()), study.scene_where}};
+    return {{observers, study.scene_where}, {"output=" + detail::yaml_text(out.string()), study.scene_where}};
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "frictionlab/study_run.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <regex>
 
 #include <fmt/format.h>
@@ -12,6 +11,8 @@
 #include "frictionlab/case_outputs.hpp"
 #include "frictionlab/csv_cell.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/output/provenance.hpp"
 #include "frictionlab/output/output_directory.hpp"
 
 namespace frictionlab {
@@ -93,12 +94,6 @@ double load_start(const Scene& scene) {
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.6g}", v); }
 
-void write_file(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::trunc);
-    out << text;
-    if (!out) throw RunError("cannot write " + file.string());
-}
-
 }  // namespace
 
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
@@ -150,7 +145,7 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
     // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
-    write_file(std::filesystem::path(file).concat(".meta.yaml"),
+    write_file_atomically(table_sidecar_path(file),
                fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseed: {}\nnote: errors relative to "
                            "the reference case; the seed unless a case sets it; each case's run.yaml in cases/ records "
                            "its resolved scene and plugins\n",
@@ -168,7 +163,7 @@ void write_study_csv(const StudyResult& result, const Study& study, const std::f
         for (const auto& c : error_columns) text += fmt::format(",{}", number(row.errors.*c.member));
         text += fmt::format(",{}\n", csv_cell(row.errors.note));
     }
-    write_file(file, text);
+    write_file_atomically(file, text);
 }
 
 void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
@@ -194,7 +189,7 @@ void write_study_markdown(const StudyResult& result, const Study& study, const s
         for (const auto& c : error_columns) text += fmt::format(" {} |", number(row.errors.*c.member));
         text += " " + row.errors.note + " |\n";
     }
-    write_file(file, text);
+    write_file_atomically(file, text);
 }
 
 }  // namespace frictionlab

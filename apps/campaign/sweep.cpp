@@ -11,7 +11,6 @@
 
 #include "frictionlab/campaign_file.hpp"
 #include "frictionlab/campaign_keys.hpp"
-#include "frictionlab/output/json.hpp"
 #include "frictionlab/scene/values.hpp"
 #include "frictionlab/scene/yaml.hpp"
 
@@ -225,7 +224,7 @@ std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem:
                                                   "names (`name:`) or vary different keys", name));
                     continue;
                 }
-                overrides.push_back({"output=" + json_quote((output / "cases" / name).string()), sweep.scene_where});
+                overrides.push_back({"output=" + detail::yaml_text((output / "cases" / name).string()), sweep.scene_where});
                 const auto before = diagnostics.list().size();
                 out.scene = SceneDocument::load_located(sweep.scene, overrides, diagnostics).validate(registry, diagnostics);
                 if (diagnostics.list().size() != before) continue;

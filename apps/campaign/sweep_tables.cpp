@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include <fmt/format.h>
@@ -12,6 +11,7 @@
 #include "frictionlab/csv_cell.hpp"
 #include "frictionlab/output/csv_columns.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/atomic_file.hpp"
 
 namespace frictionlab {
 
@@ -58,12 +58,6 @@ CaseEvents read_events(const CampaignCase& c) {
     return out;
 }
 
-void write_file(const std::filesystem::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::trunc);
-    out << text;
-    if (!out) throw RunError("cannot write " + file.string());
-}
-
 }  // namespace
 
 void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cases,
@@ -107,8 +101,8 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cas
                                   number(column("force_ratio", k)), number(column("extent_over_length", k)),
                                   column("global", k) > 0.5 ? "global" : "precursor");
     }
-    write_file(output / "sweep.csv", table);
-    write_file(output / "events.csv", events);
+    write_file_atomically(output / "sweep.csv", table);
+    write_file_atomically(output / "events.csv", events);
 }
 
 }  // namespace frictionlab

@@ -1,8 +1,7 @@
 #include "doc_writer.hpp"
 
-#include "frictionlab/output/json.hpp"
-
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 namespace frictionlab::cli {
 
@@ -48,42 +47,35 @@ std::string markdown(const TypeInfo& t) {
     return out + "\n";
 }
 
-std::string json_value(const ParamValue& v) {
-    if (std::holds_alternative<std::string>(v)) return json_quote(std::get<std::string>(v));
-    if (auto* l = std::get_if<std::vector<std::string>>(&v)) {
-        std::vector<std::string> items;
-        for (const auto& s : *l) items.push_back(json_quote(s));
-        return fmt::format("[{}]", fmt::join(items, ", "));
-    }
-    if (auto* d = std::get_if<double>(&v)) return fmt::format("{}", *d);
-    return to_string(v);
-}
-
-std::string json(const TypeInfo& t) {
-    std::vector<std::string> params;
+nlohmann::ordered_json json(const TypeInfo& t) {
+    auto params = nlohmann::ordered_json::array();
     for (const auto& p : t.params) {
-        std::string o = fmt::format(R"({{"key": {}, "type": {}, "unit": {}, "default": {}, "required": {}, "doc": {})",
-                                    json_quote(p.key), json_quote(to_string(p.type)), json_quote(p.unit),
-                                    json_value(p.default_value), p.required, json_quote(p.doc));
-        if (p.greater_than) o += fmt::format(", \"greater_than\": {}", *p.greater_than);
-        if (p.at_least) o += fmt::format(", \"at_least\": {}", *p.at_least);
-        if (p.less_than) o += fmt::format(", \"less_than\": {}", *p.less_than);
-        if (p.at_most) o += fmt::format(", \"at_most\": {}", *p.at_most);
-        if (!p.choices.empty()) o += ", \"choices\": " + json_value(p.choices);
-        params.push_back(o + "}");
+        nlohmann::ordered_json o{{"key", p.key}, {"type", to_string(p.type)}, {"unit", p.unit}};
+        o["default"] = std::visit([](const auto& v) { return nlohmann::ordered_json(v); }, p.default_value);
+        o["required"] = p.required;
+        o["doc"] = p.doc;
+        if (p.greater_than) o["greater_than"] = *p.greater_than;
+        if (p.at_least) o["at_least"] = *p.at_least;
+        if (p.less_than) o["less_than"] = *p.less_than;
+        if (p.at_most) o["at_most"] = *p.at_most;
+        if (!p.choices.empty()) o["choices"] = p.choices;
+        params.push_back(std::move(o));
     }
-    return fmt::format(R"({{"kind": {}, "type": {}, "library": {}, "summary": {}, "params": [{}]}})",
-                       json_quote(std::string(to_string(t.kind))), json_quote(t.type),
-                       json_quote(library_of(t)), json_quote(t.summary), fmt::join(params, ", "));
+    return {{"kind", to_string(t.kind)}, {"type", t.type}, {"library", library_of(t)}, {"summary", t.summary},
+            {"params", std::move(params)}};
 }
 
 }  // namespace
 
 std::string render_doc(const std::vector<const TypeInfo*>& types, DocFormat format) {
+    if (format == DocFormat::json) {
+        auto all = nlohmann::ordered_json::array();
+        for (const TypeInfo* t : types) all.push_back(json(*t));
+        // Invalid UTF-8 (a plugin's doc string) is replaced rather than refused.
+        return all.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+    }
     std::vector<std::string> parts;
-    for (const TypeInfo* t : types)
-        parts.push_back(format == DocFormat::text ? text(*t) : format == DocFormat::markdown ? markdown(*t) : json(*t));
-    if (format == DocFormat::json) return fmt::format("[{}]\n", fmt::join(parts, ",\n "));
+    for (const TypeInfo* t : types) parts.push_back(format == DocFormat::text ? text(*t) : markdown(*t));
     return fmt::format("{}", fmt::join(parts, "\n"));
 }
 

@@ -7,7 +7,7 @@
 
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/base/errors.hpp"
-#include "frictionlab/output/json.hpp"
+#include "frictionlab/output/provenance.hpp"
 #include "frictionlab/output/output_file_name.hpp"
 
 namespace frictionlab {
@@ -165,13 +165,7 @@ std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& inf
     line("peak_driving_force", yaml_number(s.peak_driving_force));
     line("peak_driving_force_time", yaml_number(s.peak_time));
     out += "run:\n";
-    out += fmt::format("  framework_version: {}\n", json_quote(info.framework_version));
-    out += fmt::format("  scene_file: {}\n", json_quote(info.scene_file.filename().string()));
-    out += fmt::format("  scene_hash: {}\n", json_quote(info.scene_hash));
-    out += fmt::format("  seed: {}\n", info.seed);
-    out += "  plugins:\n";
-    for (const auto& p : info.plugins)
-        out += fmt::format("    - {{name: {}, version: {}}}\n", json_quote(p.name), json_quote(p.version));
+    out += Provenance::of(info).yaml(2);
     return out;
 }
 

@@ -21,6 +21,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/output/provenance.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/simulation/system.hpp"
 
@@ -254,14 +255,10 @@ void VtkSeries::add_field_data(const RunView& view) {
     for (const auto& [name, scalar] : view.quantities.scalars())
         scalars_.emplace_back(&scalar.value, add_array<vtkDoubleArray>(data, name, 1, 1));
 
-    const RunInfo& info = view.info;
-    std::vector<std::string> plugins;
-    for (const auto& p : info.plugins) plugins.push_back(p.name + " " + p.version);
-    add_strings(data, "framework_version", {info.framework_version});
-    add_strings(data, "scene_hash", {info.scene_hash});
-    add_strings(data, "seed", {std::to_string(info.seed)});  // a string: a double cannot hold every 64-bit seed
-    add_strings(data, "scene_file", {info.scene_file.string()});
-    add_strings(data, "plugins", plugins);
+    Provenance::of(view.info).visit(
+        [&](const char* key, const std::string& value) { add_strings(data, key, {value}); },
+        // A string: a double cannot hold every 64-bit seed.
+        [&](const char* key, std::uint64_t value) { add_strings(data, key, {std::to_string(value)}); });
     add_strings(data, "units", units_);
 }
 
@@ -335,15 +332,11 @@ std::string VtkSeries::collection_time(double t, long long steps) {
 }
 
 void VtkSeries::write_collection(const std::filesystem::path& output_directory) const {
-    replace_file_atomically(collection_file(output_directory), [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::trunc);
-        out << "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "  <Collection>\n"
-            << datasets_ << "  </Collection>\n</VTKFile>\n";
-        out.close();
-        return !out.fail();
-    });
+    write_file_atomically(collection_file(output_directory),
+                          "<?xml version=\"1.0\"?>\n"
+                          "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                          "  <Collection>\n" +
+                              datasets_ + "  </Collection>\n</VTKFile>\n");
 }
 
 void VtkSeries::end(const RunView& view) {

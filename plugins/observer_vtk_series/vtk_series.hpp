@@ -61,8 +61,8 @@ namespace frictionlab {
 ///
 /// Field data: TIME (s), TimeValue (the same; VTK's readers take a file's time from this name when
 /// the .vtu files are opened without the .pvd), STEP, stage, stage_index, every published scalar
-/// (e.g. driving_force in N), and the run record: framework_version, scene_hash, seed, scene_file,
-/// plugins ("name version" each) and units ("array: unit" for each point array).
+/// (e.g. driving_force in N), the run's provenance as every output records it (output/provenance.hpp:
+/// framework, version, scene_file, scene_hash, seed, plugins) and units ("array: unit" for each point array).
 ///
 /// In ParaView: File > Open <prefix>.pvd, Apply, colour by an array; the time controls step through
 /// the snapshots at their simulated times. In Python: vtk.vtkXMLUnstructuredGridReader per file.

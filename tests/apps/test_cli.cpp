@@ -67,7 +67,7 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     const std::string meta = read_text(dir_ / "tiny_out" / "run.yaml");
     for (const char* key : {"status: completed", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
         EXPECT_NE(meta.find(key), std::string::npos) << key << "\n" << meta;
-    EXPECT_TRUE(fs::exists(dir_ / "tiny_out" / "run.json"));
+    EXPECT_FALSE(fs::exists(dir_ / "tiny_out" / "run.json")) << "run.yaml is the one record";
     const std::string curve = read_text(dir_ / "tiny_out" / "loading_curve.csv");
     // One header line first, so that numpy.genfromtxt(names=True) and pandas read the table as is; the
     // provenance is in the sidecar.

@@ -72,8 +72,6 @@ TEST_F(Interrupt, CtrlCFinishesTheStepClosesTheOutputsAndRecordsWhereItStopped) 
     EXPECT_LT(t, 10.004);
     // The step and time in the message are the record's.
     EXPECT_NE(said.find("after step " + std::to_string(steps) + " "), std::string::npos) << said;
-    const YAML::Node json = YAML::LoadFile((dir_ / "out" / "run.json").string());
-    EXPECT_EQ(json["status"].as<std::string>(), "interrupted");
     expect_outputs_valid();
 }
 

@@ -20,18 +20,11 @@ INVOCATION_KEYS = ("command_line",)
 
 
 def without_wall_clock(path):
-    """A file's bytes; in run.yaml and run.json without the wall-clock figures."""
+    """A file's bytes; in run.yaml without the wall-clock figures."""
     data = open(path, "rb").read()
-    if not path.endswith(("run.yaml", "run.json")):
+    if not path.endswith("run.yaml"):
         return data
     text = data.decode()
-    if path.endswith("run.json"):
-        import json
-
-        data = json.loads(text)
-        for k in WALL_CLOCK_KEYS + INVOCATION_KEYS:
-            data.pop(k)
-        return json.dumps(data)
     data = yaml.safe_load(text)
     if "command_line" in data:
         data.pop("command_line")

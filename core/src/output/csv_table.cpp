@@ -11,7 +11,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/os_error.hpp"
-#include "frictionlab/output/table_provenance.hpp"
+#include "frictionlab/output/provenance.hpp"
 
 namespace frictionlab {
 
@@ -23,7 +23,7 @@ CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::str
                                      "its own file",
                                      file.string()));
     if (fd_ < 0) throw RunError(fmt::format("cannot create '{}': {}", file.string(), os_error(errno)));
-    write_file_atomically(table_sidecar_path(file), table_sidecar_yaml(TableProvenance::of(info), columns));
+    write_file_atomically(table_sidecar_path(file), table_sidecar_yaml(Provenance::of(info), columns));
     append(fmt::format("{}\n", fmt::join(columns, ",")));
 }
 

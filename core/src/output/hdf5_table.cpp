@@ -6,7 +6,7 @@
 #include <hdf5.h>
 
 #include "frictionlab/base/errors.hpp"
-#include "frictionlab/output/table_provenance.hpp"
+#include "frictionlab/output/provenance.hpp"
 
 static_assert(sizeof(hid_t) == sizeof(std::int64_t), "hid_t is kept as std::int64_t");
 
@@ -65,17 +65,14 @@ Hdf5Table::Hdf5Table(const std::filesystem::path& file, const std::vector<std::s
     file_id_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     check(file_id_ >= 0, file, "write");
 
-    const TableProvenance p = TableProvenance::of(info);
-    string_attribute(file_id_, "framework", p.framework, file);
-    string_attribute(file_id_, "version", p.version, file);
-    string_attribute(file_id_, "scene_file", p.scene_file, file);
-    string_attribute(file_id_, "scene_hash", p.scene_hash, file);
-    string_attribute(file_id_, "plugins", p.plugins, file);
-    {
-        Handle space{H5Screate(H5S_SCALAR), H5Sclose};
-        Handle seed{H5Acreate2(file_id_, "seed", H5T_STD_U64LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-        check(seed.id >= 0 && H5Awrite(seed.id, H5T_NATIVE_UINT64, &p.seed) >= 0, file, "write attributes to");
-    }
+    Provenance::of(info).visit(
+        [&](const char* key, const std::string& value) { string_attribute(file_id_, key, value, file); },
+        [&](const char* key, std::uint64_t value) {
+            Handle space{H5Screate(H5S_SCALAR), H5Sclose};
+            Handle attribute{H5Acreate2(file_id_, key, H5T_STD_U64LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+            check(attribute.id >= 0 && H5Awrite(attribute.id, H5T_NATIVE_UINT64, &value) >= 0, file,
+                  "write attributes to");
+        });
 
     const hsize_t dims[2] = {0, columns_}, max_dims[2] = {H5S_UNLIMITED, columns_};
     const hsize_t chunk[2] = {chunk_rows_, std::max<hsize_t>(columns_, 1)};

@@ -20,7 +20,6 @@
 
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/base/errors.hpp"
-#include "frictionlab/output/json.hpp"
 #include "frictionlab/output/output_directory.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/simulation.hpp"
@@ -72,16 +71,14 @@ struct RunRecord {
     /// place, within the room set aside after the previous write, so the record never stays `running`.
     void write(const std::filesystem::path& dir) const {
         const std::string yaml = text();
-        const std::string json = to_json(YAML::Load(yaml)) + "\n";
-        for (const auto& [file, content] : {std::pair{dir / "run.yaml", &yaml}, std::pair{dir / "run.json", &json}}) {
-            try {
-                write_file_atomically(file, *content);
-            } catch (const RunError&) {
-                if (!std::filesystem::exists(file)) throw;
-                overwrite_in_place(file, *content);
-            }
-            reserve_space(file, room_for_the_last_record);
+        const auto file = dir / "run.yaml";
+        try {
+            write_file_atomically(file, yaml);
+        } catch (const RunError&) {
+            if (!std::filesystem::exists(file)) throw;
+            overwrite_in_place(file, yaml);
         }
+        reserve_space(file, room_for_the_last_record);
     }
     static constexpr long room_for_the_last_record = 16 * 1024;
 
@@ -126,34 +123,6 @@ struct RunRecord {
         std::ifstream in(file, std::ios::binary);
         const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         return in ? detail::fnv1a_hex(bytes) : "unreadable";
-    }
-
-    static std::string to_json(const YAML::Node& n) {
-        switch (n.Type()) {
-            case YAML::NodeType::Map: {
-                std::string out = "{";
-                for (auto it = n.begin(); it != n.end(); ++it)
-                    out += (out.size() > 1 ? ", " : "") + json_quote(it->first.Scalar()) + ": " + to_json(it->second);
-                return out + "}";
-            }
-            case YAML::NodeType::Sequence: {
-                std::string out = "[";
-                for (std::size_t i = 0; i < n.size(); ++i) out += (i ? ", " : "") + to_json(n[i]);
-                return out + "]";
-            }
-            case YAML::NodeType::Scalar: return scalar_json(n);
-            default: return "null";
-        }
-    }
-    static std::string scalar_json(const YAML::Node& n) {
-        const std::string& s = n.Scalar();
-        if (n.Tag() != "!") {  // plain scalar: a number or boolean stays one
-            if (s == "true" || s == "false") return s;
-            char* end = nullptr;
-            const double v = std::strtod(s.c_str(), &end);
-            if (!s.empty() && end == s.c_str() + s.size() && std::isfinite(v)) return s;
-        }
-        return json_quote(s);
     }
 };
 

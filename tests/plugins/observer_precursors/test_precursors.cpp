@@ -203,7 +203,8 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
     const std::string summary = read_text(dir_ / "precursors_summary.yaml");
     for (const char* expected : {"run_ended: true\n", "events: 2\n", "global_slip_seen: false\n",
                                  "precursors_before_first_global_slip: 2\n", "global_static_coefficient: null\n",
-                                 "scene_hash: \"feedface\"\n", "seed: 42\n", "name: \"observer_precursors\""})
+                                 "run:\n  framework: frictionlab\n  version: 9.8.7-test\n  scene_file: scene.yaml\n  scene_hash: feedface\n"
+                                 "  seed: 42\n  plugins: observer_precursors 0.1.0\n"})
         EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
     EXPECT_FALSE(fs::exists(dir_ / "precursors_summary.yaml.tmp"));
 }

@@ -1,7 +1,7 @@
 #pragma once
 // A CSV table that observers write row by row: one header line of column names, then the rows, so
 // that numpy, pandas and spreadsheets read it in one line. The version, scene hash, seed and plugins
-// go to its sidecar NAME.csv.meta.yaml (table_provenance.hpp). Every row goes to the file whole, in
+// go to its sidecar NAME.csv.meta.yaml (provenance.hpp). Every row goes to the file whole, in
 // one write, so a run that stops early (fails, is interrupted) leaves a valid table of everything
 // observed so far; a row the disk has no room for is cut back off.
 #include <filesystem>

@@ -1,7 +1,7 @@
 #pragma once
 // An HDF5 table (NAME.h5) for the large outputs: one two-dimensional float64 dataset `table`, rows
 // by columns, chunked and compressed (shuffle + deflate), growing as rows arrive; its column names
-// are the dataset's attribute `columns`, and the run's provenance (table_provenance.hpp) attributes
+// are the dataset's attribute `columns`, and the run's provenance (provenance.hpp) attributes
 // of the file. h5py: `f["table"][:]`, `f["table"].attrs["columns"]`, `f.attrs["scene_hash"]`.
 //
 // Rows are gathered in memory one chunk at a time (no allocation per row) and written when the chunk

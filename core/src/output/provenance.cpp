@@ -1,0 +1,45 @@
+#include "frictionlab/output/provenance.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+namespace frictionlab {
+
+Provenance Provenance::of(const RunInfo& info) {
+    Provenance p;
+    p.version = info.framework_version;
+    p.scene_file = info.scene_file.filename().string();
+    p.scene_hash = info.scene_hash;
+    p.seed = info.seed;
+    for (const auto& plugin : info.plugins)
+        p.plugins += fmt::format("{}{} {}", p.plugins.empty() ? "" : ", ", plugin.name, plugin.version);
+    return p;
+}
+
+std::string Provenance::yaml(int indent) const {
+    YAML::Emitter y;
+    y << YAML::BeginMap;
+    const auto entry = [&](const char* key, const auto& value) { y << YAML::Key << key << YAML::Value << value; };
+    visit(entry, entry);
+    y << YAML::EndMap;
+    std::string out;
+    const std::string text = y.c_str();
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        out += std::string(indent, ' ') + text.substr(start, end - start) + "\n";
+        start = end + 1;
+    }
+    return out;
+}
+
+std::string table_sidecar_yaml(const Provenance& provenance, const std::vector<std::string>& columns) {
+    YAML::Emitter y;
+    y << YAML::Flow << columns;
+    return provenance.yaml() + "columns: " + y.c_str() + "\n";
+}
+
+std::filesystem::path table_sidecar_path(const std::filesystem::path& file) {
+    return std::filesystem::path(file).concat(".meta.yaml");
+}
+
+}  // namespace frictionlab
