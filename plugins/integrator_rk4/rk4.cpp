@@ -1,6 +1,7 @@
 #include "rk4.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "frictionlab/base/hot_kernel.hpp"
 #include "frictionlab/simulation/system.hpp"
@@ -10,63 +11,75 @@ namespace frictionlab {
 namespace {
 
 // The stage combinations, one pass each over one part of the state: the positions (whose rate k is
-// the stage's velocities), the velocities (whose rate is System::forces() times the inverse masses,
-// formed here as System::derivative() would form it) or the aux variables (whose rate is System::forces()
-// as it is). The sum is formed as ((k1 + 2 k2) + 2 k3) + k4, in the order the textbook expression
-// y + h/6 (k1 + 2 k2 + 2 k3 + k4) evaluates left to right, so the step rounds exactly like it.
+// the stage's velocities), the velocities (whose rate is System::add_forces() times the inverse
+// masses, formed here as System::derivative() would form it) or the aux variables (whose rate is
+// System::add_forces() as it is). The sum is formed as ((k1 + 2 k2) + 2 k3) + k4, in the order the
+// textbook expression y + h/6 (k1 + 2 k2 + 2 k3 + k4) evaluates left to right, so the step rounds
+// exactly like it. A force rate is cleared as it is read (`consume`), so that the next evaluation
+// adds into zeros without a pass of its own.
 
-/// k[i], or the force k[i] times inverse_mass[i] (per_mass).
-template <bool per_mass>
-[[gnu::always_inline]] inline double rate(const double* __restrict k, const double* __restrict inverse_mass, Index i) {
-    if constexpr (per_mass) return k[i] * inverse_mass[i];
-    return k[i];
+/// The rates a pass reads: written (cleared) only if it consumes them.
+template <bool consume>
+using Rates = std::conditional_t<consume, double*, const double*>;
+
+/// k[i], or the force k[i] times inverse_mass[i] (per_mass); k[i] cleared if `consume`.
+template <bool per_mass, bool consume>
+[[gnu::always_inline]] inline double rate(Rates<consume> __restrict k, const double* __restrict inverse_mass, Index i) {
+    double r = k[i];
+    if constexpr (per_mass) r *= inverse_mass[i];
+    if constexpr (consume) k[i] = 0;
+    return r;
 }
 
 /// sum = k1, stage = y + c k1.
-template <bool per_mass>
-[[gnu::always_inline]] inline void first(const double* __restrict y, const double* __restrict k,
+template <bool per_mass, bool consume>
+[[gnu::always_inline]] inline void first(const double* __restrict y, Rates<consume> __restrict k,
                                          const double* __restrict inverse_mass, double c, Index n,
                                          double* __restrict stage, double* __restrict sum) {
     for (Index i = 0; i < n; ++i) {
-        const double r = rate<per_mass>(k, inverse_mass, i);
+        const double r = rate<per_mass, consume>(k, inverse_mass, i);
         sum[i] = r;
         stage[i] = y[i] + c * r;
     }
 }
 
 /// sum += 2 k, stage = y + c k.
-template <bool per_mass>
-[[gnu::always_inline]] inline void middle(const double* __restrict y, const double* __restrict k,
+template <bool per_mass, bool consume>
+[[gnu::always_inline]] inline void middle(const double* __restrict y, Rates<consume> __restrict k,
                                           const double* __restrict inverse_mass, double c, Index n,
                                           double* __restrict stage, double* __restrict sum) {
     for (Index i = 0; i < n; ++i) {
-        const double r = rate<per_mass>(k, inverse_mass, i);
+        const double r = rate<per_mass, consume>(k, inverse_mass, i);
         sum[i] = sum[i] + 2.0 * r;
         stage[i] = y[i] + c * r;
     }
 }
 
 /// stage = y + c (sum + k4).
-template <bool per_mass>
-[[gnu::always_inline]] inline void last(const double* __restrict y, const double* __restrict k,
+template <bool per_mass, bool consume>
+[[gnu::always_inline]] inline void last(const double* __restrict y, Rates<consume> __restrict k,
                                         const double* __restrict inverse_mass, double c, Index n,
                                         double* __restrict stage, double* __restrict sum) {
-    for (Index i = 0; i < n; ++i) stage[i] = y[i] + c * (sum[i] + rate<per_mass>(k, inverse_mass, i));
+    for (Index i = 0; i < n; ++i) stage[i] = y[i] + c * (sum[i] + rate<per_mass, consume>(k, inverse_mass, i));
 }
 
-// Each combination in both forms, cloned per ISA (the bodies are inlined into each clone).
-#define FRICTIONLAB_RK4_STAGE(name, body, per_mass)                                                          \
+// Each combination for the three parts: positions (rate: the stage's velocities, kept), velocities
+// (forces per mass, consumed) and aux variables (rates, consumed); cloned per ISA (the bodies are
+// inlined into each clone).
+#define FRICTIONLAB_RK4_STAGE(name, body, per_mass, consume)                                              \
     FRICTIONLAB_HOT_KERNEL                                                                                \
-    void name(const double* y, const double* k, const double* inverse_mass, double c, Index n, double* stage, \
+    void name(const double* y, Rates<consume> k, const double* inverse_mass, double c, Index n, double* stage, \
               double* sum) {                                                                              \
-        body<per_mass>(y, k, inverse_mass, c, n, stage, sum);                                             \
+        body<per_mass, consume>(y, k, inverse_mass, c, n, stage, sum);                                    \
     }
-FRICTIONLAB_RK4_STAGE(first_stage, first, false)
-FRICTIONLAB_RK4_STAGE(first_stage_per_mass, first, true)
-FRICTIONLAB_RK4_STAGE(middle_stage, middle, false)
-FRICTIONLAB_RK4_STAGE(middle_stage_per_mass, middle, true)
-FRICTIONLAB_RK4_STAGE(last_stage, last, false)
-FRICTIONLAB_RK4_STAGE(last_stage_per_mass, last, true)
+#define FRICTIONLAB_RK4_STAGES(body)                                   \
+    FRICTIONLAB_RK4_STAGE(body##_positions, body, false, false)        \
+    FRICTIONLAB_RK4_STAGE(body##_velocities, body, true, true)         \
+    FRICTIONLAB_RK4_STAGE(body##_aux, body, false, true)
+FRICTIONLAB_RK4_STAGES(first)
+FRICTIONLAB_RK4_STAGES(middle)
+FRICTIONLAB_RK4_STAGES(last)
+#undef FRICTIONLAB_RK4_STAGES
 #undef FRICTIONLAB_RK4_STAGE
 
 }  // namespace
@@ -83,28 +96,29 @@ double Rk4::step(System& system, double max_dt) {
     // stage itself, never copied, and the forces become accelerations within the stage passes.
     // Positions are y[0, 2N), velocities y[2N, 4N), aux variables y[4N, size).
     const Index n = system.layout().nodes, size = y.size(), half = 2 * n, rest = size - half, aux = rest - half;
-    if (stage_.size() != size) stage_.resize(size), sum_.resize(size), rate_.resize(rest);
+    // rate_ is all zeros between evaluations: each stage pass clears what it read.
+    if (stage_.size() != size) stage_.resize(size), sum_.resize(size), rate_.setZero(rest);
     const double *y0 = y.data(), *inverse_mass = system.inverse_mass().data();
     double *stage = stage_.data(), *sum = sum_.data(), *rate = rate_.data();
     // One stage: positions with the stage's velocities `v`, then the velocities (x, then z) and the
     // aux variables with the new rates (in this order, as the rest overwrites the stage's velocities).
-    auto combine = [&](auto kernel, auto kernel_per_mass, const double* v, double c) {
-        kernel(y0, v, nullptr, c, half, stage, sum);
+    auto combine = [&](auto positions, auto velocities, auto aux_variables, const double* v, double c) {
+        positions(y0, v, nullptr, c, half, stage, sum);
         for (Index p = half; p < 2 * half; p += n)
-            kernel_per_mass(y0 + p, rate + (p - half), inverse_mass, c, n, stage + p, sum + p);
-        kernel(y0 + 2 * half, rate + half, nullptr, c, aux, stage + 2 * half, sum + 2 * half);
+            velocities(y0 + p, rate + (p - half), inverse_mass, c, n, stage + p, sum + p);
+        aux_variables(y0 + 2 * half, rate + half, nullptr, c, aux, stage + 2 * half, sum + 2 * half);
     };
 
     // The last argument is each stage's quadrature weight, for work accounting (energy bookkeeping).
     system.begin_step();
-    system.forces(t, y, rate_, h / 6);
-    combine(first_stage, first_stage_per_mass, y0 + half, 0.5 * h);
-    system.forces(t + 0.5 * h, stage_, rate_, h / 3);
-    combine(middle_stage, middle_stage_per_mass, stage + half, 0.5 * h);
-    system.forces(t + 0.5 * h, stage_, rate_, h / 3);
-    combine(middle_stage, middle_stage_per_mass, stage + half, h);
-    system.forces(t + h, stage_, rate_, h / 6);
-    combine(last_stage, last_stage_per_mass, stage + half, h / 6.0);
+    system.add_forces(t, y, rate_, h / 6);
+    combine(first_positions, first_velocities, first_aux, y0 + half, 0.5 * h);
+    system.add_forces(t + 0.5 * h, stage_, rate_, h / 3);
+    combine(middle_positions, middle_velocities, middle_aux, stage + half, 0.5 * h);
+    system.add_forces(t + 0.5 * h, stage_, rate_, h / 3);
+    combine(middle_positions, middle_velocities, middle_aux, stage + half, h);
+    system.add_forces(t + h, stage_, rate_, h / 6);
+    combine(last_positions, last_velocities, last_aux, stage + half, h / 6.0);
     system.accept_swap(t + h, stage_);  // stage_ is all overwritten at the next step
     return h;
 }

@@ -117,11 +117,11 @@ TEST(System, AStageSwitchesAWholeCompositeOff) {
     EXPECT_EQ(p.bond->together, 1);
 }
 
-TEST(System, ForcesAreTheDerivativeTimesTheMasses) {
+TEST(System, AddedForcesAreTheDerivativeTimesTheMasses) {
     Pipeline p(false);
-    Eigen::VectorXd f = Eigen::VectorXd::Constant(3, 99.0);  // not zeroed by the caller
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(3);
     p.system.derivative(0.5, p.y, p.dy);
-    p.system.forces(0.5, p.y, f);
+    p.system.add_forces(0.5, p.y, f);
     ASSERT_EQ(p.system.inverse_mass().size(), 1);
     EXPECT_EQ(p.system.inverse_mass()(0), 0.5);
     // The product an integrator forms is derivative()'s bit for bit; aux rates are as they are.
@@ -130,6 +130,10 @@ TEST(System, ForcesAreTheDerivativeTimesTheMasses) {
     EXPECT_NE(f(0), p.dy(2));
     EXPECT_EQ(f(2), p.dy(4));
     EXPECT_EQ(p.system.evaluations(), 2);
+    // Added, as each effect adds its own: a second evaluation doubles them.
+    const Eigen::VectorXd once = f;
+    p.system.add_forces(0.5, p.y, f);
+    EXPECT_EQ(f, 2 * once);
 }
 
 TEST(System, WorkAccountingSplitsACompositeAndChangesNoForce) {

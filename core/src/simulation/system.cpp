@@ -61,13 +61,17 @@ void System::evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, d
     divide_by_mass(f);
 }
 
-void System::forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
-    compute_forces(t, y, f, work_weight);
+void System::add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
+    accumulate_forces(t, y, f, work_weight);
     ++evaluations_;
 }
 
 void System::compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
     a.setZero();
+    accumulate_forces(t, y, a, work_weight);
+}
+
+void System::accumulate_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_at(a.data(), layout_);
     const bool accounting = work_accounting() && work_weight != 0;

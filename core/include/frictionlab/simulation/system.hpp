@@ -38,11 +38,12 @@ public:
     /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
     /// to its work with that weight, so the work is integrated to the integrator's own order.
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
-    /// The rest of dy/dt after the velocities before the division by the masses: [F | aux rates],
-    /// the forces in N, layout().size() - 2N values. For integrators that read the velocities from y
-    /// and divide by the masses (inverse_mass()) within their own pass over the rates (RK4's fused
-    /// stages); F_i * inverse_mass()(i) is exactly what derivative() gives. Counts as an evaluation.
-    void forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight = 0);
+    /// Adds the rest of dy/dt after the velocities, before the division by the masses, to f:
+    /// [F | aux rates], the forces in N, layout().size() - 2N values, as every effect adds its own.
+    /// For integrators that read the velocities from y and divide by the masses (inverse_mass())
+    /// within their own pass over the rates, and clear f in that pass (RK4's fused stages); into a
+    /// zero f, F_i * inverse_mass()(i) is exactly what derivative() gives. Counts as an evaluation.
+    void add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight = 0);
     /// 1/m of every node.
     const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
     /// dy/dt with only one active part of the pipeline (index into pipeline()), for diagnostics
@@ -112,6 +113,7 @@ private:
     void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
     /// forces() without counting an evaluation.
     void compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
+    void accumulate_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
     /// Makes the effects active in `stage` (every effect if none) the pipeline.
     void activate(const StageInfo* stage);
     /// Forces to accelerations, F/m.
