@@ -18,7 +18,6 @@ public:
     virtual ~TableWriter();
     /// One row, as many values as columns; throws RunError if it cannot be written.
     virtual void row(const std::vector<double>& values) = 0;
-    const std::filesystem::path& file() const { return file_; }
 
 protected:
     explicit TableWriter(std::filesystem::path file) : file_(std::move(file)) {}

@@ -74,8 +74,9 @@ public:
     bool quasi_static_regime(const StageView& s) const;
     void assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness);
     double foreseen_event_time(const StageView& s) const;
-    /// The forces [fx | fz | aux rates] at (t, y), as forces(), without counting an evaluation or
-    /// adding work: for solvers that evaluate the pipeline outside a time step (a quiet phase).
+    /// The forces [fx | fz | aux rates] at (t, y), as add_forces() gives them into zeros, without
+    /// counting an evaluation or adding work: for solvers that evaluate the pipeline outside a time
+    /// step (a quiet phase).
     void static_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f) { compute_forces(t, y, f, 0); }
     /// Adds work to each active effect as the trapezoid rule over a straight path from the accepted
     /// state to y1 (positions q0 -> q1 in time h at the constant velocity (q1 - q0)/h), with the
