@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/fingerprint.hpp"
 
 namespace frictionlab {
 
@@ -113,6 +114,9 @@ PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(absolute
     };
     if (std::error_code ec; !std::filesystem::exists(file_, ec)) fail("no such file");
     if (const std::string problem = elf_problem(file_); !problem.empty()) fail(problem);
+    // Once, as loaded: a copy earlier in the search path wins over the shipped plugin of the same
+    // name, and every run's record must show which file ran.
+    fingerprint_ = file_fingerprint(file_);
     dlerror();
     handle_ = dlopen(file_.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle_) fail(dl_reason(file_.string()));
@@ -139,6 +143,6 @@ PluginLibrary::~PluginLibrary() {
     if (handle_) dlclose(handle_);
 }
 
-PluginRecord PluginLibrary::record() const { return {header_->name, header_->version, file_}; }
+PluginRecord PluginLibrary::record() const { return {header_->name, header_->version, file_, fingerprint_}; }
 
 }  // namespace frictionlab

@@ -97,14 +97,6 @@ std::string resolved_yaml(const Scene& scene, const Registry& registry) { return
 
 std::string physics_yaml(const Scene& scene, const Registry& registry) { return scene_yaml(scene, registry, false); }
 
-std::string fnv1a_hex(const std::string& text) {
-    std::uint64_t hash = 14695981039346656037ull;
-    for (const unsigned char c : text) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    return fmt::format("{:016x}", hash);
-}
 
 namespace {
 

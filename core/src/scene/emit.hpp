@@ -13,7 +13,4 @@ std::string resolved_yaml(const Scene& scene, const Registry& registry);
 /// covers, so that one scene run into two directories has one hash.
 std::string physics_yaml(const Scene& scene, const Registry& registry);
 
-/// 64-bit FNV-1a of `text` as 16 hex digits: identifies a resolved scene in records, not a secret.
-std::string fnv1a_hex(const std::string& text);
-
 }  // namespace frictionlab::detail

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/base/fingerprint.hpp"
 #include "scene/emit.hpp"
 #include "frictionlab/scene/keys.hpp"
 #include "frictionlab/scene/values.hpp"

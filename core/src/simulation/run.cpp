@@ -108,21 +108,13 @@ struct RunRecord {
         }
         y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
         for (const auto& p : info.plugins)
-            // The full path and a checksum: a copy earlier in the search path wins over the shipped
-            // plugin of the same name, and the record must show which file ran.
             y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key
               << "version" << YAML::Value << p.version << YAML::Key << "file" << YAML::Value << p.file.string()
-              << YAML::Key << "fnv1a_64" << YAML::Value << file_checksum(p.file) << YAML::EndMap;
+              << YAML::Key << "fnv1a_64" << YAML::Value << p.fingerprint << YAML::EndMap;
         y << YAML::EndSeq;
         y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
         y << YAML::EndMap;
         return std::string(y.c_str()) + "\n";
-    }
-
-    static std::string file_checksum(const std::filesystem::path& file) {
-        std::ifstream in(file, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        return in ? detail::fnv1a_hex(bytes) : "unreadable";
     }
 };
 

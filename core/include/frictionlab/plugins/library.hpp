@@ -12,6 +12,7 @@ namespace frictionlab {
 struct PluginRecord {
     std::string name, version;
     std::filesystem::path file;
+    std::string fingerprint;  // of the file as it was loaded (base/fingerprint.hpp)
 };
 
 class PluginLibrary {
@@ -28,6 +29,7 @@ public:
 
 private:
     std::filesystem::path file_;
+    std::string fingerprint_;
     void* handle_ = nullptr;
     const PluginHeader* header_ = nullptr;
 };
