@@ -12,12 +12,10 @@ namespace {
 
 struct Bench {
     Bench(int nx, int nz, const std::string& springs, const std::string& damping_mode) {
-        SpringLattice2d::Params p;
+        SpringLattice2d::Params p = SpringLattice2d::spec().build({{"springs", springs}, {"damping_mode", damping_mode}});
         p.nx = nx;
         p.nz = nz;
         p.height = p.length / (nx - 1) * (nz - 1);
-        p.springs = springs;
-        p.damping_mode = damping_mode;
         lattice = std::make_unique<SpringLattice2d>(p, Context{log, 0, nullptr, &quantities, &aux, "bench"});
         effects = lattice->effects(Context{log, 0, &lattice->body(), &quantities, &aux, "bench"});
         const Index n = lattice->body().size();

@@ -1,24 +1,50 @@
 #include "frictionlab/campaign_keys.hpp"
 
-#include "frictionlab/scene/keys.hpp"
+#include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab::detail {
 
+// Declared like a scene's keys (scene/keys.cpp): one struct per group, the ParamSpec builder.
+namespace {
+
+struct Study {
+    std::string title, scene;
+    double observe_every = 1.0e-6;
+    double profile_every = 1.0e-4;
+};
+
+struct StudyCase {
+    std::string name, family;
+    std::vector<std::string> set;
+};
+
+struct Sweep {
+    std::string title, scene;
+    std::vector<double> seeds;
+};
+
+}  // namespace
+
 const std::vector<ParamInfo>& study_params() {
-    static const std::vector<ParamInfo> params = {
-        key("title", ValueType::string, std::string(), "A line describing the study, for its table and plot."),
-        required(key("scene", ValueType::string, std::string(),
-                     "The base scene, relative to the study file's folder: settling first, loading last.")),
-        greater_than(key("observe_every", ValueType::real, 1.0e-6,
-                         "Cadence of the rupture-event detection in every case; it bounds how well the time "
-                         "and F_S of an event are resolved.", "s"),
-                     0),
-        greater_than(key("profile_every", ValueType::real, 1.0e-4,
-                         "Cadence of the interface profiles (forces, slip) in every case; it must divide the "
-                         "settling stage's duration.", "s"),
-                     0),
-    };
-    return params;
+    static const ParamSpec<Study> spec = [] {
+        ParamSpec<Study> s;
+        s.add("title", &Study::title, "A line describing the study, for its table and plot.");
+        s.add("scene", &Study::scene,
+              "The base scene, relative to the study file's folder: settling first, loading last.")
+            .required();
+        s.add("observe_every", &Study::observe_every,
+              "Cadence of the rupture-event detection in every case; it bounds how well the time and F_S of an "
+              "event are resolved.")
+            .unit("s")
+            .greater_than(0);
+        s.add("profile_every", &Study::profile_every,
+              "Cadence of the interface profiles (forces, slip) in every case; it must divide the settling "
+              "stage's duration.")
+            .unit("s")
+            .greater_than(0);
+        return s;
+    }();
+    return spec.params();
 }
 
 const std::vector<std::string>& study_sections() {
@@ -27,30 +53,36 @@ const std::vector<std::string>& study_sections() {
 }
 
 const std::vector<ParamInfo>& study_case_params(bool reference) {
-    static const std::vector<ParamInfo> reference_params = {
-        required(key("set", ValueType::string_list, std::vector<std::string>(),
-                     "Overrides of the base scene, key.path=value as with --set, that make the converged run.")),
-    };
-    static const std::vector<ParamInfo> case_params = {
-        required(key("name", ValueType::string, std::string(),
-                     "Name of the case: a-z, 0-9, _, . and -, starting with a letter; unique.")),
-        key("family", ValueType::string, std::string(),
-            "Curve of the work-precision plot the case belongs to; default: its integrator type."),
-        key("set", ValueType::string_list, std::vector<std::string>(),
-            "Overrides of the base scene, key.path=value as with --set; absent: the base scene as it is."),
-    };
-    return reference ? reference_params : case_params;
+    static const ParamSpec<StudyCase> reference_spec = [] {
+        ParamSpec<StudyCase> s;
+        s.add("set", &StudyCase::set,
+              "Overrides of the base scene, key.path=value as with --set, that make the converged run.")
+            .required();
+        return s;
+    }();
+    static const ParamSpec<StudyCase> case_spec = [] {
+        ParamSpec<StudyCase> s;
+        s.add("name", &StudyCase::name, "Name of the case: a-z, 0-9, _, . and -, starting with a letter; unique.")
+            .required();
+        s.add("family", &StudyCase::family,
+              "Curve of the work-precision plot the case belongs to; default: its integrator type.");
+        s.add("set", &StudyCase::set,
+              "Overrides of the base scene, key.path=value as with --set; absent: the base scene as it is.");
+        return s;
+    }();
+    return reference ? reference_spec.params() : case_spec.params();
 }
 
 const std::vector<ParamInfo>& sweep_params() {
-    static const std::vector<ParamInfo> params = {
-        key("title", ValueType::string, std::string(), "A line describing the sweep, for its tables and figures."),
-        required(key("scene", ValueType::string, std::string(),
-                     "The base scene, relative to the sweep file's folder.")),
-        key("seeds", ValueType::real_list, std::vector<double>(),
-            "Seeds each case runs with (whole numbers >= 0); absent: the base scene's seed only."),
-    };
-    return params;
+    static const ParamSpec<Sweep> spec = [] {
+        ParamSpec<Sweep> s;
+        s.add("title", &Sweep::title, "A line describing the sweep, for its tables and figures.");
+        s.add("scene", &Sweep::scene, "The base scene, relative to the sweep file's folder.").required();
+        s.add("seeds", &Sweep::seeds,
+              "Seeds each case runs with (whole numbers >= 0); absent: the base scene's seed only.");
+        return s;
+    }();
+    return spec.params();
 }
 
 const std::vector<std::string>& sweep_sections() {
@@ -59,13 +91,14 @@ const std::vector<std::string>& sweep_sections() {
 }
 
 const std::vector<ParamInfo>& sweep_case_params() {
-    static const std::vector<ParamInfo> params = {
-        key("name", ValueType::string, std::string(),
-            "Name of the case (a-z, 0-9, _, . and -, starting with a letter); default: its values."),
-        required(key("set", ValueType::string_list, std::vector<std::string>(),
-                     "Overrides of the base scene, key.path=value as with --set.")),
-    };
-    return params;
+    static const ParamSpec<StudyCase> spec = [] {
+        ParamSpec<StudyCase> s;
+        s.add("name", &StudyCase::name,
+              "Name of the case (a-z, 0-9, _, . and -, starting with a letter); default: its values.");
+        s.add("set", &StudyCase::set, "Overrides of the base scene, key.path=value as with --set.").required();
+        return s;
+    }();
+    return spec.params();
 }
 
 }  // namespace frictionlab::detail

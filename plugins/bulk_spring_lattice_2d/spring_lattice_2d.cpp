@@ -25,14 +25,14 @@ ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
           "bond damping off.")
         .unit("1")
         .at_least(0);
-    s.add("damping_mode", &Params::damping_mode,
-          "full_vector: eta (v_j - v_i) (Li2020 Eq. 2 as read in theory.md B.4); bond_projected: only the "
-          "component along the current bond, which leaves rigid rotation undamped.")
-        .one_of({"full_vector", "bond_projected"});
-    s.add("springs", &Params::springs,
-          "geometric: Li2020 Eq. 1, exact for large rotations; small_strain: linearised about the reference "
-          "configuration, cheaper, for small rotations only.")
-        .one_of({"geometric", "small_strain"});
+    s.choice("damping_mode", &Params::damping_mode,
+             {{"full_vector", BondDamping::Mode::full_vector}, {"bond_projected", BondDamping::Mode::bond_projected}},
+             "full_vector: eta (v_j - v_i) (Li2020 Eq. 2 as read in theory.md B.4); bond_projected: only the "
+             "component along the current bond, which leaves rigid rotation undamped.");
+    s.choice("springs", &Params::springs,
+             {{"geometric", LatticeSprings::Law::geometric}, {"small_strain", LatticeSprings::Law::small_strain}},
+             "geometric: Li2020 Eq. 1, exact for large rotations; small_strain: linearised about the reference "
+             "configuration, cheaper, for small rotations only.");
     s.rule("nz", spacing_mismatch);
     s.rule("nx", too_large);
     return s;
@@ -57,25 +57,8 @@ std::string SpringLattice2d::spacing_mismatch(const Params& p) {
         along_z);
 }
 
-namespace {
-// Scene validation has checked the choices; this guards Params built in code.
-template <class Enum>
-Enum choice(const std::string& key, const std::string& value,
-            std::initializer_list<std::pair<const char*, Enum>> options) {
-    for (const auto& [name, e] : options)
-        if (value == name) return e;
-    throw InputError(fmt::format("spring_lattice_2d: {} = '{}' is not one of the allowed values", key, value));
-}
-}  // namespace
-
 SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)
-    : law_(choice<LatticeSprings::Law>("springs", p.springs,
-                                       {{"geometric", LatticeSprings::Law::geometric},
-                                        {"small_strain", LatticeSprings::Law::small_strain}})),
-      damping_mode_(choice<BondDamping::Mode>("damping_mode", p.damping_mode,
-                                              {{"full_vector", BondDamping::Mode::full_vector},
-                                               {"bond_projected", BondDamping::Mode::bond_projected}})) {
-    if (std::string why = spacing_mismatch(p); !why.empty()) throw InputError(why);
+    : law_(spec().checked(p).springs), damping_mode_(p.damping_mode) {
     grid_ = {p.nx, p.nz, p.length / (p.nx - 1)};
     const Index n = grid_.size();
     body_.x0.resize(n);

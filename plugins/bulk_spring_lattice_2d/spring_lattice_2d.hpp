@@ -38,8 +38,8 @@ public:
         int nx = 41;
         int nz = 9;
         double damping_factor = 0.5;   // c in eta = sqrt(c K m)
-        std::string damping_mode = "full_vector";
-        std::string springs = "geometric";
+        BondDamping::Mode damping_mode = BondDamping::Mode::full_vector;
+        LatticeSprings::Law springs = LatticeSprings::Law::geometric;
     };
     static constexpr std::string_view type = "spring_lattice_2d";
     static ParamSpec<Params> spec();

@@ -8,16 +8,6 @@
 
 namespace frictionlab {
 
-namespace {
-
-RateState::Law parse_law(const std::string& s) {
-    if (s == "aging") return RateState::Law::aging;
-    if (s == "slip") return RateState::Law::slip;
-    throw InputError("rate_state: unknown law '" + s + "' (aging, slip)");
-}
-
-}  // namespace
-
 ParamSpec<RateState::Params> RateState::spec() {
     ParamSpec<Params> s(
         "Rate-and-state friction (Dieterich 1979, doi:10.1029/JB084iB05p02161; Ruina 1983, "
@@ -35,15 +25,14 @@ ParamSpec<RateState::Params> RateState::spec() {
     s.add("initial_velocity", &Params::initial_velocity,
           "psi starts at its steady state psi_ss = f0 - b ln(v/v0) for this velocity (both laws).")
         .unit("m/s").greater_than(0);
-    s.add("law", &Params::law,
-          "State evolution: aging, dpsi/dt = (b v0/D_c)[exp((f0 - psi)/b) - |v|/v0]; or slip, "
-          "dpsi/dt = -(|v|/D_c)(psi - psi_ss(v)).")
-        .one_of({"aging", "slip"});
+    s.choice("law", &Params::law, {{"aging", Law::aging}, {"slip", Law::slip}},
+             "State evolution: aging, dpsi/dt = (b v0/D_c)[exp((f0 - psi)/b) - |v|/v0]; or slip, "
+             "dpsi/dt = -(|v|/D_c)(psi - psi_ss(v)).");
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     return s;
 }
 
-RateState::RateState(const Params& params, const Context& ctx) : p_(params), law_(parse_law(params.law)) {
+RateState::RateState(const Params& params, const Context& ctx) : p_(params), law_(params.law) {
     const std::string name = ctx.name.empty() ? std::string(type) : ctx.name;
     if (!ctx.body || !ctx.quantities || !ctx.aux)
         throw InputError(name + ": needs the bulk model's body, the run's quantities and an aux allocator");
@@ -52,7 +41,7 @@ RateState::RateState(const Params& params, const Context& ctx) : p_(params), law
     offset_ = ctx.aux->allocate(n);
     Quantities& q = *ctx.quantities;
     const std::string& set = params.node_set;
-    normal_force_ = &q.field("normal_force", set, n, "N", "Normal contact force P_b on each interface node.");
+    normal_force_ = &q.needed_field("normal_force", set, n, name);
     friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from the friction law.");
     state_ = &q.field("state_variable", set, n, "1", "Rate-and-state variable psi of the block.");
 }
@@ -72,7 +61,7 @@ double RateState::state_rate(double v, double psi) const {
 }
 
 std::string RateState::describe() const {
-    return fmt::format("rate-and-state friction ({} law, a={:.3g}, b={:.3g}, D_c={:.3g} m)", p_.law, p_.a, p_.b,
+    return fmt::format("rate-and-state friction ({} law, a={:.3g}, b={:.3g}, D_c={:.3g} m)", law_ == Law::aging ? "aging" : "slip", p_.a, p_.b,
                        p_.d_c);
 }
 

@@ -35,6 +35,7 @@ namespace frictionlab {
 /// The law is smooth: no discrete state, no events, nothing to commit; it stores no energy.
 class RateState final : public FrictionLaw {
 public:
+    enum class Law { aging, slip };
     struct Params {
         double a = 0.008;
         double b = 0.012;
@@ -42,10 +43,9 @@ public:
         double f0 = 0.6;
         double v0 = 1e-6;
         double initial_velocity = 1e-9;
-        std::string law = "aging";
+        Law law = Law::aging;
         std::string node_set = "interface";
     };
-    enum class Law { aging, slip };
 
     static constexpr std::string_view type = "rate_state";
     static ParamSpec<Params> spec();

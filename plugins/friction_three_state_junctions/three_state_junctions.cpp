@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/random.hpp"
 
 namespace frictionlab {
@@ -37,25 +38,6 @@ std::string angle_rule(const Params& p) {
 
 std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
-ThreeStateJunctions::Removal parse_removal(const std::string& s) {
-    if (s == "random") return ThreeStateJunctions::Removal::random;
-    if (s == "most_loaded_pinned") return ThreeStateJunctions::Removal::most_loaded_pinned;
-    if (s == "non_pinned_first") return ThreeStateJunctions::Removal::non_pinned_first;
-    throw InputError("three_state_junctions: unknown removal '" + s +
-                     "' (random, most_loaded_pinned, non_pinned_first)");
-}
-
-ThreeStateJunctions::SettleOverload parse_settle_overload(const std::string& s) {
-    if (s == "hold") return ThreeStateJunctions::SettleOverload::hold;
-    if (s == "slip_and_repin") return ThreeStateJunctions::SettleOverload::slip_and_repin;
-    throw InputError("three_state_junctions: unknown settle_overload '" + s + "' (hold, slip_and_repin)");
-}
-
-const Params& validated(const Params& p) {
-    for (const std::string& error : {angle_rule(p), order_rule(p)})
-        if (!error.empty()) throw InputError("three_state_junctions: " + error);
-    return p;
-}
 
 }  // namespace
 
@@ -92,15 +74,18 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
     s.add("initial_angle", &Params::initial_angle,
           "Contact angle phi0 of a junction entering the dislocated state; tan(phi) decays linearly to 0 over t_d.")
         .unit("rad").at_least(0).less_than(std::numbers::pi / 2);
-    s.add("removal", &Params::removal,
-          "Which junctions go when P_b falls: uniformly at random, the most loaded pinned ones first, or the "
-          "sliding and dislocated ones first (theory.md B.7).")
-        .one_of({"random", "most_loaded_pinned", "non_pinned_first"});
-    s.add("settle_overload", &Params::settle_overload,
-          "While friction events are off (settling, theory.md B.18a), a pinned junction loaded above mu_s p: "
-          "'slip_and_repin' slips at once and re-pins carrying s mu_d p, as a junction that slid comes to rest; "
-          "'hold' keeps it pinned at any force (the run is refused if one is still above mu_s p when loading starts).")
-        .one_of({"hold", "slip_and_repin"});
+    s.choice("removal", &Params::removal,
+             {{"random", Removal::random},
+              {"most_loaded_pinned", Removal::most_loaded_pinned},
+              {"non_pinned_first", Removal::non_pinned_first}},
+             "Which junctions go when P_b falls: uniformly at random, the most loaded pinned ones first, or the "
+             "sliding and dislocated ones first (theory.md B.7).");
+    s.choice("settle_overload", &Params::settle_overload,
+             {{"hold", SettleOverload::hold}, {"slip_and_repin", SettleOverload::slip_and_repin}},
+             "While friction events are off (settling, theory.md B.18a), a pinned junction loaded above mu_s p: "
+             "'slip_and_repin' slips at once and re-pins carrying s mu_d p, as a junction that slid comes to rest; "
+             "'hold' keeps it pinned at any force (the run is refused if one is still above mu_s p when loading "
+             "starts).");
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     s.rule("initial_angle", angle_rule);
     s.rule("mu_d", order_rule);
@@ -121,13 +106,13 @@ double ThreeStateJunctions::junction_stiffness(const Params& p) {
 ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ctx)
     : name_(ctx.name.empty() ? std::string(type) : ctx.name),
       seed_(ctx.seed),
-      p_(junction_load(validated(params))),
+      p_(junction_load(spec().checked(params))),
       k_s_(junction_stiffness(params)),
       mu_d_p_(params.mu_d * p_),
       threshold_(params.mu_s * p_),
       tan_phi0_(std::tan(params.initial_angle)),
-      removal_(parse_removal(params.removal)),
-      settle_overload_(parse_settle_overload(params.settle_overload)),
+      removal_(params.removal),
+      settle_overload_(params.settle_overload),
       sampler_(ctx.seed, {params.sliding_time_mean, params.sliding_time_sd},
                {params.dislocated_time_mean, params.dislocated_time_sd}),
       next_event_(infinity) {
@@ -136,11 +121,9 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
     const Index n = static_cast<Index>(nodes_.size());
     Quantities& q = *ctx.quantities;
     const std::string& set = params.node_set;
-    normal_force_ = &q.field("normal_force", set, n, "N", "Normal contact force P_b on each interface node.");
+    normal_force_ = &q.needed_field("normal_force", set, n, name_);
     friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from its junctions, -sum_j f_j.");
-    pinned_count_ = &q.field("junctions_pinned", set, n, "1", "Number of pinned junctions of the block.");
-    sliding_count_ = &q.field("junctions_sliding", set, n, "1", "Number of sliding junctions of the block.");
-    dislocated_count_ = &q.field("junctions_dislocated", set, n, "1", "Number of dislocated junctions of the block.");
+    counts_ = JunctionCounts::publish(q, set, n);
     // Each junction is a contact of mean radius rbar: the real contact area is N pi rbar^2 (Li2020 §2.2).
     q.scalar("junction_area", "m^2", "Real contact area of one junction, pi rbar^2.") =
         std::numbers::pi * params.contact_radius * params.contact_radius;
@@ -169,9 +152,9 @@ void ThreeStateJunctions::add_forces(const StageView& s, ForceView& f) {
 
 void ThreeStateJunctions::publish_counts(Index i) {
     const BlockJunctions& b = blocks_[static_cast<std::size_t>(i)];
-    (*pinned_count_)[i] = static_cast<double>(b.pinned());
-    (*sliding_count_)[i] = static_cast<double>(b.sliding());
-    (*dislocated_count_)[i] = static_cast<double>(b.dislocated());
+    (*counts_.pinned)[i] = static_cast<double>(b.pinned());
+    (*counts_.sliding)[i] = static_cast<double>(b.sliding());
+    (*counts_.dislocated)[i] = static_cast<double>(b.dislocated());
 }
 
 double ThreeStateJunctions::potential_energy(const StageView& s) const {

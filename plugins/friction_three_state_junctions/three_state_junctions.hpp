@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
@@ -80,6 +81,9 @@ namespace frictionlab {
 /// New junctions enter unloaded (f0 = 0) and store nothing.
 class ThreeStateJunctions final : public FrictionLaw {
 public:
+    enum class Removal { random, most_loaded_pinned, non_pinned_first };
+    /// What a pinned junction does above mu_s p while friction events are off (settling, B.18).
+    enum class SettleOverload { hold, slip_and_repin };
     struct Params {
         double hardness = 300e6;
         double contact_radius = 10e-6;
@@ -93,14 +97,10 @@ public:
         double dislocated_time_mean = 1e-3;
         double dislocated_time_sd = 3e-4;
         double initial_angle = 0.0349066;
-        std::string removal = "random";
-        std::string settle_overload = "slip_and_repin";
+        Removal removal = Removal::random;
+        SettleOverload settle_overload = SettleOverload::slip_and_repin;
         std::string node_set = "interface";
     };
-    enum class Removal { random, most_loaded_pinned, non_pinned_first };
-    /// What a pinned junction does above mu_s p while friction events are off (settling, B.18).
-    enum class SettleOverload { hold, slip_and_repin };
-
     static constexpr std::string_view type = "three_state_junctions";
     static ParamSpec<Params> spec();
     /// p = pi rbar^2 H_d (Eq. 7), N.
@@ -157,7 +157,8 @@ private:
     std::vector<double> x_start_;
     std::vector<std::uint64_t> removal_draws_;
     const Eigen::ArrayXd* normal_force_;
-    Eigen::ArrayXd *friction_force_, *pinned_count_, *sliding_count_, *dislocated_count_;
+    Eigen::ArrayXd* friction_force_;
+    JunctionCounts::Writable counts_;
     bool events_ = true;
     double next_event_;
 };

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/junction_counts.hpp"
+#include "frictionlab/model/random.hpp"
 
 namespace frictionlab {
 
@@ -20,11 +22,6 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 
 std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
-const Params& validated(const Params& p) {
-    if (const std::string error = order_rule(p); !error.empty()) throw InputError("two_state_junctions: " + error);
-    if (p.junctions_per_block < 1) throw InputError("two_state_junctions: junctions_per_block must be >= 1");
-    return p;
-}
 
 }  // namespace
 
@@ -54,23 +51,22 @@ ParamSpec<Params> TwoStateJunctions::spec() {
 
 TwoStateJunctions::TwoStateJunctions(const Params& params, const Context& ctx)
     : name_(ctx.name.empty() ? std::string(type) : ctx.name),
-      n_s_(validated(params).junctions_per_block),
+      n_s_(spec().checked(params).junctions_per_block),
       mu_s_(params.mu_s),
       mu_d_(params.mu_d),
       k_bar_(params.junction_stiffness),
-      // Only the sliding draws are used; the dislocated Gaussian of the three-state law stays idle.
-      sampler_(ctx.seed, {params.slipping_time_mean, params.slipping_time_sd}, {}),
+      seed_(ctx.seed),
+      slipping_time_mean_(params.slipping_time_mean),
+      slipping_time_sd_(params.slipping_time_sd),
       next_event_(infinity) {
     if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
     nodes_ = ctx.body->nodes(params.node_set);
     const Index n = static_cast<Index>(nodes_.size());
     Quantities& q = *ctx.quantities;
     const std::string& set = params.node_set;
-    normal_force_ = &q.field("normal_force", set, n, "N", "Normal contact force P_b on each interface node.");
+    normal_force_ = &q.needed_field("normal_force", set, n, name_);
     friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from its junctions, -sum_j f_j.");
-    pinned_count_ = &q.field("junctions_pinned", set, n, "1", "Number of pinned junctions of the block.");
-    sliding_count_ = &q.field("junctions_sliding", set, n, "1", "Number of sliding junctions of the block.");
-    dislocated_count_ = &q.field("junctions_dislocated", set, n, "1", "Number of dislocated junctions of the block.");
+    counts_ = JunctionCounts::publish(q, set, n);
     const auto size = static_cast<std::size_t>(n_s_);
     blocks_.resize(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
@@ -109,9 +105,9 @@ void TwoStateJunctions::add_forces(const StageView& s, ForceView& f) {
         const double force = -block_force(i, s.x[nodes_[k]]);
         f.fx[nodes_[k]] += force;
         (*friction_force_)[i] = force;
-        (*pinned_count_)[i] = static_cast<double>(blocks_[k].pinned);
-        (*sliding_count_)[i] = static_cast<double>(n_s_ - blocks_[k].pinned);
-        (*dislocated_count_)[i] = 0;  // no third state; declared so junction-reading observers work unchanged
+        (*counts_.pinned)[i] = static_cast<double>(blocks_[k].pinned);
+        (*counts_.sliding)[i] = static_cast<double>(n_s_ - blocks_[k].pinned);
+        (*counts_.dislocated)[i] = 0;  // no third state; declared so junction-reading observers work unchanged
     }
 }
 
@@ -189,7 +185,8 @@ bool TwoStateJunctions::break_overloaded(Block& b, Index i, double t) const {
         if (std::abs(f) <= b.f_s) continue;
         b.slipping[j] = 1;
         b.sign[j] = f > 0 ? 1.0 : -1.0;
-        b.deadline[j] = t + sampler_.sliding(static_cast<std::uint64_t>(i), j, b.draws[j]);
+        const random::Key key{seed_, static_cast<std::uint64_t>(i), j, random::Purpose::sliding_time};
+        b.deadline[j] = t + random::truncated_normal(key, b.draws[j], slipping_time_mean_, slipping_time_sd_, 0.0);
     }
     return true;
 }

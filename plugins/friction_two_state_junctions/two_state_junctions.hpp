@@ -4,10 +4,10 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
-#include "lifetime_sampler.hpp"
 
 namespace frictionlab {
 
@@ -112,11 +112,13 @@ private:
     std::string name_;
     Index n_s_;
     double mu_s_, mu_d_, k_bar_;
-    LifetimeSampler sampler_;
+    std::uint64_t seed_;
+    double slipping_time_mean_, slipping_time_sd_;  // Gaussian t_s, truncated to t > 0 (random.hpp)
     NodeSet nodes_;
     std::vector<Block> blocks_;
     const Eigen::ArrayXd* normal_force_;
-    Eigen::ArrayXd *friction_force_, *pinned_count_, *sliding_count_, *dislocated_count_;
+    Eigen::ArrayXd* friction_force_;
+    JunctionCounts::Writable counts_;
     bool events_ = true;
     double next_event_;
 };

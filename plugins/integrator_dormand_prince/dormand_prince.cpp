@@ -92,9 +92,7 @@ ParamSpec<Params> DormandPrince::spec() {
 
 DormandPrince::DormandPrince(const Params& p, const Context& ctx)
     : p_(p), log_(ctx.log), controller_({p.safety, p.growth_limit, p.shrink_limit}), h_(p.initial_step) {
-    // The bounds are checked with the scene; the rule again here, for objects built in code.
-    for (const std::string& error : {dt_min_rule(p), initial_step_rule(p)})
-        if (!error.empty()) throw InputError("dormand_prince: " + error);
+    spec().checked(p);  // Params built in code pass the scene's checks too
 }
 
 DormandPrince::~DormandPrince() {

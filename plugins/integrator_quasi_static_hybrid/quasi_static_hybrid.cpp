@@ -21,9 +21,9 @@ constexpr int max_attempts = 4;
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<Integrator> dynamic_scheme(const Params& p, const Context& ctx) {
-    if (p.dynamic == "rk4") return std::make_unique<Rk4>(Rk4::Params{p.dt}, ctx);
-    if (p.dynamic == "velocity_verlet") return std::make_unique<VelocityVerlet>(VelocityVerlet::Params{p.dt}, ctx);
-    throw InputError(fmt::format("quasi_static_hybrid: dynamic = '{}' is not rk4 or velocity_verlet", p.dynamic));
+    if (p.dynamic == QuasiStaticHybrid::Dynamic::velocity_verlet)
+        return std::make_unique<VelocityVerlet>(VelocityVerlet::Params{p.dt}, ctx);
+    return std::make_unique<Rk4>(Rk4::Params{p.dt}, ctx);
 }
 
 std::string hold_rule(const Params& p) {
@@ -42,7 +42,8 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
         "from event to event (sparse LDL^T of the stiffness, Newton on the geometric springs, the viscous lag "
         "of the steady velocity field), ruptures by an explicit scheme at its step; switching with hysteresis. "
         "Effects that cannot describe their quasi-static regime keep the run dynamic.");
-    s.add("dynamic", &Params::dynamic, "Explicit scheme of the dynamic phase.").one_of({"rk4", "velocity_verlet"});
+    s.choice("dynamic", &Params::dynamic, {{"rk4", Dynamic::rk4}, {"velocity_verlet", Dynamic::velocity_verlet}},
+             "Explicit scheme of the dynamic phase.");
     s.add("dt", &Params::dt, "Time step of the dynamic phase.").unit("s").greater_than(0);
     s.add("quiet_speed", &Params::quiet_speed,
           "The dynamic phase may turn quiet while every node's velocity is within this of the quasi-static "
@@ -77,11 +78,10 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
 }
 
 QuasiStaticHybrid::QuasiStaticHybrid(const Params& p, const Context& ctx)
-    : p_(p),
+    : p_(spec().checked(p)),
       log_(ctx.log),
       dynamic_(dynamic_scheme(p, ctx)),
       solver_({.position_tolerance = p.position_tolerance, .rate_step = p.dt}) {
-    if (const std::string error = hold_rule(p); !error.empty()) throw InputError("quasi_static_hybrid: " + error);
 }
 
 QuasiStaticHybrid::~QuasiStaticHybrid() {

@@ -33,8 +33,10 @@ namespace frictionlab {
 /// in the energy observer's residual, bounded by 1/2 M quiet_speed^2.
 class QuasiStaticHybrid final : public Integrator {
 public:
+    /// The explicit scheme of the dynamic phase.
+    enum class Dynamic { rk4, velocity_verlet };
     struct Params {
-        std::string dynamic = "rk4";
+        Dynamic dynamic = Dynamic::rk4;
         double dt = 2e-7;
         double quiet_speed = 1e-5;
         double quiet_hold = 1e-4;

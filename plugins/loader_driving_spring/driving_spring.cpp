@@ -26,10 +26,9 @@ ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
           "trailing block, takes any h up to the slider's height and ignores the torque F_S h).")
         .unit("m")
         .at_least(0);
-    s.add("attachment", &Params::attachment,
-          "node: h must be the height of a node; interpolated: the driving point is interpolated linearly "
-          "between the two nearest nodes and the force shared with the same weights.")
-        .one_of({"node", "interpolated"});
+    s.choice("attachment", &Params::attachment, {{"node", Attach::node}, {"interpolated", Attach::interpolated}},
+             "node: h must be the height of a node; interpolated: the driving point is interpolated linearly "
+             "between the two nearest nodes and the force shared with the same weights.");
     s.add("node_set", &Params::node_set, "Node set the driving point lies on (a column of nodes).");
     return s;
 }
@@ -48,8 +47,6 @@ NodeHeights sorted_heights(const Body& body, const NodeSet& set) {
 }
 
 std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, const Body& body) {
-    if (p.attachment != "node" && p.attachment != "interpolated")
-        throw InputError(fmt::format("driving_spring: attachment = '{}' is not node or interpolated", p.attachment));
     const NodeSet& set = body.nodes(p.node_set);
     if (set.empty()) throw InputError("driving_spring: node set '" + p.node_set + "' is empty");
     const NodeHeights n = sorted_heights(body, set);
@@ -68,7 +65,7 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     const auto above = std::lower_bound(n.heights.begin(), n.heights.end(), p.height - tolerance);
     const std::size_t k = std::min<std::size_t>(above - n.heights.begin(), n.heights.size() - 1);
     if (std::abs(n.heights[k] - p.height) <= tolerance) return {{n.nodes[k], 1.0}};
-    if (p.attachment == "node")
+    if (p.attachment == DrivingSpring::Attach::node)
         throw InputError(fmt::format(
             "driving_spring: height = {:g} m is not the height of a node of '{}'; the nearest node heights are "
             "{:g} m and {:g} m (or use attachment: interpolated)",

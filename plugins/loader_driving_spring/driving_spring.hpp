@@ -30,12 +30,14 @@ namespace frictionlab {
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class DrivingSpring final : public Loader {
 public:
+    /// How the driving point at height h meets the node set: at a node, or interpolated between two.
+    enum class Attach { node, interpolated };
     struct Params {
         double stiffness = 0.8e6;     // K_S, N/m
         double velocity = 1e-4;       // V, m/s
         double reversal_period = 0;   // T, s; 0: never reverses
         double height = 0.005;        // h, m
-        std::string attachment = "node";
+        Attach attachment = Attach::node;
         std::string node_set = "trailing_edge";
     };
     static constexpr std::string_view type = "driving_spring";

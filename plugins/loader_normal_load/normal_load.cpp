@@ -22,10 +22,10 @@ ParamSpec<NormalLoad::Params> NormalLoad::spec() {
         .unit("1")
         .at_least(-1)
         .at_most(1);
-    s.add("formula", &Params::formula,
-          "normalised: sums to F_N (theory.md B.1); paper_literal: Eq. 3 as printed, which sums to "
-          "F_N (1 + theta/N_x).")
-        .one_of({"normalised", "paper_literal"});
+    s.choice("formula", &Params::formula,
+             {{"normalised", Formula::normalised}, {"paper_literal", Formula::paper_literal}},
+             "normalised: sums to F_N (theory.md B.1); paper_literal: Eq. 3 as printed, which sums to "
+             "F_N (1 + theta/N_x).");
     s.add("ramp_time", &Params::ramp_time,
           "Time over which the load grows linearly from 0, from the start of the first stage the loader is "
           "active in; 0 applies it at once.")
@@ -40,7 +40,7 @@ Eigen::ArrayXd load_weights(const NormalLoad::Params& p, Index n) {
     Eigen::ArrayXd w(n);
     for (Index k = 0; k < n; ++k) {
         const double i = k + 1.0;
-        const double shape = p.formula == "paper_literal" ? (2 * i - n) / n
+        const double shape = p.formula == NormalLoad::Formula::paper_literal ? (2 * i - n) / n
                              : n > 1                      ? (2 * i - n - 1) / (n - 1.0)
                                                           : 0.0;
         w(k) = p.total_force / n * (1 + p.theta * shape);
@@ -53,8 +53,6 @@ NormalLoad::NormalLoad(const Params& p, const Context& ctx)
     : params_(p),
       nodes_(ctx.body->nodes(p.node_set)),
       applied_(ctx.quantities->scalar("normal_load", "N", "Total normal load applied on the top surface now.")) {
-    if (p.formula != "normalised" && p.formula != "paper_literal")
-        throw InputError(fmt::format("normal_load: formula = '{}' is not normalised or paper_literal", p.formula));
     if (nodes_.empty()) throw InputError("normal_load: node set '" + p.node_set + "' is empty");
     weights_ = load_weights(p, static_cast<Index>(nodes_.size()));
     full_total_ = weights_.sum();
@@ -62,7 +60,7 @@ NormalLoad::NormalLoad(const Params& p, const Context& ctx)
 
 std::string NormalLoad::describe() const {
     return fmt::format("normal load {:g} N on '{}' (theta={:g}, {}{})", params_.total_force, params_.node_set,
-                       params_.theta, params_.formula,
+                       params_.theta, spec().text(params_, "formula"),
                        params_.ramp_time > 0 ? fmt::format(", ramp {:g} s", params_.ramp_time) : "");
 }
 

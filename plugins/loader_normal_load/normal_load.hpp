@@ -19,10 +19,11 @@ namespace frictionlab {
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class NormalLoad final : public Loader {
 public:
+    enum class Formula { normalised, paper_literal };
     struct Params {
         double total_force = 400;  // F_N, N
         double theta = 0;
-        std::string formula = "normalised";
+        Formula formula = Formula::normalised;
         double ramp_time = 0;  // s
         std::string node_set = "top";
     };

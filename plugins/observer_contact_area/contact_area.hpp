@@ -49,7 +49,7 @@ public:
         std::vector<double> blocks{5};  // whole numbers; real_list is the scene's list type
         std::string prefix = "contact_area";
         std::string loading_stage = "load";
-        std::string format = "csv";
+        TableFormat format = TableFormat::csv;
     };
     static constexpr std::string_view type = "contact_area";
     static ParamSpec<Params> spec();

@@ -24,7 +24,7 @@ class InterfaceHistory final : public Observer {
 public:
     struct Params {
         std::string node_set = "interface";
-        std::string format = "csv";
+        TableFormat format = TableFormat::csv;
     };
     static constexpr std::string_view type = "interface_history";
     static ParamSpec<Params> spec();

@@ -31,11 +31,11 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     ParamSpec<Params> s("Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
                         "theory.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
                         "as CSV tables and a summary with the global static coefficient.");
-    s.add("criterion", &Params::criterion,
-          "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
-          "pinned, or it has none; needs the junction-count fields) or 'slip' (it slipped more than slip_threshold "
-          "within quiet_time).")
-        .one_of({"pinned_fraction", "slip"});
+    s.choice("criterion", &Params::criterion,
+             {{"pinned_fraction", Criterion::pinned_fraction}, {"slip", Criterion::slip}},
+             "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
+             "pinned, or it has none; needs the junction-count fields) or 'slip' (it slipped more than "
+             "slip_threshold within quiet_time).");
     s.add("ruptured_fraction", &Params::ruptured_fraction,
           "Criterion pinned_fraction: fraction of a block's junctions that must be sliding or dislocated.")
         .unit("1")
@@ -82,7 +82,7 @@ void Precursors::begin(const RunView& view) {
     const auto n = static_cast<Index>(interface_.size());
     if (n == 0) throw RunError("precursors: the node set 'interface' is empty");
 
-    if (params_.criterion == "pinned_fraction")
+    if (params_.criterion == Criterion::pinned_fraction)
         counts_ = JunctionCounts::require(view.quantities, n, "precursors (criterion 'pinned_fraction')");
     else
         slip_criterion_.emplace(params_.slip_threshold, params_.quiet_time);
@@ -104,7 +104,7 @@ void Precursors::begin(const RunView& view) {
 
     slip_.resize(n);
     ruptured_.resize(n);
-    const TableFormat format = table_format(params_.format);
+    const TableFormat format = params_.format;
     events_ = open_table(view.output_directory / params_.events_file, event_columns, view.info, format);
     fronts_ = open_table(view.output_directory / params_.fronts_file, front_columns, view.info, format);
     row_.reserve(event_columns.size());

@@ -45,8 +45,9 @@ namespace frictionlab {
 /// junctions are still being created, is not taken for a rupture.
 class Precursors final : public Observer {
 public:
+    enum class Criterion { pinned_fraction, slip };
     struct Params {
-        std::string criterion = "pinned_fraction";
+        Criterion criterion = Criterion::pinned_fraction;
         double ruptured_fraction = 0.5;
         double slip_threshold = 0.5e-6;
         double quiet_time = 2e-3;
@@ -56,7 +57,7 @@ public:
         std::string events_file = "precursors.csv";
         std::string fronts_file = "precursor_fronts.csv";
         std::string summary_file = "precursors_summary.yaml";
-        std::string format = "csv";
+        TableFormat format = TableFormat::csv;
     };
     static constexpr std::string_view type = "precursors";
     static ParamSpec<Params> spec();

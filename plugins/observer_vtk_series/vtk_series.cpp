@@ -23,6 +23,7 @@
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/provenance.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
@@ -97,14 +98,13 @@ ParamSpec<VtkSeries::Params> VtkSeries::spec() {
     s.add("prefix", &Params::prefix,
           "Name of the collection <prefix>.pvd and of the folder <prefix>/ of its .vtu files, in the run's output "
           "directory.");
-    s.add("cells", &Params::cells,
-          "Draw the lattice as its quad cells or as its springs (line cells); a body without quads uses its springs.")
-        .one_of({"quads", "bonds"});
+    s.choice("cells", &Params::cells, {{"quads", Cells::quads}, {"bonds", Cells::bonds}},
+             "Draw the lattice as its quad cells or as its springs (line cells); a body without quads uses its "
+             "springs.");
     s.add("compress", &Params::compress, "ZLib-compress the binary data of the .vtu files.");
-    s.add("points", &Params::points,
-          "Points at the reference positions, with `displacement` for ParaView's Warp By Vector, or at the deformed "
-          "positions (then do not warp: the displacement would count twice).")
-        .one_of({"reference", "deformed"});
+    s.choice("points", &Params::points, {{"reference", Points::reference}, {"deformed", Points::deformed}},
+             "Points at the reference positions, with `displacement` for ParaView's Warp By Vector, or at the "
+             "deformed positions (then do not warp: the displacement would count twice).");
     s.rule("prefix", prefix_problem);
     return s;
 }
@@ -150,7 +150,7 @@ void VtkSeries::begin(const RunView& view) {
 }
 
 void VtkSeries::build_cells(const Body& body) {
-    if (params_.cells == "quads" && !body.cells.empty()) return insert_cells(*grid_, VTK_QUAD, body.cells);
+    if (params_.cells == Cells::quads && !body.cells.empty()) return insert_cells(*grid_, VTK_QUAD, body.cells);
     if (!body.bonds.empty()) return insert_cells(*grid_, VTK_LINE, body.bonds);
     // A lone block has neither: vertices keep it visible.
     std::vector<std::array<Index, 1>> vertices(static_cast<std::size_t>(body.size()));
@@ -159,7 +159,7 @@ void VtkSeries::build_cells(const Body& body) {
 }
 
 void VtkSeries::add_strain(const Body& body) {
-    if (params_.cells != "quads" || body.cells.empty()) return;
+    if (params_.cells != Cells::quads || body.cells.empty()) return;
     // Bilinear quad, corners counter-clockwise: shape-function derivatives at the centre.
     constexpr double dxi[4] = {-0.25, 0.25, 0.25, -0.25}, deta[4] = {-0.25, -0.25, 0.25, 0.25};
     corner_gradients_.reserve(body.cells.size());
@@ -238,8 +238,11 @@ void VtkSeries::add_fields(const RunView& view) {
 
 void VtkSeries::add_pinned_fraction() {
     vtkPointData* data = grid_->GetPointData();
-    const auto find = [&](const char* name) { return vtkDoubleArray::SafeDownCast(data->GetArray(name)); };
-    junctions_ = {find("junctions_pinned"), find("junctions_sliding"), find("junctions_dislocated"), nullptr};
+    const auto find = [&](std::string_view name) {
+        return vtkDoubleArray::SafeDownCast(data->GetArray(std::string(name).c_str()));
+    };
+    junctions_ = {find(frictionlab::JunctionCounts::pinned_name), find(frictionlab::JunctionCounts::sliding_name),
+                  find(frictionlab::JunctionCounts::dislocated_name), nullptr};
     // A friction law that publishes its own pinned_fraction is shown as published.
     if (junctions_.pinned && junctions_.sliding && junctions_.dislocated && !data->HasArray("pinned_fraction"))
         junctions_.fraction = add_point_array("pinned_fraction", 1, "1");
@@ -274,7 +277,7 @@ void VtkSeries::update(const RunView& view) {
     const StageView& s = view.state;
     const Body& body = view.body;
     const Eigen::VectorXd& f = view.system.net_force();
-    if (params_.points == "deformed") {
+    if (params_.points == Points::deformed) {
         set_plane_vectors(points_, s.x, s.z);
         grid_->GetPoints()->Modified();
     }

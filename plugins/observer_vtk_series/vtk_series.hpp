@@ -68,11 +68,13 @@ namespace frictionlab {
 /// the snapshots at their simulated times. In Python: vtk.vtkXMLUnstructuredGridReader per file.
 class VtkSeries final : public Observer {
 public:
+    enum class Cells { quads, bonds };
+    enum class Points { reference, deformed };
     struct Params {
         std::string prefix = "lattice";
-        std::string cells = "quads";
+        Cells cells = Cells::quads;
         bool compress = true;
-        std::string points = "reference";
+        Points points = Points::reference;
     };
     static constexpr std::string_view type = "vtk_series";
     static ParamSpec<Params> spec();

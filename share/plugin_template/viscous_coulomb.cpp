@@ -39,14 +39,16 @@ public:
         return s;
     }
 
-    ViscousCoulomb(const Params& params, const frictionlab::Context& ctx) : p_(params) {
+    // spec().checked(): Params built in code pass the checks a scene's values pass.
+    ViscousCoulomb(const Params& params, const frictionlab::Context& ctx) : p_(spec().checked(params)) {
         if (!ctx.body || !ctx.quantities)
             throw frictionlab::InputError("viscous_coulomb: needs the bulk model's body and the run's quantities");
         nodes_ = ctx.body->nodes(p_.node_set);
         const Index n = static_cast<Index>(nodes_.size());
         // The base contact (a loader, evaluated before the friction law) publishes the normal force
-        // of each interface block; declaring the same field here gives this law read access to it.
-        normal_force_ = &ctx.quantities->field("normal_force", p_.node_set, n, "N", "Normal contact force.");
+        // of each interface block; declaring it needed gives this law read access to it, and a scene
+        // without a base contact is refused at this law rather than run with zeros.
+        normal_force_ = &ctx.quantities->needed_field("normal_force", p_.node_set, n, ctx.name);
         friction_force_ = &ctx.quantities->field("friction_force", p_.node_set, n, "N", "x-force from friction.");
     }
 

@@ -96,6 +96,18 @@ TEST_F(HostileInput, CheckRefusesWhatRunWouldRefuseAtSetUp) {
     expect_refused(tiny() + " --set bulk.nx=4000001 --set bulk.length=10000", "nodes would need about 5.16 GB");
 }
 
+TEST_F(HostileInput, AFrictionLawWithoutTheNormalForceItReadsIsRefusedAtTheLaw) {
+    // Without a base contact nothing computes the normal force: the law would see zeros and never
+    // hold. The scene is refused at the friction block, naming the field.
+    std::string scene = read_text(tiny());
+    const std::string contact = "  - type: rigid_base_contact\n";
+    ASSERT_NE(scene.find(contact), std::string::npos);
+    scene.replace(scene.find(contact), contact.size(), "");
+    std::ofstream(dir_ / "no_contact.yaml") << scene << "friction:\n  type: three_state_junctions\n";
+    expect_refused((dir_ / "no_contact.yaml").string(),
+                   "no_contact.yaml:32:3: error: friction: three_state_junctions reads the field 'normal_force'");
+}
+
 TEST_F(HostileInput, AContactRadiusGivingNoJunctionStopsTheRunNamingIt) {
     const auto r = frictionlab("run -q " + every_observer() + " -o out --set friction.contact_radius=1.0", dir_);
     EXPECT_EQ(r.code, 1) << r.output;

@@ -15,7 +15,8 @@ public:
         int nz = 9;
         double spacing = 1e-3;
         double density = 1200;
-        std::string geometry = "geometric";
+        enum class Geometry { geometric, linear };
+        Geometry geometry = Geometry::geometric;
         bool periodic = false;
     };
     static constexpr std::string_view type = "fake_lattice";
@@ -25,7 +26,8 @@ public:
         s.add("nz", &Params::nz, "Nodes along z.").greater_than(0).at_most(1000);
         s.add("spacing", &Params::spacing, "Rest length of a spring.").unit("m").greater_than(0);
         s.add("density", &Params::density, "Mass density.").unit("kg/m^3").greater_than(0);
-        s.add("geometry", &Params::geometry, "Spring model.").one_of({"geometric", "linear"});
+        s.choice("geometry", &Params::geometry, {{"geometric", Params::Geometry::geometric}, {"linear", Params::Geometry::linear}},
+                 "Spring model.");
         s.add("periodic", &Params::periodic, "Periodic along x.");
         return s;
     }
@@ -49,7 +51,8 @@ public:
         double mu_s = 0.7;
         double mu_d = 0.35;
         std::vector<double> weights = {1.0, 0.5};
-        std::string state_model = "three_state";
+        enum class StateModel { two_state, three_state };
+        StateModel state_model = StateModel::three_state;
     };
     static constexpr std::string_view type = "fake_junctions";
     static ParamSpec<Params> spec() {
@@ -57,7 +60,8 @@ public:
         s.add("mu_s", &Params::mu_s, "Static coefficient.").unit("1").greater_than(0);
         s.add("mu_d", &Params::mu_d, "Dynamic coefficient.").unit("1").at_least(0);
         s.add("weights", &Params::weights, "Weights of the junction classes.").at_least(0).less_than(10);
-        s.add("state_model", &Params::state_model, "Junction states.").one_of({"two_state", "three_state"});
+        s.choice("state_model", &Params::state_model,
+                 {{"two_state", Params::StateModel::two_state}, {"three_state", Params::StateModel::three_state}}, "Junction states.");
         s.rule("mu_d", [](const Params& p) {
             return p.mu_d <= p.mu_s ? std::string() : fmt::format("must not exceed mu_s = {:g}, got {:g}", p.mu_s, p.mu_d);
         });
@@ -116,7 +120,7 @@ public:
         ParamSpec<Params> s("Drives a node set through a spring.");
         s.add("velocity", &Params::velocity, "Speed of the driver.").unit("m/s");
         s.add("stiffness", &Params::stiffness, "Spring constant.").unit("N/m").greater_than(0);
-        s.add("sets", &Params::sets, "Node sets driven.").one_of({"top", "trailing_edge", "leading_edge"});
+        s.add("sets", &Params::sets, "Node sets driven.").items_one_of({"top", "trailing_edge", "leading_edge"});
         return s;
     }
     FakeDriver(const Params&, const Context&) {}

@@ -27,6 +27,15 @@ JunctionCounts JunctionCounts::require(const Quantities& q, Index blocks, std::s
     return c;
 }
 
+JunctionCounts::Writable JunctionCounts::publish(Quantities& q, const std::string& node_set, Index blocks) {
+    const auto field = [&](std::string_view name, const char* doc) {
+        return &q.field(std::string(name), node_set, blocks, "1", doc);
+    };
+    return {field(pinned_name, "Number of pinned junctions of the block."),
+            field(sliding_name, "Number of sliding junctions of the block."),
+            field(dislocated_name, "Number of dislocated junctions of the block.")};
+}
+
 std::optional<JunctionCounts> JunctionCounts::find(const Quantities& q, Index blocks) {
     for (auto name : {pinned_name, sliding_name, dislocated_name}) {
         const Quantities::Field* f = q.find_field(name);

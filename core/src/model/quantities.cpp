@@ -4,17 +4,43 @@
 
 namespace frictionlab {
 
-Eigen::ArrayXd& Quantities::field(const std::string& name, const std::string& node_set, Eigen::Index size,
-                                  std::string unit, std::string doc) {
-    auto [it, inserted] = fields_.try_emplace(name);
-    Field& f = it->second;
+namespace {
+
+Quantities::Field& declared(std::map<std::string, Quantities::Field, std::less<>>& fields, const std::string& name,
+                            const std::string& node_set, Eigen::Index size) {
+    auto [it, inserted] = fields.try_emplace(name);
+    Quantities::Field& f = it->second;
     if (inserted) {
-        f = Field{node_set, std::move(unit), std::move(doc), Eigen::ArrayXd::Zero(size)};
+        f.node_set = node_set;
+        f.values = Eigen::ArrayXd::Zero(size);
     } else if (f.node_set != node_set || f.values.size() != size) {
         throw InputError("quantity '" + name + "' is declared twice with different node sets ('" + f.node_set +
                          "' and '" + node_set + "')");
     }
+    return f;
+}
+
+}  // namespace
+
+Eigen::ArrayXd& Quantities::field(const std::string& name, const std::string& node_set, Eigen::Index size,
+                                  std::string unit, std::string doc) {
+    Field& f = declared(fields_, name, node_set, size);
+    if (!f.published) f.unit = std::move(unit), f.doc = std::move(doc), f.published = true;
     return f.values;
+}
+
+const Eigen::ArrayXd& Quantities::needed_field(const std::string& name, const std::string& node_set,
+                                               Eigen::Index size, std::string reader) {
+    Field& f = declared(fields_, name, node_set, size);
+    f.readers.push_back(std::move(reader));
+    return f.values;
+}
+
+std::vector<Quantities::Unpublished> Quantities::unpublished_fields() const {
+    std::vector<Unpublished> out;
+    for (const auto& [name, f] : fields_)
+        if (!f.published && !f.readers.empty()) out.push_back({name, f.node_set, f.readers.front()});
+    return out;
 }
 
 double& Quantities::scalar(const std::string& name, std::string unit, std::string doc) {

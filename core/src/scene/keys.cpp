@@ -1,43 +1,51 @@
 #include "frictionlab/scene/keys.hpp"
 
+#include <cstdint>
 #include <limits>
 
 namespace frictionlab::detail {
 
-ParamInfo key(std::string name, ValueType type, ParamValue default_value, std::string doc, std::string unit) {
-    ParamInfo info;
-    info.key = std::move(name);
-    info.type = type;
-    info.default_value = std::move(default_value);
-    info.doc = std::move(doc);
-    info.unit = std::move(unit);
-    return info;
-}
+// Each group of keys is declared on a struct of its own, with the builder plugins use, so that the
+// format's keys get the same types, defaults (the member initialisers), bounds and docs.
+namespace {
 
-ParamInfo required(ParamInfo info) {
-    info.required = true;
-    return info;
-}
+struct Header {
+    std::string title;
+    std::int64_t seed = 0;
+    std::string output;
+};
 
-ParamInfo greater_than(ParamInfo info, double bound) {
-    info.greater_than = bound;
-    return info;
-}
+struct PluginPaths {
+    std::vector<std::string> plugin_paths;
+};
 
-ParamInfo at_least(ParamInfo info, double bound) {
-    info.at_least = bound;
-    return info;
-}
+struct Stage {
+    std::string name;
+    double duration = 0;
+    bool friction_events = true;
+    double max_speed_at_end = std::numeric_limits<double>::infinity();
+};
 
+struct LoaderKeys {
+    std::vector<std::string> stages;
+};
+
+struct ObserverKeys {
+    double every = 0;
+    std::int64_t every_steps = 0;
+};
+
+}  // namespace
 
 const std::vector<ParamInfo>& top_level_params() {
-    static const std::vector<ParamInfo> params = {
-        key("title", ValueType::string, std::string(), "A line describing the scene, for the run's records."),
-        at_least(key("seed", ValueType::integer, std::int64_t{0}, "Seed of every random draw of the run."), 0),
-        required(key("output", ValueType::string, std::string(),
-                     "Output directory, relative to the working directory.")),
-    };
-    return params;
+    static const ParamSpec<Header> spec = [] {
+        ParamSpec<Header> s;
+        s.add("title", &Header::title, "A line describing the scene, for the run's records.");
+        s.add("seed", &Header::seed, "Seed of every random draw of the run.").at_least(0);
+        s.add("output", &Header::output, "Output directory, relative to the working directory.").required();
+        return s;
+    }();
+    return spec.params();
 }
 
 const std::vector<std::string>& top_level_sections() {
@@ -47,36 +55,45 @@ const std::vector<std::string>& top_level_sections() {
 }
 
 const ParamInfo& plugin_paths_param() {
-    static const ParamInfo info = key("plugin_paths", ValueType::string_list, std::vector<std::string>(),
-                                      "Folders searched for plugins, relative to the scene file's folder.");
-    return info;
+    static const ParamSpec<PluginPaths> spec = [] {
+        ParamSpec<PluginPaths> s;
+        s.add("plugin_paths", &PluginPaths::plugin_paths,
+              "Folders searched for plugins, relative to the scene file's folder.");
+        return s;
+    }();
+    return spec.params().front();
 }
 
 const std::vector<ParamInfo>& stage_params() {
-    static const std::vector<ParamInfo> params = {
-        required(key("name", ValueType::string, std::string(), "Name of the stage, lower_snake_case, unique.")),
-        required(greater_than(key("duration", ValueType::real, 0.0, "Simulated time the stage lasts.", "s"), 0)),
-        key("friction_events", ValueType::boolean, true,
-            "Whether junctions may change state (false while settling)."),
-        greater_than(key("max_speed_at_end", ValueType::real, std::numeric_limits<double>::infinity(),
-                         "Largest node speed allowed at the end of the stage; absent: no check.", "m/s"),
-                     0),
-    };
-    return params;
+    static const ParamSpec<Stage> spec = [] {
+        ParamSpec<Stage> s;
+        s.add("name", &Stage::name, "Name of the stage, lower_snake_case, unique.").required();
+        s.add("duration", &Stage::duration, "Simulated time the stage lasts.").unit("s").greater_than(0).required();
+        s.add("friction_events", &Stage::friction_events, "Whether junctions may change state (false while settling).");
+        s.add("max_speed_at_end", &Stage::max_speed_at_end,
+              "Largest node speed allowed at the end of the stage; absent: no check.")
+            .unit("m/s")
+            .greater_than(0);
+        return s;
+    }();
+    return spec.params();
 }
 
 const std::vector<ParamInfo>& scene_level_params(Kind kind) {
     static const std::vector<ParamInfo> none;
-    static const std::vector<ParamInfo> loader = {
-        key("stages", ValueType::string_list, std::vector<std::string>(),
-            "The stages this loader acts in; absent: all stages."),
-    };
-    static const std::vector<ParamInfo> observer = {
-        greater_than(key("every", ValueType::real, 0.0, "Cadence in simulated time.", "s"), 0),
-        at_least(key("every_steps", ValueType::integer, std::int64_t{0}, "Cadence in integrator steps."), 1),
-    };
-    if (kind == Kind::loader) return loader;
-    if (kind == Kind::observer) return observer;
+    static const ParamSpec<LoaderKeys> loader = [] {
+        ParamSpec<LoaderKeys> s;
+        s.add("stages", &LoaderKeys::stages, "The stages this loader acts in; absent: all stages.");
+        return s;
+    }();
+    static const ParamSpec<ObserverKeys> observer = [] {
+        ParamSpec<ObserverKeys> s;
+        s.add("every", &ObserverKeys::every, "Cadence in simulated time.").unit("s").greater_than(0);
+        s.add("every_steps", &ObserverKeys::every_steps, "Cadence in integrator steps.").at_least(1);
+        return s;
+    }();
+    if (kind == Kind::loader) return loader.params();
+    if (kind == Kind::observer) return observer.params();
     return none;
 }
 

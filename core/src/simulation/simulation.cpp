@@ -72,6 +72,7 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     });
     record_plugin(scene.integrator, Kind::integrator);
     for (const auto& o : scene.observers) record_plugin(o, Kind::observer);
+    check_needed_fields();
 
     system_ = std::make_unique<System>(bulk_->body(), aux_.count);
     for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages), std::move(e.label));
@@ -90,6 +91,21 @@ void Simulation::check_step_count() const {
                                 fmt::format("{:.3g} s of stages at dt = {:.3g} s is {:.3g} steps, more than the {:.0e} "
                                             "a run may take: a step or a stage duration is off by orders of magnitude",
                                             duration, dt, steps, most_steps)}
+                         .format());
+}
+
+void Simulation::check_needed_fields() const {
+    const auto unpublished = quantities_.unpublished_fields();
+    if (unpublished.empty()) return;
+    const auto& missing = unpublished.front();
+    const ComponentSpec* reader = scene_.friction && scene_.friction->path == missing.reader ? &*scene_.friction : nullptr;
+    for (const auto& l : scene_.loaders)
+        if (l.path == missing.reader) reader = &l;
+    throw InputError(Diagnostic{reader ? reader->where : scene_.bulk.where, missing.reader,
+                                fmt::format("{} reads the field '{}' over node set '{}', which no effect of this scene "
+                                            "computes: add the effect that publishes it (share/docs/glossary.md lists who "
+                                            "publishes each quantity)",
+                                            reader ? reader->type : missing.reader, missing.name, missing.node_set)}
                          .format());
 }
 

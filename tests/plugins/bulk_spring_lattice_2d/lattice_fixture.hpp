@@ -68,9 +68,7 @@ struct LatticeFixture {
 };
 
 inline SpringLattice2d::Params with_springs(const std::string& law) {
-    SpringLattice2d::Params p;
-    p.springs = law;
-    return p;
+    return SpringLattice2d::spec().build({{"springs", law}});
 }
 
 }  // namespace frictionlab

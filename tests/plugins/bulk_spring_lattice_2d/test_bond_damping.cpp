@@ -9,9 +9,7 @@ namespace frictionlab {
 namespace {
 
 SpringLattice2d::Params with_damping(const std::string& mode) {
-    SpringLattice2d::Params p;
-    p.damping_mode = mode;
-    return p;
+    return SpringLattice2d::spec().build({{"damping_mode", mode}});
 }
 
 /// Random velocities (uniform in +-amplitude) on top of the state y.

@@ -115,7 +115,7 @@ double pulse_speed(bool transverse) {
     p.height = (p.nz - 1) * l;
     p.mass = rho * l * l * p.width * p.nx * p.nz;
     p.damping_factor = 0;
-    p.springs = "small_strain";  // linear waves
+    p.springs = LatticeSprings::Law::small_strain;  // linear waves
     FreeLattice free(p);
     const Body& b = free.fixture.body();
     const Index n = b.size(), component = transverse ? n : 0;

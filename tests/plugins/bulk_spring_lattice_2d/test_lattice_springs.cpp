@@ -178,7 +178,7 @@ TEST(LatticeSprings, OnePassOnlyForGeometricSpringsWithFullVectorDampingOfTheSam
     LatticeFixture small_strain(with_springs("small_strain"));
     EXPECT_FALSE(small_strain.springs().can_carry(small_strain.damping()));
     SpringLattice2d::Params projected;
-    projected.damping_mode = "bond_projected";
+    projected.damping_mode = BondDamping::Mode::bond_projected;
     LatticeFixture bond_projected(projected);
     EXPECT_FALSE(bond_projected.springs().can_carry(bond_projected.damping()));
     SpringLattice2d::Params other_shape;

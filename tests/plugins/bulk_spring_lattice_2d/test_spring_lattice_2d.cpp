@@ -114,7 +114,7 @@ TEST(SpringLattice2d, EffectsAreOnlyThoseTheParametersSwitchOn) {
 
     SpringLattice2d::Params p;
     p.damping_factor = 0;
-    p.springs = "small_strain";
+    p.springs = LatticeSprings::Law::small_strain;
     LatticeFixture undamped(p);
     ASSERT_EQ(undamped.effects.size(), 1u);  // simulate only what the scene names
     EXPECT_TRUE(undamped.effects[0]->parts().empty());

@@ -78,7 +78,7 @@ TEST(EnergyConsistency, BaseContactForceIsMinusTheGradientOfItsEnergy) {
 TEST(EnergyConsistency, DrivingSpringForceIsMinusTheGradientOfItsEnergy) {
     const double u = 1e-6;
     RandomLatticeState s(u);
-    for (const auto& [height, attachment] : {std::pair{1e-3, "node"}, std::pair{1.25e-3, "interpolated"}}) {
+    for (const auto& [height, attachment] : {std::pair{1e-3, DrivingSpring::Attach::node}, std::pair{1.25e-3, DrivingSpring::Attach::interpolated}}) {
         DrivingSpring::Params p;
         p.height = height;
         p.attachment = attachment;
@@ -91,7 +91,7 @@ TEST(EnergyConsistency, DrivingSpringForceIsMinusTheGradientOfItsEnergy) {
         // 1e-4 s later the far end has moved 1 um; the driving point has moved by another random u.
         Eigen::VectorXd y = s.y;
         for (const auto& a : spring.attachment()) y(a.node) += 0.3 * u;
-        EXPECT_LT(gradient_mismatch(spring, s.layout, y, 1e-4, 1e-3 * u), relative_tolerance) << attachment;
+        EXPECT_LT(gradient_mismatch(spring, s.layout, y, 1e-4, 1e-3 * u), relative_tolerance) << "height " << height;
         const double stretch = 0.01 * 1e-4 - 0.3 * u;
         EXPECT_NEAR(spring.potential_energy(view_of(y, s.layout, 1e-4)), 0.5 * p.stiffness * stretch * stretch,
                     1e-12 * p.stiffness * stretch * stretch);

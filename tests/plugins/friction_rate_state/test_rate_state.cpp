@@ -53,11 +53,7 @@ struct Slider {
     std::unique_ptr<RateState> law;
 };
 
-RateState::Params with_law(const char* law) {
-    RateState::Params p;
-    p.law = law;
-    return p;
-}
+RateState::Params with_law(const char* law) { return RateState::spec().build({{"law", std::string(law)}}); }
 
 class BothLaws : public ::testing::TestWithParam<const char*> {};
 INSTANTIATE_TEST_SUITE_P(RateState, BothLaws, ::testing::Values("aging", "slip"));

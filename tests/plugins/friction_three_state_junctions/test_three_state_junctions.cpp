@@ -1,9 +1,11 @@
 // Each transition of theory.md B (Fig. 4 of Li et al. 2020) with its exact force before and after.
 // Forces are those on the block (-sum_j f_j); a junction that resists +x motion pushes the block -x.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -267,7 +269,7 @@ TEST(ThreeStateJunctions, ZeroNormalForceRemovesAllJunctions) {
 }
 
 /// Block 0 with two pinned junctions: id 0 anchored at 0 (loaded by k_s x), id 1 anchored at x.
-Rig two_anchors(const std::string& removal, double x) {
+Rig two_anchors(ThreeStateJunctions::Removal removal, double x) {
     Params params = exact_params();
     params.removal = removal;
     Rig r(params, 1);
@@ -282,7 +284,7 @@ Rig two_anchors(const std::string& removal, double x) {
 
 TEST(ThreeStateJunctions, RemovalMostLoadedPinnedFirst) {
     const double x = 0x1p-16;
-    Rig r = two_anchors("most_loaded_pinned", x);
+    Rig r = two_anchors(ThreeStateJunctions::Removal::most_loaded_pinned, x);
     (*r.normal)(0) = 0.9 * r.p;
     r.hold(1);
     ASSERT_EQ(r.block(0).size(), 1);
@@ -292,7 +294,7 @@ TEST(ThreeStateJunctions, RemovalMostLoadedPinnedFirst) {
 
 TEST(ThreeStateJunctions, RemovalNonPinnedFirst) {
     const double x = 0x1p-16;
-    Rig r = two_anchors("non_pinned_first", x);
+    Rig r = two_anchors(ThreeStateJunctions::Removal::non_pinned_first, x);
     r.move(0, 0.7 * r.p / r.k + x / 2);  // breaks id 0 (k_s x1 > mu_s p), not id 1
     ASSERT_EQ(r.block(0).sliding(), 1);
     ASSERT_EQ(r.block(0).pinned(), 1);
@@ -329,7 +331,7 @@ TEST(ThreeStateJunctions, RemovalRandomIsKeyedOnTheSeed) {
 
 ThreeStateJunctions::Params holding_params() {
     ThreeStateJunctions::Params params = exact_params();
-    params.settle_overload = "hold";
+    params.settle_overload = ThreeStateJunctions::SettleOverload::hold;
     return params;
 }
 
@@ -397,10 +399,16 @@ TEST(ThreeStateJunctions, SettlingRepinsOverloadedJunctionsAtMuDp) {
     EXPECT_EQ(r.block(0).pinned(), 1);
 }
 
-TEST(ThreeStateJunctions, SettleOverloadRejectsUnknownValues) {
-    ThreeStateJunctions::Params params = exact_params();
-    params.settle_overload = "yield";
-    EXPECT_THROW(Rig r(params, 1), InputError);
+TEST(ThreeStateJunctions, SettleOverloadNamesItsChoicesAndRefusesOthers) {
+    const auto spec = ThreeStateJunctions::spec();
+    const auto key = std::find_if(spec.params().begin(), spec.params().end(),
+                                  [](const ParamInfo& i) { return i.key == "settle_overload"; });
+    ASSERT_NE(key, spec.params().end());
+    EXPECT_EQ(key->choices, (std::vector<std::string>{"hold", "slip_and_repin"}));
+    EXPECT_EQ(std::get<std::string>(key->default_value), "slip_and_repin");
+    EXPECT_NE(violated_constraint(*key, std::string("yield")), "");
+    EXPECT_EQ(spec.build({{"settle_overload", std::string("hold")}}).settle_overload,
+              ThreeStateJunctions::SettleOverload::hold);
 }
 
 /// Per-junction sum computed independently (long double, from f0 and anchor) for pinned junctions.
@@ -590,7 +598,7 @@ TEST(ThreeStateJunctions, SpecDocumentsEveryKeyWithUnits) {
     }
     const Params d = spec.build({});
     EXPECT_EQ(d.mu_s, 0.7);
-    EXPECT_EQ(d.removal, "random");
+    EXPECT_EQ(d.removal, ThreeStateJunctions::Removal::random);
 }
 
 TEST(ThreeStateJunctions, RegistryBuildsItFromSceneValues) {

@@ -83,13 +83,13 @@ TEST(QuasiStaticStiffness, BaseContactStiffensOnlyTheNodesInContact) {
 
 TEST(QuasiStaticStiffness, DrivingSpringStiffensItsDrivingPoint) {
     DisplacedLattice s(1e-6, "geometric");
-    for (const auto& [height, attachment] : {std::pair{1e-3, "node"}, std::pair{1.25e-3, "interpolated"}}) {
+    for (const auto& [height, attachment] : {std::pair{1e-3, DrivingSpring::Attach::node}, std::pair{1.25e-3, DrivingSpring::Attach::interpolated}}) {
         DrivingSpring::Params p;
         p.height = height;
         p.attachment = attachment;
         DrivingSpring spring(p, s.context());
         spring.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(s.y, s.layout, 0.0));
-        EXPECT_LT(stiffness_mismatch(spring, s.layout, s.y, 1e-4, 1e-9), relative_tolerance) << attachment;
+        EXPECT_LT(stiffness_mismatch(spring, s.layout, s.y, 1e-4, 1e-9), relative_tolerance) << "height " << height;
     }
 }
 

@@ -32,7 +32,7 @@ struct SpringOnLattice : test_support::BulkAtRest<SpringLattice2d> {
     DrivingSpring spring;
 };
 
-DrivingSpring::Params at_height(double h, const std::string& attachment = "node") {
+DrivingSpring::Params at_height(double h, DrivingSpring::Attach attachment = DrivingSpring::Attach::node) {
     DrivingSpring::Params p;
     p.height = h;
     p.attachment = attachment;
@@ -129,7 +129,7 @@ TEST(DrivingSpring, ForceFollowsTheDrivingPointDisplacement) {
 }
 
 TEST(DrivingSpring, InterpolatedAttachmentSharesDisplacementAndForce) {
-    SpringOnLattice s(at_height(0.004, "interpolated"));  // between rows 1 (2.5 mm) and 2 (5 mm)
+    SpringOnLattice s(at_height(0.004, DrivingSpring::Attach::interpolated));  // between rows 1 (2.5 mm) and 2 (5 mm)
     const auto& a = s.spring.attachment();
     ASSERT_EQ(a.size(), 2u);
     EXPECT_EQ(a[0].node, 1 * nx);
@@ -149,7 +149,7 @@ TEST(DrivingSpring, InterpolatedAttachmentSharesDisplacementAndForce) {
 }
 
 TEST(DrivingSpring, InterpolatedAtANodeHeightUsesThatNode) {
-    SpringOnLattice s(at_height(0.0025, "interpolated"));
+    SpringOnLattice s(at_height(0.0025, DrivingSpring::Attach::interpolated));
     ASSERT_EQ(s.spring.attachment().size(), 1u);
     EXPECT_EQ(s.spring.attachment()[0].node, nx);
 }
@@ -165,7 +165,7 @@ TEST(DrivingSpring, NodeAttachmentRejectsAHeightBetweenNodes) {
         for (const char* part : {"height", "0.004", "0.0025", "0.005", "interpolated"})
             EXPECT_NE(what.find(part), std::string::npos) << part << " missing in: " << what;
     }
-    EXPECT_THROW(DrivingSpring(at_height(0.03, "interpolated"), services.context(&lattice.body())), InputError);
+    EXPECT_THROW(DrivingSpring(at_height(0.03, DrivingSpring::Attach::interpolated), services.context(&lattice.body())), InputError);
     // Within 1e-9 l_s of a node counts as the node.
     EXPECT_NO_THROW(DrivingSpring(at_height(0.005 + 1e-13), services.context(&lattice.body())));
 }

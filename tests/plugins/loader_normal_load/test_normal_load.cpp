@@ -38,7 +38,8 @@ struct LoadOnLattice {
     NormalLoad load;
 };
 
-NormalLoad::Params load_with(double theta, const std::string& formula = "normalised", double ramp = 0) {
+NormalLoad::Params load_with(double theta, NormalLoad::Formula formula = NormalLoad::Formula::normalised,
+                             double ramp = 0) {
     NormalLoad::Params p;
     p.theta = theta;
     p.formula = formula;
@@ -73,7 +74,7 @@ TEST(NormalLoad, ActsOnlyDownwardOnTheTopRow) {
 TEST(NormalLoad, PaperLiteralFormulaKeepsItsBias) {
     const double F_N = 400, Nx = 41;
     for (double theta : {-0.833, 0.5, 1.0}) {
-        LoadOnLattice s(load_with(theta, "paper_literal"));
+        LoadOnLattice s(load_with(theta, NormalLoad::Formula::paper_literal));
         const Eigen::ArrayXd w = s.top_loads(0);
         EXPECT_NEAR(w.sum(), F_N * (1 + theta / Nx), 1e-13 * F_N) << theta;
         EXPECT_NEAR(s.published(), F_N * (1 + theta / Nx), 1e-13 * F_N) << theta;
@@ -83,7 +84,7 @@ TEST(NormalLoad, PaperLiteralFormulaKeepsItsBias) {
 }
 
 TEST(NormalLoad, RampIsLinearFromTheFirstActiveStage) {
-    LoadOnLattice s(load_with(0.3, "normalised", 2e-3));
+    LoadOnLattice s(load_with(0.3, NormalLoad::Formula::normalised, 2e-3));
     const Eigen::ArrayXd full = s.top_loads(0.7);
     const Eigen::VectorXd y = Eigen::VectorXd::Zero(4 * s.lattice.body().size());
     const StageView at_start = view_of(y, {s.lattice.body().size(), 0}, 0.5);

@@ -152,7 +152,7 @@ TEST_F(PrecursorsTest, MissingJunctionCountsNameTheQuantityAndTheCriterion) {
         EXPECT_NE(message.find("pinned_fraction"), std::string::npos) << message;
     }
     Precursors::Params slip;
-    slip.criterion = "slip";
+    slip.criterion = Precursors::Criterion::slip;
     Precursors by_slip = make(slip);
     EXPECT_NO_THROW(by_slip.begin(view())) << "the slip criterion needs no junction counts";
 }

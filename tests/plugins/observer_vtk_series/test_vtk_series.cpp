@@ -254,7 +254,8 @@ protected:
     std::vector<Expected> expected_;
 };
 
-VtkSeries make_observer(const std::string& cells = "quads", bool compress = true, spdlog::logger* log = nullptr) {
+VtkSeries make_observer(VtkSeries::Cells cells = VtkSeries::Cells::quads, bool compress = true,
+                        spdlog::logger* log = nullptr) {
     static spdlog::logger quiet("test");
     return VtkSeries({"lattice", cells, compress}, Context{log ? *log : quiet, 0, nullptr, nullptr, nullptr, "observer"});
 }
@@ -413,7 +414,7 @@ TEST_F(VtkSeriesTest, AnInterruptedSeriesStillOpens) {
 
 TEST_F(VtkSeriesTest, BondsAsLinesAndUncompressed) {
     make_system();
-    VtkSeries observer = make_observer("bonds", false);
+    VtkSeries observer = make_observer(VtkSeries::Cells::bonds, false);
     observer.begin(view());
     observe(observer, 0);
     observe(observer, 1);
@@ -423,7 +424,7 @@ TEST_F(VtkSeriesTest, BondsAsLinesAndUncompressed) {
 
 TEST_F(VtkSeriesTest, ABodyWithoutQuadsFallsBackToItsBonds) {
     make_system(false);
-    VtkSeries observer = make_observer("quads");
+    VtkSeries observer = make_observer(VtkSeries::Cells::quads);
     observer.begin(view());
     observe(observer, 0);
     observer.end(view());

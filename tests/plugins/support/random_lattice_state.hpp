@@ -24,12 +24,11 @@ struct RandomLatticeState : RandomState<SpringLattice2d> {
     explicit RandomLatticeState(double u, const std::string& springs = "geometric", unsigned seed = 11)
         : RandomState(params(springs), u, seed) {}
     static SpringLattice2d::Params params(const std::string& springs) {
-        SpringLattice2d::Params p;
+        SpringLattice2d::Params p = SpringLattice2d::spec().build({{"springs", springs}});
         p.nx = 5;
         p.nz = 3;
         p.length = 4e-3;
         p.height = 2e-3;
-        p.springs = springs;
         return p;
     }
 };

@@ -10,15 +10,24 @@
 //     }
 //
 // Defaults are the member initialisers of `Params`. The same declaration drives scene validation,
-// `frictionlab doc` and `frictionlab example`; constructors only ever see a filled `Params`.
+// `frictionlab doc` and `frictionlab example`; constructors only ever see a filled `Params`. An
+// enumeration is bound once, names to values, and the member holds the value:
+//
+//     s.choice("removal", &Params::removal, {{"random", Removal::random}, {"oldest", Removal::oldest}},
+//              "Which junctions go when P_b falls.");
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
+
+#include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 
@@ -77,7 +86,8 @@ public:
         Field& at_least(double v) { info().at_least = v; return *this; }
         Field& less_than(double v) { info().less_than = v; return *this; }
         Field& at_most(double v) { info().at_most = v; return *this; }
-        Field& one_of(std::vector<std::string> c) { info().choices = std::move(c); return *this; }
+        /// The names each item of a string list may take (a single enumerated value is choice()).
+        Field& items_one_of(std::vector<std::string> c) { info().choices = std::move(c); return *this; }
         /// The value names a stage of the scene (or is empty); the scene check refuses any other.
         Field& names_a_stage() { info().names_stage = true; return *this; }
         /// The key must be given in the scene; the member initialiser is then only an example value.
@@ -102,6 +112,35 @@ public:
         info.default_value = stored(P{}.*member);
         infos_.push_back(std::move(info));
         setters_.push_back([member](P& p, const ParamValue& v) { p.*member = static_cast<T>(std::get<stored>(v)); });
+        getters_.push_back([member](const P& p) -> ParamValue { return stored(p.*member); });
+        return Field(*this, infos_.size() - 1);
+    }
+
+    /// A key whose value is one of `options`' names, stored as the matching value of the enumeration
+    /// E; the default is the name of the member initialiser's value.
+    template <class E>
+    Field choice(std::string key, E P::*member, std::vector<std::pair<std::string, E>> options, std::string doc) {
+        static_assert(std::is_enum_v<E>, "choice() binds an enumeration; use add() for other types");
+        ParamInfo info;
+        info.key = std::move(key);
+        info.doc = std::move(doc);
+        info.type = ValueType::string;
+        for (const auto& [name, value] : options) {
+            info.choices.push_back(name);
+            if (value == P{}.*member) info.default_value = name;
+        }
+        if (!std::holds_alternative<std::string>(info.default_value))
+            throw std::logic_error("ParamSpec::choice: the default of '" + info.key + "' is none of its options");
+        infos_.push_back(std::move(info));
+        getters_.push_back([member, options](const P& p) -> ParamValue {
+            for (const auto& [name, value] : options)
+                if (value == p.*member) return name;
+            return std::string("(not a named value)");
+        });
+        setters_.push_back([member, options = std::move(options)](P& p, const ParamValue& v) {
+            for (const auto& [name, value] : options)
+                if (name == std::get<std::string>(v)) p.*member = value;
+        });
         return Field(*this, infos_.size() - 1);
     }
 
@@ -123,6 +162,27 @@ public:
         return p;
     }
 
+    /// `p` itself when every key satisfies its bounds and choices and every rule holds, else an
+    /// InputError naming the first key at fault. Constructors call it on their Params, so Params
+    /// built in code pass the very checks a scene passes (violated_constraint and the rules).
+    const P& checked(const P& p) const {
+        for (std::size_t i = 0; i < infos_.size(); ++i) {
+            const ParamValue value = getters_[i](p);
+            if (std::string why = violated_constraint(infos_[i], value); !why.empty())
+                throw InputError(infos_[i].key + " " + why);
+        }
+        for (const auto& r : rules_)
+            if (std::string why = r.check(p); !why.empty()) throw InputError(r.key + ": " + why);
+        return p;
+    }
+
+    /// The value of `key` in `p` as a scene writes it (a choice by its name), e.g. for describe().
+    std::string text(const P& p, std::string_view key) const {
+        for (std::size_t i = 0; i < infos_.size(); ++i)
+            if (infos_[i].key == key) return to_string(getters_[i](p));
+        throw std::logic_error("ParamSpec::text: no key '" + std::string(key) + "'");
+    }
+
     /// The cross-key rules, type-erased for the registry.
     std::vector<ParamRule> erased_rules() const {
         std::vector<ParamRule> out;
@@ -141,6 +201,7 @@ private:
     std::string summary_;
     std::vector<ParamInfo> infos_;
     std::vector<std::function<void(P&, const ParamValue&)>> setters_;
+    std::vector<std::function<ParamValue(const P&)>> getters_;
     std::vector<TypedRule> rules_;
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 // The junction counts per interface block that a friction law with junctions publishes (glossary:
-// junctions_pinned, junctions_sliding, junctions_dislocated over "interface"). Every observer that
-// reads them finds and checks them here, so the names and the checks exist once.
+// junctions_pinned, junctions_sliding, junctions_dislocated over "interface"). The laws publish them
+// and every observer that reads them finds and checks them here, so the names and the checks exist once.
 #include <limits>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include <Eigen/Core>
@@ -28,6 +29,12 @@ struct JunctionCounts {
     static JunctionCounts require(const Quantities& q, Index blocks, std::string_view needed_by);
     /// The same for observers that only use the counts when the scene has them.
     static std::optional<JunctionCounts> find(const Quantities& q, Index blocks);
+
+    /// The three fields a friction law with junctions writes, published over `node_set`.
+    struct Writable {
+        Eigen::ArrayXd *pinned, *sliding, *dislocated;
+    };
+    static Writable publish(Quantities& q, const std::string& node_set, Index blocks);
 
     /// N_p / (N_p + N_s + N_d) of block b; NaN for a block without junctions (detached).
     double pinned_fraction(Index b) const {

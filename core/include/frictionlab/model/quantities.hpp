@@ -6,9 +6,15 @@
 // (e.g. "driving_force"). Storage is owned here and never moves, so an effect keeps a reference to
 // its array and writes it in place, at every force evaluation. Values an observer sees are those of
 // the last evaluation, which the run refreshes at the accepted state before observing.
+//
+// An effect that computes a field publishes it (field()); one that only reads another's field during
+// its force evaluation (a friction law reads the base contact's "normal_force") declares it needed
+// (needed_field()), and a field needed but never published is a scene error at assembly
+// (unpublished_fields()), rather than zeros in the force loop.
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -19,15 +25,27 @@ public:
     struct Field {
         std::string node_set, unit, doc;
         Eigen::ArrayXd values;
+        bool published = false;            // some effect computes it
+        std::vector<std::string> readers;  // the components that declared it needed
     };
     struct Scalar {
         std::string unit, doc;
         double value = 0;
     };
 
-    /// Declares (or, if already declared with the same node set and size, returns) a field.
+    /// Publishes (or, if already declared with the same node set and size, returns) a field that
+    /// the caller computes.
     Eigen::ArrayXd& field(const std::string& name, const std::string& node_set, Eigen::Index size,
                           std::string unit, std::string doc);
+    /// A field `reader` (its place in the scene, e.g. "friction") reads and another effect must
+    /// publish; the storage is the publisher's, whichever declares it first.
+    const Eigen::ArrayXd& needed_field(const std::string& name, const std::string& node_set, Eigen::Index size,
+                                       std::string reader);
+    /// Fields declared needed that no effect published, each with its first reader.
+    struct Unpublished {
+        std::string name, node_set, reader;
+    };
+    std::vector<Unpublished> unpublished_fields() const;
     double& scalar(const std::string& name, std::string unit, std::string doc);
 
     const Field* find_field(std::string_view name) const;

@@ -26,22 +26,16 @@ protected:
 
 enum class TableFormat { csv, hdf5 };
 
-/// The names a scene may give: what an observer's `format` parameter accepts.
-const std::vector<std::string>& table_format_names();
-/// "csv" or "hdf5"; throws InputError otherwise (the scene has already checked it).
-TableFormat table_format(std::string_view name);
-
 /// Opens a table at `file` (e.g. out/interface_velocity.csv); in HDF5 its extension becomes .h5.
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
                                         const RunInfo& info, TableFormat format);
 
 /// Declares an observer's `format` parameter (csv or hdf5), the same for every observer with tables.
 template <class P>
-void add_table_format_param(ParamSpec<P>& spec, std::string P::*member) {
-    spec.add("format", member,
-             "Format of the tables: csv (one header line, provenance in NAME.csv.meta.yaml) or hdf5 (NAME.h5, "
-             "chunked and compressed, provenance as attributes).")
-        .one_of(table_format_names());
+void add_table_format_param(ParamSpec<P>& spec, TableFormat P::*member) {
+    spec.choice("format", member, {{"csv", TableFormat::csv}, {"hdf5", TableFormat::hdf5}},
+                "Format of the tables: csv (one header line, provenance in NAME.csv.meta.yaml) or hdf5 (NAME.h5, "
+                "chunked and compressed, provenance as attributes).");
 }
 
 }  // namespace frictionlab

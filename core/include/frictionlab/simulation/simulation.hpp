@@ -74,6 +74,8 @@ public:
 private:
     void check_bounded() const;
     void check_step_count() const;
+    /// A field a component reads that no effect publishes is an InputError at the reader.
+    void check_needed_fields() const;
     void check_stability(const StageInfo& stage);
     void record_plugin(const ComponentSpec& component, Kind kind);
 

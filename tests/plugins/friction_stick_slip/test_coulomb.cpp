@@ -15,7 +15,7 @@ namespace {
 using testing::exact_normal;
 using testing::exact_stiffness;
 using Rig = testing::StickSlipRig<Coulomb>;
-using Mode = StickSlipLaw::Mode;
+using Mode = stick_slip::Mode;
 
 Coulomb::Params exact_params() {
     Coulomb::Params p;

@@ -36,8 +36,8 @@ struct StickSlipRig {
     StageView view() const { return view_of(y, layout, t); }
     double x(Index i) const { return y[i]; }
     double v(Index i) const { return y[2 * layout.nodes + i]; }
-    const StickSlipLaw::Block& block(Index i) const { return law->block(i); }
-    StickSlipLaw::Mode mode(Index i) const { return law->block(i).mode; }
+    const stick_slip::Block& block(Index i) const { return law->block(i); }
+    stick_slip::Mode mode(Index i) const { return law->block(i).mode; }
 
     void stage(bool friction_events) {
         StageInfo info{friction_events ? "load" : "settle", stage_index++, t, 1.0, friction_events};

@@ -15,7 +15,7 @@ namespace {
 using testing::exact_normal;
 using testing::exact_stiffness;
 using Rig = testing::StickSlipRig<SlipWeakening>;
-using Mode = StickSlipLaw::Mode;
+using Mode = stick_slip::Mode;
 
 constexpr double d_c = 0x1p-20;
 

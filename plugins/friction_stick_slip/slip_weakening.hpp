@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -17,7 +18,7 @@ namespace frictionlab {
 /// delta is the slip accumulated since the block last stuck (within a step delta_n + |x - x_n|).
 /// A block breaks at mu_s f_N = tau(0), so the force does not drop on breaking: it weakens over D_c.
 /// Publishes "friction_force" and "slip" (delta; 0 while stuck or detached).
-class SlipWeakening final : public StickSlipLaw {
+class SlipWeakeningStrength {
 public:
     struct Params {
         double mu_s = 0.4;
@@ -32,16 +33,22 @@ public:
     static constexpr std::string_view type = "slip_weakening";
     static ParamSpec<Params> spec();
 
-    SlipWeakening(const Params&, const Context&);
+    explicit SlipWeakeningStrength(const Params&);
 
-    std::string describe() const override;
-    double kinetic_strength(double normal, double slip) const override;
+    /// tau(delta).
+    double operator()(double normal, double slip) const {
+        const double weakened = std::min(slip / critical_slip_, 1.0);
+        return (mu_s_ - (mu_s_ - mu_d_) * weakened) * normal;
+    }
+    void declare(Quantities& q, const std::string& node_set, Index blocks);
+    void publish(Index i, const stick_slip::Block& /*b*/, double slip) { (*slip_)[i] = slip; }
+    std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;
 
 private:
-    void publish(Index i, const Block& b, double slip) override;
-
-    double mu_d_, critical_slip_;
-    Eigen::ArrayXd* slip_;
+    double mu_s_, mu_d_, critical_slip_;
+    Eigen::ArrayXd* slip_ = nullptr;
 };
+
+using SlipWeakening = StickSlipLaw<SlipWeakeningStrength>;
 
 }  // namespace frictionlab

@@ -21,7 +21,7 @@ namespace frictionlab {
 /// below stick_velocity after exceeding it, with the spring re-anchored to carry the kinetic force
 /// the block felt, so the friction force is continuous and the block re-loads from mu_k f_N.
 /// Publishes "friction_force" and "slipping" (1 while slipping, else 0).
-class Coulomb final : public StickSlipLaw {
+class CoulombStrength {
 public:
     struct Params {
         double mu_s = 0.4;
@@ -35,16 +35,21 @@ public:
     static constexpr std::string_view type = "coulomb";
     static ParamSpec<Params> spec();
 
-    Coulomb(const Params&, const Context&);
+    explicit CoulombStrength(const Params&);
 
-    std::string describe() const override;
-    double kinetic_strength(double normal, double /*slip*/) const override { return mu_k_ * normal; }
+    /// S = mu_k f_N, whatever the slip.
+    double operator()(double normal, double /*slip*/) const { return mu_k_ * normal; }
+    void declare(Quantities& q, const std::string& node_set, Index blocks);
+    void publish(Index i, const stick_slip::Block& b, double /*slip*/) {
+        (*slipping_)[i] = b.mode == stick_slip::Mode::slipping ? 1.0 : 0.0;
+    }
+    std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;
 
 private:
-    void publish(Index i, const Block& b, double slip) override;
-
     double mu_k_;
-    Eigen::ArrayXd* slipping_;
+    Eigen::ArrayXd* slipping_ = nullptr;
 };
+
+using Coulomb = StickSlipLaw<CoulombStrength>;
 
 }  // namespace frictionlab

@@ -1,7 +1,8 @@
 #pragma once
 // The stick-slip block with a tangential spring that the Amontons-Coulomb (coulomb) and the
-// slip-weakening (slip_weakening) laws share; they differ only in the strength of a slipping block.
-// It lives in this plugin's _code library, which friction_slip_weakening links.
+// slip-weakening (slip_weakening) laws share; they differ only in the strength of a slipping block,
+// a small class the law is templated on (coulomb.hpp, slip_weakening.hpp), so the force loop makes
+// no virtual call per block. This library registers both types.
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -9,8 +10,61 @@
 
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/model/quantities.hpp"
 
 namespace frictionlab {
+
+namespace stick_slip {
+
+/// The parameters both laws share (their Params are flat, for the scene; see settings_of).
+struct Settings {
+    double mu_s = 0.4;
+    double tangential_stiffness = 0;
+    double stick_velocity = 1e-5;
+    double regularisation_velocity = 1e-6;
+    std::string node_set = "interface";
+};
+enum class Mode : std::uint8_t { detached, stuck, slipping };
+struct Block {
+    Mode mode = Mode::detached;
+    double stiffness = 0;  // k_t, N/m
+    double anchor = 0;     // m, stuck: where the spring is unloaded
+    double slip = 0;       // m, delta: slip since the block last stuck (slipping only)
+    double direction = 0;  // s = +-1, slipping: the direction it broke in
+    bool reached_stick_velocity = false;  // slipping: |v| has exceeded stick_velocity
+    double x_start = 0, v_start = 0;      // m, m/s: at the start of the current step
+};
+
+/// c of k_t = sqrt(c f_N), the value of re-implementations of Trømborg 2011, N/m^2.
+inline constexpr double stiffness_coefficient = 39.2e9;
+/// k_t for normal force f_N: the given stiffness, or sqrt(c f_N) when it is 0, N/m.
+double stiffness(double given, double normal);
+/// The k_t part of describe().
+std::string stiffness_text(const Settings&);
+
+/// Declares the shared keys on a law's flat Params P (members with the names of Settings).
+template <class P>
+void add_settings(ParamSpec<P>& s) {
+    s.add("mu_s", &P::mu_s, "Static coefficient: a stuck block breaks when its spring force exceeds mu_s f_N.")
+        .unit("1").greater_than(0);
+    s.add("tangential_stiffness", &P::tangential_stiffness,
+          "Tangential stiffness k_t of the spring that holds a stuck block; 0 = sqrt(39.2e9 N/m^2 * f_N) per block, "
+          "from its normal force at each commit.")
+        .unit("N/m").at_least(0);
+    s.add("stick_velocity", &P::stick_velocity,
+          "A slipping block re-sticks when its speed falls below this after exceeding it, or its velocity reverses.")
+        .unit("m/s").at_least(0);
+    s.add("regularisation_velocity", &P::regularisation_velocity,
+          "v_r of the kinetic force -S tanh(v/v_r), a smooth sign(v).")
+        .unit("m/s").greater_than(0);
+    s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
+}
+template <class P>
+Settings settings_of(const P& p) {
+    return {p.mu_s, p.tangential_stiffness, p.stick_velocity, p.regularisation_velocity, p.node_set};
+}
+
+}  // namespace stick_slip
 
 /// Per interface block i, with normal force f_N (the quantity "normal_force", written by the base
 /// contact) and tangential stiffness k_t (the given value, or sqrt(c f_N) with c = 39.2e9 N/m^2,
@@ -52,41 +106,26 @@ namespace frictionlab {
 /// exactly -dE/dx. Slipping blocks store none (all their work is dissipated). The energy jumps at
 /// commits without work (breaking releases it; re-stick stores F^2 / (2 k_t), the model's own; a k_t
 /// change at fixed force changes it by F^2/2 (1/k_new - 1/k_old)).
-class StickSlipLaw : public FrictionLaw {
+///
+/// A Strength supplies what differs: its Params (flat, with the members of stick_slip::Settings),
+/// `type` and spec(); a constructor from Params that checks them; `double operator()(f_N, delta)`,
+/// the kinetic strength S >= 0; declare(quantities, node_set, blocks) and publish(i, block, delta)
+/// for its own field; describe(settings, stiffness text).
+template <class Strength>
+class StickSlipLaw final : public FrictionLaw {
 public:
-    /// The parameters both laws share (their Params are flat, for the scene; see settings_of).
-    struct Settings {
-        double mu_s = 0.4;
-        double tangential_stiffness = 0;
-        double stick_velocity = 1e-5;
-        double regularisation_velocity = 1e-6;
-        std::string node_set = "interface";
-    };
-    enum class Mode : std::uint8_t { detached, stuck, slipping };
-    struct Block {
-        Mode mode = Mode::detached;
-        double stiffness = 0;  // k_t, N/m
-        double anchor = 0;     // m, stuck: where the spring is unloaded
-        double slip = 0;       // m, delta: slip since the block last stuck (slipping only)
-        double direction = 0;  // s = +-1, slipping: the direction it broke in
-        bool reached_stick_velocity = false;  // slipping: |v| has exceeded stick_velocity
-        double x_start = 0, v_start = 0;      // m, m/s: at the start of the current step
-    };
+    using Params = typename Strength::Params;
+    using Settings = stick_slip::Settings;
+    using Mode = stick_slip::Mode;
+    using Block = stick_slip::Block;
 
-    /// c of k_t = sqrt(c f_N), the value of re-implementations of Trømborg 2011, N/m^2.
-    static constexpr double stiffness_coefficient = 39.2e9;
-    /// k_t for normal force f_N: the given stiffness, or sqrt(c f_N) when it is 0, N/m.
-    static double stiffness(double given, double normal);
+    static constexpr std::string_view type = Strength::type;
+    static ParamSpec<Params> spec() { return Strength::spec(); }
 
-    /// Declares the shared keys on a law's flat Params P (members with the names of Settings).
-    template <class P>
-    static void add_settings(ParamSpec<P>& s);
-    template <class P>
-    static Settings settings_of(const P& p) {
-        return {p.mu_s, p.tangential_stiffness, p.stick_velocity, p.regularisation_velocity, p.node_set};
-    }
+    StickSlipLaw(const Params&, const Context&);
 
-    void add_forces(const StageView& s, ForceView& f) final;
+    std::string describe() const override { return strength_.describe(settings_, stick_slip::stiffness_text(settings_)); }
+    void add_forces(const StageView& s, ForceView& f) override;
     void begin_stage(const StageInfo&, const StageView&) override;
     void begin_step(const StageView&) override;
     void commit(const StageView& end, double dt) override;
@@ -94,26 +133,14 @@ public:
     /// Local in velocity: only a slipping block's force depends on its vx, with
     /// dF/dv = -(S / v_r) sech^2(v / v_r), a dashpot of up to S / v_r near v = 0 that imex_euler takes
     /// implicitly (stuck and detached blocks: 0).
-    bool has_velocity_jacobian() const final { return true; }
-    void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const final;
+    bool has_velocity_jacobian() const override { return true; }
+    void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
 
     Index blocks() const { return static_cast<Index>(blocks_.size()); }
     const Block& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }
     const Settings& settings() const { return settings_; }
     /// Kinetic strength S (N, >= 0) of a slipping block at normal force f_N and slip delta.
-    virtual double kinetic_strength(double normal, double slip) const = 0;
-
-protected:
-    StickSlipLaw(const Settings&, const Context&, std::string_view type);
-    /// Publishes the law's own fields for block i at a stage; slip is the stage delta (0 unless slipping).
-    virtual void publish(Index /*i*/, const Block&, double /*slip*/) {}
-    /// The k_t part of describe().
-    std::string stiffness_text() const;
-
-    std::string name_;
-    Settings settings_;
-    NodeSet nodes_;
-    Quantities* quantities_;
+    double kinetic_strength(double normal, double slip) const { return strength_(normal, slip); }
 
 private:
     double stage_force(const Block& b, double x, double v, double normal, double slip) const;
@@ -121,27 +148,14 @@ private:
     void commit_block(Block& b, double x, double v, double normal) const;
     void check_settled(const StageInfo&, const StageView&) const;
 
+    std::string name_;
+    Settings settings_;
+    Strength strength_;
+    NodeSet nodes_;
     std::vector<Block> blocks_;
     const Eigen::ArrayXd* normal_force_;
     Eigen::ArrayXd* friction_force_;
     bool events_ = true;
 };
-
-template <class P>
-void StickSlipLaw::add_settings(ParamSpec<P>& s) {
-    s.add("mu_s", &P::mu_s, "Static coefficient: a stuck block breaks when its spring force exceeds mu_s f_N.")
-        .unit("1").greater_than(0);
-    s.add("tangential_stiffness", &P::tangential_stiffness,
-          "Tangential stiffness k_t of the spring that holds a stuck block; 0 = sqrt(39.2e9 N/m^2 * f_N) per block, "
-          "from its normal force at each commit.")
-        .unit("N/m").at_least(0);
-    s.add("stick_velocity", &P::stick_velocity,
-          "A slipping block re-sticks when its speed falls below this after exceeding it, or its velocity reverses.")
-        .unit("m/s").at_least(0);
-    s.add("regularisation_velocity", &P::regularisation_velocity,
-          "v_r of the kinetic force -S tanh(v/v_r), a smooth sign(v).")
-        .unit("m/s").greater_than(0);
-    s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
-}
 
 }  // namespace frictionlab

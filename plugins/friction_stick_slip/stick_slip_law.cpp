@@ -7,23 +7,39 @@
 
 #include "frictionlab/base/errors.hpp"
 
+#include "coulomb.hpp"
+#include "slip_weakening.hpp"
+
 namespace frictionlab {
 
-double StickSlipLaw::stiffness(double given, double normal) {
+namespace stick_slip {
+
+double stiffness(double given, double normal) {
     if (given > 0) return given;
     return std::sqrt(stiffness_coefficient * std::max(0.0, normal));
 }
 
-StickSlipLaw::StickSlipLaw(const Settings& settings, const Context& ctx, std::string_view type)
-    : name_(ctx.name.empty() ? std::string(type) : ctx.name), settings_(settings) {
+std::string stiffness_text(const Settings& settings) {
+    if (settings.tangential_stiffness > 0) return fmt::format("k_t={:.3g} N/m", settings.tangential_stiffness);
+    return "k_t=sqrt(39.2e9 f_N)";
+}
+
+}  // namespace stick_slip
+
+using stick_slip::stiffness;
+
+template <class Strength>
+StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
+    : name_(ctx.name.empty() ? std::string(type) : ctx.name), settings_(stick_slip::settings_of(p)), strength_(p) {
     if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
-    nodes_ = ctx.body->nodes(settings.node_set);
-    quantities_ = ctx.quantities;
+    nodes_ = ctx.body->nodes(settings_.node_set);
+    Quantities& q = *ctx.quantities;
     const Index n = static_cast<Index>(nodes_.size());
-    const std::string& set = settings.node_set;
-    normal_force_ = &quantities_->field("normal_force", set, n, "N", "Normal contact force P_b on each interface node.");
-    friction_force_ = &quantities_->field("friction_force", set, n, "N",
-                                         "x-force on the block from the base: spring while stuck, kinetic while slipping.");
+    const std::string& set = settings_.node_set;
+    normal_force_ = &q.needed_field("normal_force", set, n, name_);
+    friction_force_ = &q.field("friction_force", set, n, "N",
+                               "x-force on the block from the base: spring while stuck, kinetic while slipping.");
+    strength_.declare(q, set, n);
     blocks_.resize(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         Block& b = blocks_[i];
@@ -31,26 +47,24 @@ StickSlipLaw::StickSlipLaw(const Settings& settings, const Context& ctx, std::st
     }
 }
 
-std::string StickSlipLaw::stiffness_text() const {
-    if (settings_.tangential_stiffness > 0) return fmt::format("k_t={:.3g} N/m", settings_.tangential_stiffness);
-    return "k_t=sqrt(39.2e9 f_N)";
-}
-
-double StickSlipLaw::stage_slip(const Block& b, double x) const {
+template <class Strength>
+double StickSlipLaw<Strength>::stage_slip(const Block& b, double x) const {
     return b.mode == Mode::slipping ? b.slip + std::abs(x - b.x_start) : 0.0;
 }
 
-double StickSlipLaw::stage_force(const Block& b, double x, double v, double normal, double slip) const {
+template <class Strength>
+double StickSlipLaw<Strength>::stage_force(const Block& b, double x, double v, double normal, double slip) const {
     switch (b.mode) {
         case Mode::detached: return 0;
         case Mode::stuck: return -b.stiffness * (x - b.anchor);
         case Mode::slipping:
-            return -kinetic_strength(std::max(0.0, normal), slip) * std::tanh(v / settings_.regularisation_velocity);
+            return -strength_(std::max(0.0, normal), slip) * std::tanh(v / settings_.regularisation_velocity);
     }
     return 0;
 }
 
-void StickSlipLaw::add_forces(const StageView& s, ForceView& f) {
+template <class Strength>
+void StickSlipLaw<Strength>::add_forces(const StageView& s, ForceView& f) {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const Index node = nodes_[k], i = static_cast<Index>(k);
         const Block& b = blocks_[k];
@@ -58,11 +72,12 @@ void StickSlipLaw::add_forces(const StageView& s, ForceView& f) {
         const double force = stage_force(b, s.x[node], s.vx[node], (*normal_force_)[i], slip);
         f.fx[node] += force;
         (*friction_force_)[i] = force;
-        publish(i, b, slip);
+        strength_.publish(i, b, slip);
     }
 }
 
-void StickSlipLaw::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
+template <class Strength>
+void StickSlipLaw<Strength>::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
     const double v_r = settings_.regularisation_velocity;
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const Block& b = blocks_[k];
@@ -70,11 +85,12 @@ void StickSlipLaw::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::A
         const Index node = nodes_[k];
         const double normal = std::max(0.0, (*normal_force_)[static_cast<Index>(k)]);
         const double c = std::cosh(s.vx[node] / v_r);  // inf far from 0: the slope is then 0
-        dfx_dvx[node] -= kinetic_strength(normal, stage_slip(b, s.x[node])) / (v_r * c * c);
+        dfx_dvx[node] -= strength_(normal, stage_slip(b, s.x[node])) / (v_r * c * c);
     }
 }
 
-double StickSlipLaw::potential_energy(const StageView& s) const {
+template <class Strength>
+double StickSlipLaw<Strength>::potential_energy(const StageView& s) const {
     double energy = 0;
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const Block& b = blocks_[k];
@@ -85,27 +101,31 @@ double StickSlipLaw::potential_energy(const StageView& s) const {
     return energy;
 }
 
-void StickSlipLaw::begin_stage(const StageInfo& stage, const StageView& s) {
+template <class Strength>
+void StickSlipLaw<Strength>::begin_stage(const StageInfo& stage, const StageView& s) {
     const bool had_events = events_;
     events_ = stage.friction_events;
     if (events_ && !had_events) check_settled(stage, s);
 }
 
-void StickSlipLaw::begin_step(const StageView& s) {
+template <class Strength>
+void StickSlipLaw<Strength>::begin_step(const StageView& s) {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         blocks_[k].x_start = s.x[nodes_[k]];
         blocks_[k].v_start = s.vx[nodes_[k]];
     }
 }
 
-void StickSlipLaw::commit(const StageView& end, double /*dt*/) {
+template <class Strength>
+void StickSlipLaw<Strength>::commit(const StageView& end, double /*dt*/) {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const Index node = nodes_[k];
         commit_block(blocks_[k], end.x[node], end.vx[node], (*normal_force_)[static_cast<Index>(k)]);
     }
 }
 
-void StickSlipLaw::commit_block(Block& b, double x, double v, double normal) const {
+template <class Strength>
+void StickSlipLaw<Strength>::commit_block(Block& b, double x, double v, double normal) const {
     const Mode during = b.mode;
     if (during == Mode::slipping) b.slip += std::abs(x - b.x_start);
     const double k_step = b.stiffness;
@@ -152,7 +172,8 @@ void StickSlipLaw::commit_block(Block& b, double x, double v, double normal) con
     b.stiffness = k_new;
 }
 
-void StickSlipLaw::check_settled(const StageInfo& stage, const StageView& s) const {
+template <class Strength>
+void StickSlipLaw<Strength>::check_settled(const StageInfo& stage, const StageView& s) const {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const Block& b = blocks_[k];
         if (b.mode != Mode::stuck) continue;
@@ -165,5 +186,8 @@ void StickSlipLaw::check_settled(const StageInfo& stage, const StageView& s) con
             name_, stage.name, k, nodes_[k], force, threshold));
     }
 }
+
+template class StickSlipLaw<CoulombStrength>;
+template class StickSlipLaw<SlipWeakeningStrength>;
 
 }  // namespace frictionlab

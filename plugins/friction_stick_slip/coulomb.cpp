@@ -1,0 +1,41 @@
+#include "coulomb.hpp"
+
+#include "frictionlab/model/friction_rules.hpp"
+
+#include <fmt/format.h>
+
+#include "frictionlab/base/errors.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+using Params = CoulombStrength::Params;
+
+std::string order_rule(const Params& p) { return moving_not_above_static("mu_k", p.mu_k, p.mu_s); }
+
+}  // namespace
+
+ParamSpec<Params> CoulombStrength::spec() {
+    ParamSpec<Params> s(
+        "Amontons-Coulomb friction per interface block (Trømborg et al. 2011, doi:10.1103/PhysRevLett.107.074301; "
+        "Maegawa et al. 2010): a tangential spring holds a stuck block up to mu_s f_N; a slipping block feels "
+        "mu_k f_N against its velocity and re-sticks when it stops or reverses.");
+    stick_slip::add_settings(s);
+    s.add("mu_k", &Params::mu_k, "Kinetic coefficient: a slipping block feels mu_k f_N against its velocity.")
+        .unit("1").at_least(0);
+    s.rule("mu_k", order_rule);
+    return s;
+}
+
+CoulombStrength::CoulombStrength(const Params& p) : mu_k_(spec().checked(p).mu_k) {}
+
+void CoulombStrength::declare(Quantities& q, const std::string& node_set, Index blocks) {
+    slipping_ = &q.field("slipping", node_set, blocks, "1", "1 while the block slips, 0 while it is stuck or detached.");
+}
+
+std::string CoulombStrength::describe(const stick_slip::Settings& settings, const std::string& stiffness) const {
+    return fmt::format("Coulomb friction (mu_s={:.3g}, mu_k={:.3g}, {})", settings.mu_s, mu_k_, stiffness);
+}
+
+}  // namespace frictionlab
