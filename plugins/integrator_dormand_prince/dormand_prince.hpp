@@ -58,6 +58,8 @@ public:
     ~DormandPrince() override;
     double step(System& system, double max_dt) override;
     double nominal_dt() const override { return p_.initial_step; }
+    /// The propagated solution's order; its steps, and so the evaluations per step, vary.
+    int order() const override { return 5; }
 
     /// Accepted and rejected attempts so far.
     long long accepted_steps() const { return accepted_; }

@@ -35,6 +35,8 @@ public:
     ImexEuler(const Params& p, const Context&);
     double step(System& system, double max_dt) override;
     double stability_radius() const override { return 2.0; }
+    int order() const override { return 1; }
+    int evaluations_per_step() const override { return 1; }
     bool implicit_in_local_velocity() const override { return true; }
     /// Symplectic Euler on what the scheme treats explicitly (the estimate leaves the implicit part out).
     bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,

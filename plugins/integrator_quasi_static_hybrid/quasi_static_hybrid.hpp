@@ -54,6 +54,9 @@ public:
     double step(System& system, double max_dt) override;
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
+    /// The dynamic scheme's order: a quiet step is an equilibrium solve, exact for the linear
+    /// response. Evaluations per step vary (solves, the calm checks): not stated.
+    int order() const override { return dynamic_->order(); }
     bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override {
         return dynamic_->linearised_step(jacobian, h, positions, u, out);

@@ -20,6 +20,8 @@ public:
     /// RK4's stability region reaches 2.785 on the negative real axis and 2.828 on the imaginary
     /// axis, and further in between: |h lambda| < 2.785 is stable for any lambda with Re <= 0.
     double stability_radius() const override { return 2.785; }
+    int order() const override { return 4; }
+    int evaluations_per_step() const override { return 4; }
 
 private:
     // Sized at the first step, reused after: the stage state, the running sum of the rates k1 +

@@ -27,6 +27,8 @@ public:
     /// h |lambda| < 2 bounds the undamped limit omega h < 2 and pure damping (c/m) h < 2; a mode with
     /// both needs h^2 omega^2 + 2 h c/m <= 4, so the stable step comes from linearised_step.
     double stability_radius() const override { return 2.0; }
+    int order() const override { return 1; }
+    int evaluations_per_step() const override { return 1; }
     bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override;
 

@@ -47,6 +47,8 @@ public:
     /// h |lambda| < 2 bounds the undamped limit omega h < 2 and pure damping; where a mode has both,
     /// the stable step comes from linearised_step.
     double stability_radius() const override { return 2.0; }
+    int order() const override { return 2; }
+    int evaluations_per_step() const override { return 2; }
     bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override;
 

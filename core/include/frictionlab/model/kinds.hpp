@@ -60,6 +60,11 @@ public:
     virtual double step(System&, double max_dt) = 0;
     /// The step the integrator is configured for (fixed steppers) or starts from (adaptive).
     virtual double nominal_dt() const = 0;
+    /// Order p of accuracy: the global error falls as dt^p (0: not stated). The conformance suite
+    /// measures it on the harmonic oscillator for every fixed-step scheme.
+    virtual int order() const { return 0; }
+    /// Force evaluations of one step (0: it varies, as for an adaptive scheme).
+    virtual int evaluations_per_step() const { return 0; }
     /// The radius |h lambda| within which the scheme is stable for every eigenvalue lambda of the
     /// linearised system in the closed left half-plane (RK4: 2.785, its real-axis limit, the
     /// smallest along the boundary there). Infinity: no limit known.
