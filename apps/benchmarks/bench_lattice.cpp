@@ -12,7 +12,8 @@ namespace {
 
 struct Bench {
     Bench(int nx, int nz, const std::string& springs, const std::string& damping_mode) {
-        SpringLattice2d::Params p = SpringLattice2d::spec().build({{"springs", springs}, {"damping_mode", damping_mode}});
+        SpringLattice2d::Params p =
+            SpringLattice2d::spec().build({{"springs", springs}, {"damping_mode", damping_mode}});
         p.nx = nx;
         p.nz = nz;
         p.height = p.length / (nx - 1) * (nz - 1);
@@ -42,9 +43,9 @@ struct Bench {
 };
 
 void per_node_counter(benchmark::State& state, const Bench& b) {
-    state.counters["per_node"] = benchmark::Counter(static_cast<double>(b.layout.nodes),
-                                                    benchmark::Counter::kIsIterationInvariantRate |
-                                                        benchmark::Counter::kInvert);
+    state.counters["per_node"] =
+        benchmark::Counter(static_cast<double>(b.layout.nodes),
+                           benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 /// Evaluates the lattice's effect (its springs and dashpots in one pass where they can) or, with

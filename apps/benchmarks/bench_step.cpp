@@ -51,7 +51,8 @@ struct SceneFixture {
         const auto* pinned = sim->quantities().find_field("junctions_pinned");
         const auto* sliding = sim->quantities().find_field("junctions_sliding");
         const auto* dislocated = sim->quantities().find_field("junctions_dislocated");
-        if (!pinned || !sliding || !dislocated) throw std::runtime_error("the friction law publishes no junction counts");
+        if (!pinned || !sliding || !dislocated)
+            throw std::runtime_error("the friction law publishes no junction counts");
         const double unpinned = sliding->values.sum() + dislocated->values.sum();
         return unpinned / (unpinned + pinned->values.sum());
     }

@@ -64,9 +64,7 @@ bool poll_report(int& worker, Report& report) {
     return true;
 }
 
-void send_case(int worker, int case_index) {
-    MPI_Send(&case_index, 1, MPI_INT, worker, case_tag, MPI_COMM_WORLD);
-}
+void send_case(int worker, int case_index) { MPI_Send(&case_index, 1, MPI_INT, worker, case_tag, MPI_COMM_WORLD); }
 
 int report_and_receive(const Report& report) {
     int message[2] = {report.case_index, report.exit_status};
@@ -80,7 +78,12 @@ int report_and_receive(const Report& report) {
 
 #else
 
-MpiSession::MpiSession() { (void)launched_by_mpi; (void)started; (void)report_tag; (void)case_tag; }
+MpiSession::MpiSession() {
+    (void)launched_by_mpi;
+    (void)started;
+    (void)report_tag;
+    (void)case_tag;
+}
 MpiSession::~MpiSession() = default;
 bool mpi_available() { return false; }
 int mpi_rank() { return 0; }

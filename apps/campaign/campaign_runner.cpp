@@ -94,7 +94,8 @@ CaseRecord outcome(const CampaignCase& c, int status, const fs::path& logs) {
     record.scene_hash = c.scene.hash;
     const auto log = (logs / (c.name + ".log")).string();
     if (WIFSIGNALED(status))
-        record.reason = fmt::format("killed by signal {} ({}); see {}", WTERMSIG(status), strsignal(WTERMSIG(status)), log);
+        record.reason =
+            fmt::format("killed by signal {} ({}); see {}", WTERMSIG(status), strsignal(WTERMSIG(status)), log);
     else
         record.reason = fmt::format("exited with status {} before recording its outcome; see {}",
                                     WIFEXITED(status) ? WEXITSTATUS(status) : -1, log);
@@ -107,7 +108,10 @@ public:
     Progress(std::size_t total, std::size_t reused, bool live, spdlog::logger& log)
         : total_(total), done_(reused), live_(live), log_(log), start_(Clock::now()) {}
 
-    void started() { ++running_; show(); }
+    void started() {
+        ++running_;
+        show();
+    }
     void finished(const CampaignCase& c, const CaseRecord& r) {
         --running_;
         ++done_;
@@ -181,7 +185,8 @@ std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, con
         }
     }
     const std::size_t reused = cases.size() - queue.size();
-    if (reused > 0) log.info("{} of {} cases finished earlier with the same scene: not run again", reused, cases.size());
+    if (reused > 0)
+        log.info("{} of {} cases finished earlier with the same scene: not run again", reused, cases.size());
     Progress progress(cases.size(), reused, options.live_progress, log);
 
     std::map<pid_t, std::size_t> running;  // local child processes

@@ -51,8 +51,10 @@ public:
         }
         if (const auto reference = given(top, "reference")) study.reference = read_case(*reference, "reference", true);
         study.reference.name = "reference";
-        if (const auto cases = given(top, "cases")) study.cases = read_cases(*cases);
-        else detail::report_missing(root, "cases", "a non-empty list of cases", "", reporter_);
+        if (const auto cases = given(top, "cases"))
+            study.cases = read_cases(*cases);
+        else
+            detail::report_missing(root, "cases", "a non-empty list of cases", "", reporter_);
         if (!top.given.contains("reference"))
             detail::report_missing(root, "reference", "a mapping with `set:`, the overrides of the converged run", "",
                                    reporter_);
@@ -69,9 +71,10 @@ private:
     std::vector<StudyCase> read_cases(const Entry& list) {
         std::vector<StudyCase> cases;
         if (!list.value.IsSequence() || list.value.size() == 0) {
-            reporter_.error(list.site(), "cases",
-                            "expected a non-empty list of cases, got " +
-                                (list.value.IsSequence() ? std::string("an empty list") : detail::describe(list.value)));
+            reporter_.error(
+                list.site(), "cases",
+                "expected a non-empty list of cases, got " +
+                    (list.value.IsSequence() ? std::string("an empty list") : detail::describe(list.value)));
             return cases;
         }
         std::map<std::string, int> first_line{{"reference", 0}};
@@ -87,8 +90,8 @@ private:
     StudyCase read_case(const Entry& map, const std::string& path, bool reference) {
         StudyCase c;
         c.where = reporter_.where(map.site());
-        const detail::SectionKeys keys{reference ? "the reference" : "a case", detail::study_case_params(reference),
-                                       {}, true};
+        const detail::SectionKeys keys{
+            reference ? "the reference" : "a case", detail::study_case_params(reference), {}, true};
         const auto s = detail::read_section(map, path, keys, reporter_);
         c.name = value_or(s, "name", std::string());
         c.family = value_or(s, "family", std::string());
@@ -108,8 +111,9 @@ private:
         static const std::regex name_rule("[a-z][a-z0-9_.-]*");
         const std::string key = detail::join_path(path, "name");
         if (!std::regex_match(c.name, name_rule)) {
-            reporter_.error(c.where, key, "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " +
-                                              detail::quote(c.name));
+            reporter_.error(
+                c.where, key,
+                "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " + detail::quote(c.name));
             return;
         }
         const auto [it, first] = first_line.emplace(c.name, c.where.line);
@@ -126,9 +130,10 @@ private:
 
 std::string stage_names_problem(const Scene& scene) {
     if (scene.stages.size() >= 2) return "";
-    return fmt::format("the base scene {} has {} stage{}; a study needs a settling stage first and a loading stage "
-                       "last (their ends are where the errors are measured)",
-                       scene.file.string(), scene.stages.size(), scene.stages.size() == 1 ? "" : "s");
+    return fmt::format(
+        "the base scene {} has {} stage{}; a study needs a settling stage first and a loading stage "
+        "last (their ends are where the errors are measured)",
+        scene.file.string(), scene.stages.size(), scene.stages.size() == 1 ? "" : "s");
 }
 
 /// What the study records of each case: rupture events during the last stage and the interface
@@ -141,9 +146,8 @@ std::vector<SceneOverride> study_observers(const Study& study, const Scene& scen
     precursors["stage"] = scene.stages.back().name;
     std::string detector = fmt::format("type: precursors, every: {}", detail::yaml_text(study.observe_every));
     for (const auto& [key, value] : precursors) detector += fmt::format(", {}: {}", key, detail::yaml_text(value));
-    const std::string observers =
-        fmt::format("observers=[{{{}}}, {{type: interface_history, every: {}}}]", detector,
-                    detail::yaml_text(study.profile_every));
+    const std::string observers = fmt::format("observers=[{{{}}}, {{type: interface_history, every: {}}}]", detector,
+                                              detail::yaml_text(study.profile_every));
     return {{observers, study.scene_where}, {"output=" + detail::yaml_text(out.string()), study.scene_where}};
 }
 
@@ -168,8 +172,7 @@ std::vector<Scene> study_scenes(const Study& study, const std::filesystem::path&
                                 Diagnostics& diagnostics) {
     std::vector<Scene> scenes;
     // The base scene alone first, so that its own errors are reported once, not once per case.
-    const Scene base = SceneDocument::load_located(study.scene, {}, diagnostics)
-                           .validate(registry, diagnostics);
+    const Scene base = SceneDocument::load_located(study.scene, {}, diagnostics).validate(registry, diagnostics);
     if (!diagnostics.empty()) return scenes;
     if (const auto problem = stage_names_problem(base); !problem.empty()) {
         diagnostics.error(study.scene_where, "scene", problem);
@@ -186,7 +189,8 @@ std::vector<Scene> study_scenes(const Study& study, const std::filesystem::path&
         }
         const auto extra = study_observers(study, scene, output / "cases" / c->name);
         overrides.insert(overrides.end(), extra.begin(), extra.end());
-        scenes.push_back(SceneDocument::load_located(study.scene, overrides, diagnostics).validate(registry, diagnostics));
+        scenes.push_back(
+            SceneDocument::load_located(study.scene, overrides, diagnostics).validate(registry, diagnostics));
     }
     return scenes;
 }

@@ -119,13 +119,16 @@ double relative_l2_on_grid(const std::vector<double>& x_ref, const std::vector<d
     for (std::size_t i = 0; i < x_ref.size(); ++i) {
         const auto upper = std::lower_bound(x.begin(), x.end(), x_ref[i]);
         double v;
-        if (upper == x.begin()) v = values.front();
-        else if (upper == x.end()) v = values.back();
+        if (upper == x.begin())
+            v = values.front();
+        else if (upper == x.end())
+            v = values.back();
         else {
             const auto k = static_cast<std::size_t>(upper - x.begin());
             // At a common grid point lower_bound lands on it: the value is taken exactly.
-            v = *upper == x_ref[i] ? values[k]
-                                   : values[k - 1] + (values[k] - values[k - 1]) * (x_ref[i] - x[k - 1]) / (x[k] - x[k - 1]);
+            v = *upper == x_ref[i]
+                    ? values[k]
+                    : values[k - 1] + (values[k] - values[k - 1]) * (x_ref[i] - x[k - 1]) / (x[k] - x[k - 1]);
         }
         difference += (v - reference[i]) * (v - reference[i]);
         norm += reference[i] * reference[i];
@@ -136,8 +139,8 @@ double relative_l2_on_grid(const std::vector<double>& x_ref, const std::vector<d
 
 CaseErrors compare(const CaseOutcome& reference, const CaseOutcome& outcome) {
     CaseErrors e;
-    e.settled_normal_force =
-        relative_l2_on_grid(reference.x_over_length, reference.settled_normal, outcome.x_over_length, outcome.settled_normal);
+    e.settled_normal_force = relative_l2_on_grid(reference.x_over_length, reference.settled_normal,
+                                                 outcome.x_over_length, outcome.settled_normal);
     e.settled_friction_force = relative_l2_on_grid(reference.x_over_length, reference.settled_friction,
                                                    outcome.x_over_length, outcome.settled_friction);
     if (std::isnan(e.settled_normal_force)) add_note(e.note, "no settled interface profile");
@@ -146,7 +149,8 @@ CaseErrors compare(const CaseOutcome& reference, const CaseOutcome& outcome) {
     if (!std::isnan(reference.first_precursor_time) && std::isnan(outcome.first_precursor_time))
         add_note(e.note, outcome.any_event ? "first event is a global slip where the reference has a precursor"
                                            : "no rupture event where the reference has a precursor");
-    e.global_static_coefficient = relative_error(reference.global_static_coefficient, outcome.global_static_coefficient);
+    e.global_static_coefficient =
+        relative_error(reference.global_static_coefficient, outcome.global_static_coefficient);
     if (reference.global_slip && !outcome.global_slip) add_note(e.note, "no global slip where the reference has one");
     if (!reference.event_slip.empty() && !outcome.event_slip.empty())
         e.event_slip = relative_l2_on_grid(reference.x_over_length, reference.event_slip, outcome.x_over_length,

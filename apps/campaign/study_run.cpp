@@ -134,7 +134,8 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
             result.rows.push_back(std::move(row));
             continue;
         }
-        row.outcome = read_case_outcome(scene.output_directory, *files, scene.stages.front().duration, load_start(scene));
+        row.outcome =
+            read_case_outcome(scene.output_directory, *files, scene.stages.front().duration, load_start(scene));
         row.errors = compare(k == 0 ? row.outcome : result.rows.front().outcome, row.outcome);
         log.info("study case {}: {:.3g} s wall ({:.3g} s CPU), {} steps, {} evaluations", row.name,
                  row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps, row.summary.evaluations);
@@ -145,11 +146,12 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
     // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
-    write_file_atomically(table_sidecar_path(file),
-               fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseed: {}\nnote: errors relative to "
-                           "the reference case; the seed unless a case sets it; each case's run.yaml in cases/ records "
-                           "its resolved scene and plugins\n",
-                           framework_version(), study.file.filename().string(), result.seed));
+    write_file_atomically(
+        table_sidecar_path(file),
+        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseed: {}\nnote: errors relative to "
+                    "the reference case; the seed unless a case sets it; each case's run.yaml in cases/ records "
+                    "its resolved scene and plugins\n",
+                    framework_version(), study.file.filename().string(), result.seed));
     std::string text = "case,family,scene_hash";
     for (const auto& k : result.knob_columns) text += fmt::format(",{}", csv_cell(k));
     text += ",wall_seconds,cpu_seconds,steps,evaluations";
@@ -158,8 +160,8 @@ void write_study_csv(const StudyResult& result, const Study& study, const std::f
     for (const auto& row : result.rows) {
         text += fmt::format("{},{},{}", row.name, csv_cell(row.family), row.scene_hash);
         for (const auto& v : row.knobs) text += fmt::format(",{}", csv_cell(v));
-        text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps,
-                            row.summary.evaluations);
+        text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds,
+                            row.summary.steps, row.summary.evaluations);
         for (const auto& c : error_columns) text += fmt::format(",{}", number(row.errors.*c.member));
         text += fmt::format(",{}\n", csv_cell(row.errors.note));
     }
@@ -169,11 +171,11 @@ void write_study_csv(const StudyResult& result, const Study& study, const std::f
 void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
     const CaseOutcome& ref = result.rows.front().outcome;
     std::string text = fmt::format("# {}\n\n", study.title.empty() ? "Accuracy study" : study.title);
-    text += fmt::format("Study `{}` on `{}`. Reference: first precursor {} s after loading began at F_S = {} N; "
-                        "global F_S/F_N = {}. Errors are relative (profiles: relative L2 on x/L).\n\n",
-                        study.file.filename().string(), study.scene.filename().string(),
-                        number(ref.first_precursor_time), number(ref.first_precursor_force),
-                        number(ref.global_static_coefficient));
+    text += fmt::format(
+        "Study `{}` on `{}`. Reference: first precursor {} s after loading began at F_S = {} N; "
+        "global F_S/F_N = {}. Errors are relative (profiles: relative L2 on x/L).\n\n",
+        study.file.filename().string(), study.scene.filename().string(), number(ref.first_precursor_time),
+        number(ref.first_precursor_force), number(ref.global_static_coefficient));
     text += "| case | family |";
     for (const auto& k : result.knob_columns) text += " " + k + " |";
     text += " wall (s) | CPU (s) | steps | evaluations |";

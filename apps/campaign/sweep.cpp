@@ -46,7 +46,8 @@ public:
         const detail::SectionKeys keys{"a sweep", detail::sweep_params(), detail::sweep_sections(), true};
         const auto top = detail::read_section({YAML::Node(YAML::NodeType::Undefined), root}, "", keys, reporter_);
         if (!root.IsMap()) return sweep;
-        if (const auto it = top.values.find("title"); it != top.values.end()) sweep.title = std::get<std::string>(it->second);
+        if (const auto it = top.values.find("title"); it != top.values.end())
+            sweep.title = std::get<std::string>(it->second);
         if (const auto scene = given(top, "scene"); scene && top.values.contains("scene")) {
             sweep.scene = file.parent_path() / std::get<std::string>(top.values.at("scene"));
             sweep.scene_where = reporter_.where(scene->site());
@@ -108,9 +109,10 @@ private:
     std::vector<SweepCase> read_cases(const Entry& list) {
         std::vector<SweepCase> cases;
         if (!list.value.IsSequence() || list.value.size() == 0) {
-            reporter_.error(list.site(), "cases",
-                            "expected a non-empty list of cases, got " +
-                                (list.value.IsSequence() ? std::string("an empty list") : detail::describe(list.value)));
+            reporter_.error(
+                list.site(), "cases",
+                "expected a non-empty list of cases, got " +
+                    (list.value.IsSequence() ? std::string("an empty list") : detail::describe(list.value)));
             return cases;
         }
         for (std::size_t i = 0; i < list.value.size(); ++i) {
@@ -129,9 +131,9 @@ private:
                 }
             static const std::regex name_rule("[a-z][a-z0-9_.-]*");
             if (!c.name.empty() && !std::regex_match(c.name, name_rule))
-                reporter_.error(c.where, detail::join_path(path, "name"),
-                                "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " +
-                                    detail::quote(c.name));
+                reporter_.error(
+                    c.where, detail::join_path(path, "name"),
+                    "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " + detail::quote(c.name));
             cases.push_back(std::move(c));
         }
         return cases;
@@ -152,7 +154,8 @@ std::string name_part(const std::string& key, const std::string& value) {
     std::smatch m;
     std::string out = std::regex_search(key, m, last_key) ? m[1].str() : key;
     out += "-";
-    for (char c : value) out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' ? c : '_';
+    for (char c : value)
+        out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' ? c : '_';
     return out;
 }
 
@@ -173,8 +176,8 @@ Sweep read_sweep(const std::filesystem::path& file, Diagnostics& diagnostics) {
     return SweepReader(sources, diagnostics).read(*root, file);
 }
 
-std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem::path& output,
-                                      const Registry& registry, Diagnostics& diagnostics) {
+std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem::path& output, const Registry& registry,
+                                      Diagnostics& diagnostics) {
     std::vector<CampaignCase> cases;
     // The base scene alone first, so that its own errors are reported once, not once per case.
     const Scene base = SceneDocument::load_located(sweep.scene, {}, diagnostics).validate(registry, diagnostics);
@@ -221,12 +224,15 @@ std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem:
                 if (const auto [it, first] = names.emplace(name, where); !first) {
                     diagnostics.error(c.where, "cases",
                                       fmt::format("two cases would both run in cases/{}: give the listed cases "
-                                                  "names (`name:`) or vary different keys", name));
+                                                  "names (`name:`) or vary different keys",
+                                                  name));
                     continue;
                 }
-                overrides.push_back({"output=" + detail::yaml_text((output / "cases" / name).string()), sweep.scene_where});
+                overrides.push_back(
+                    {"output=" + detail::yaml_text((output / "cases" / name).string()), sweep.scene_where});
                 const auto before = diagnostics.list().size();
-                out.scene = SceneDocument::load_located(sweep.scene, overrides, diagnostics).validate(registry, diagnostics);
+                out.scene =
+                    SceneDocument::load_located(sweep.scene, overrides, diagnostics).validate(registry, diagnostics);
                 if (diagnostics.list().size() != before) continue;
                 out.name = name;
                 cases.push_back(std::move(out));

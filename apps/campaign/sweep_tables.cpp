@@ -69,7 +69,8 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cas
     const auto values_of = [&](const CampaignCase& c) {
         std::string text;
         for (const auto& key : columns) {
-            const auto it = std::find_if(c.values.begin(), c.values.end(), [&](const auto& v) { return v.first == key; });
+            const auto it =
+                std::find_if(c.values.begin(), c.values.end(), [&](const auto& v) { return v.first == key; });
             text += "," + csv_cell(it == c.values.end() ? std::string() : it->second);
         }
         return text;
@@ -77,8 +78,9 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cas
     std::string header = "case";
     for (const auto& key : columns) header += "," + csv_cell(key);
 
-    const std::string comment = fmt::format("# frictionlab sweep {}{}: each case's run.yaml in cases/ records its resolved scene\n",
-                                            sweep.file.filename().string(), sweep.title.empty() ? "" : " (" + sweep.title + ")");
+    const std::string comment =
+        fmt::format("# frictionlab sweep {}{}: each case's run.yaml in cases/ records its resolved scene\n",
+                    sweep.file.filename().string(), sweep.title.empty() ? "" : " (" + sweep.title + ")");
     std::string table = comment + header +
                         ",status,reason,scene_hash,global_static_coefficient,events,precursor_count,"
                         "first_precursor_force_ratio,steps,wall_seconds,cpu_seconds\n";

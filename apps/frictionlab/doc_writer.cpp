@@ -37,8 +37,8 @@ std::string text(const TypeInfo& t) {
 }
 
 std::string markdown(const TypeInfo& t) {
-    std::string out = fmt::format("### `{}` ({})\n\n{}\n\nProvided by `{}`.\n\n", t.type, to_string(t.kind),
-                                  t.summary, library_of(t));
+    std::string out = fmt::format("### `{}` ({})\n\n{}\n\nProvided by `{}`.\n\n", t.type, to_string(t.kind), t.summary,
+                                  library_of(t));
     if (t.params.empty()) return out + "No parameters.\n\n";
     out += "| key | type | unit | default | constraints | meaning |\n|---|---|---|---|---|---|\n";
     for (const auto& p : t.params)
@@ -61,7 +61,10 @@ nlohmann::ordered_json json(const TypeInfo& t) {
         if (!p.choices.empty()) o["choices"] = p.choices;
         params.push_back(std::move(o));
     }
-    return {{"kind", to_string(t.kind)}, {"type", t.type}, {"library", library_of(t)}, {"summary", t.summary},
+    return {{"kind", to_string(t.kind)},
+            {"type", t.type},
+            {"library", library_of(t)},
+            {"summary", t.summary},
             {"params", std::move(params)}};
 }
 

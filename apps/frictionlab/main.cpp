@@ -47,7 +47,8 @@ struct Common {
     bool quiet = false;
 
     void attach(CLI::App& cmd) {
-        cmd.add_option("--plugin-path", plugin_paths, "Also load plugins from this directory (repeatable; searched first)")
+        cmd.add_option("--plugin-path", plugin_paths,
+                       "Also load plugins from this directory (repeatable; searched first)")
             ->check(CLI::ExistingDirectory);
         cmd.add_option("--log-level", log_level, "Log level")
             ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
@@ -55,7 +56,8 @@ struct Common {
     }
 
     std::shared_ptr<spdlog::logger> logger() const {
-        auto log = std::make_shared<spdlog::logger>("frictionlab", std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
+        auto log =
+            std::make_shared<spdlog::logger>("frictionlab", std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
         log->set_level(quiet ? spdlog::level::warn : spdlog::level::from_str(log_level));
         log->set_pattern("[%H:%M:%S.%e] %^%l%$: %v");
         return log;
@@ -118,15 +120,15 @@ std::optional<fl::Scene> read_scene(const std::filesystem::path& file, const std
 
 std::vector<const fl::TypeInfo*> all_types(const fl::Registry& registry) {
     std::vector<const fl::TypeInfo*> out;
-    for (auto kind : {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator,
-                      fl::Kind::observer})
+    for (auto kind :
+         {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator, fl::Kind::observer})
         for (const auto* t : registry.types(kind)) out.push_back(t);
     return out;
 }
 
 std::optional<fl::Kind> kind_named(const std::string& name) {
-    for (auto kind : {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator,
-                      fl::Kind::observer})
+    for (auto kind :
+         {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator, fl::Kind::observer})
         if (fl::to_string(kind) == name) return kind;
     return std::nullopt;
 }
@@ -153,8 +155,9 @@ std::vector<std::string> plot_command(const std::vector<std::string>& arguments)
     const auto share = fl::shipped_data_directory();
     const auto script = share ? *share / "scripts" / "frictionlab_plot.py" : std::filesystem::path();
     if (!share || !std::filesystem::exists(script))
-        throw fl::InputError("cannot find the plotting script share/frictionlab/scripts/frictionlab_plot.py next to "
-                             "this frictionlab");
+        throw fl::InputError(
+            "cannot find the plotting script share/frictionlab/scripts/frictionlab_plot.py next to "
+            "this frictionlab");
     const char* env = std::getenv("FRICTIONLAB_PYTHON");
     const std::string python = env ? env : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
     std::vector<std::string> args{python, script.string()};
@@ -217,12 +220,15 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
             fl::prepare_output_directory(output, options.overwrite, {spec.scene, file});
     }
     fl::CampaignOptions campaign;
-    campaign.jobs = jobs > 0 ? jobs : fl::mpi_size() > 1 ? 1 : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    campaign.jobs = jobs > 0             ? jobs
+                    : fl::mpi_size() > 1 ? 1
+                                         : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     campaign.allow_unstable_step = options.allow_unstable_step;
     campaign.live_progress = root && isatty(STDERR_FILENO) && !common.quiet;
     if (root)
-        log.info("sweep {}: {} cases, {} at a time{}", file.filename().string(), cases.size(), campaign.jobs,
-                 fl::mpi_size() > 1 ? fmt::format(" on rank 0 and one on each of {} other ranks", fl::mpi_size() - 1) : "");
+        log.info(
+            "sweep {}: {} cases, {} at a time{}", file.filename().string(), cases.size(), campaign.jobs,
+            fl::mpi_size() > 1 ? fmt::format(" on rank 0 and one on each of {} other ranks", fl::mpi_size() - 1) : "");
     const auto records = fl::run_campaign(cases, output, registry, log, campaign);
     if (!root) return fl::exit_code::ok;
     fl::write_sweep_tables(spec, cases, records, output);
@@ -257,14 +263,13 @@ std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
 }
 
 /// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
-int study(const std::filesystem::path& file, std::string output, const fl::RunOptions& options, bool check_only, const Common& common,
-          fl::Registry& registry, spdlog::logger& log) {
+int study(const std::filesystem::path& file, std::string output, const fl::RunOptions& options, bool check_only,
+          const Common& common, fl::Registry& registry, spdlog::logger& log) {
     fl::Diagnostics diagnostics;
     const auto spec = fl::read_study(file, diagnostics);
     std::vector<fl::Scene> scenes;
     if (diagnostics.empty()) {
-        const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics)
-                                     .plugin_paths(diagnostics);
+        const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics).plugin_paths(diagnostics);
         fl::load_plugins(registry, common.directories(scene_paths));
         if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
         scenes = fl::study_scenes(spec, output, registry, diagnostics);
@@ -301,8 +306,9 @@ void attach_run_flags(CLI::App& cmd, fl::RunOptions& options, bool& removed_forc
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"FrictionLab: simulations of the onset of frictional sliding.\n"
-                 "Scenes are YAML files naming a bulk model, friction law, loaders, integrator, stages and observers."};
+    CLI::App app{
+        "FrictionLab: simulations of the onset of frictional sliding.\n"
+        "Scenes are YAML files naming a bulk model, friction law, loaders, integrator, stages and observers."};
     app.set_version_flag("--version", "frictionlab " + fl::framework_version() + " (git " + fl::git_revision() + ")");
     app.require_subcommand(1);
     app.fallthrough();
@@ -325,8 +331,9 @@ int main(int argc, char** argv) {
     common.attach(*run);
 
     auto* check = app.add_subcommand(
-        "check", "Validate a scene (and estimate its stable time step), study or sweep; report every error with "
-                 "file:line:column");
+        "check",
+        "Validate a scene (and estimate its stable time step), study or sweep; report every error with "
+        "file:line:column");
     check->add_option("scene", scene_file, "Scene, study or sweep file (YAML)")->required();
     check->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
     auto* check_output = check->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
@@ -336,7 +343,9 @@ int main(int argc, char** argv) {
     common.attach(*list);
 
     auto* doc = app.add_subcommand("doc", "Document types and their parameters: doc [KIND[/TYPE]]");
-    doc->add_option("selector", selector, "A kind (e.g. friction_law), KIND/TYPE, or sweep or study (their file formats); all types if omitted");
+    doc->add_option(
+        "selector", selector,
+        "A kind (e.g. friction_law), KIND/TYPE, or sweep or study (their file formats); all types if omitted");
     doc->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "md", "json"}));
     common.attach(*doc);
 
@@ -351,9 +360,11 @@ int main(int argc, char** argv) {
 
     std::filesystem::path study_file;
     auto* study_cmd = app.add_subcommand(
-        "study", "Run an accuracy study: each case against a converged reference; study.csv, study.md, work-precision plot");
+        "study",
+        "Run an accuracy study: each case against a converged reference; study.csv, study.md, work-precision plot");
     study_cmd->add_option("study", study_file, "Study file (YAML)")->required();
-    auto* study_output = study_cmd->add_option("-o,--output", output, "Output directory (default: out/<study file name>)");
+    auto* study_output =
+        study_cmd->add_option("-o,--output", output, "Output directory (default: out/<study file name>)");
     bool check_only = false;
     study_cmd->add_flag("--check", check_only, "Only validate the study and the scene of every case");
     attach_run_flags(*study_cmd, options, removed_force);
@@ -361,9 +372,10 @@ int main(int argc, char** argv) {
 
     std::filesystem::path sweep_file;
     int jobs = 0;
-    auto* sweep_cmd = app.add_subcommand(
-        "sweep", "Run a campaign: a base scene over a grid, listed cases and seeds; sweep.csv, events.csv. "
-                 "Under mpirun or srun the cases are spread over the ranks");
+    auto* sweep_cmd =
+        app.add_subcommand("sweep",
+                           "Run a campaign: a base scene over a grid, listed cases and seeds; sweep.csv, events.csv. "
+                           "Under mpirun or srun the cases are spread over the ranks");
     sweep_cmd->add_option("sweep", sweep_file, "Sweep file (YAML)")->required();
     auto* sweep_output = sweep_cmd->add_option("-o,--output", output,
                                                "Output directory (default: out/<sweep file name>); run again into "
@@ -389,8 +401,9 @@ int main(int argc, char** argv) {
     std::signal(SIGXFSZ, SIG_IGN);
     auto log = common.logger();
     if (removed_force) {
-        log->error("--force is gone: --overwrite replaces an output directory FrictionLab created, "
-                   "--allow-unstable-step runs a time step above the estimated stable one");
+        log->error(
+            "--force is gone: --overwrite replaces an output directory FrictionLab created, "
+            "--allow-unstable-step runs a time step above the estimated stable one");
         return fl::exit_code::bad_input;
     }
     if ((run_output->count() > 0 || check_output->count() > 0 || study_output->count() > 0 ||
@@ -451,13 +464,14 @@ int main(int argc, char** argv) {
         } else if (*doc && (selector == "sweep" || selector == "study")) {
             std::cout << campaign_doc(selector);
         } else if (*doc) {
-            const auto f = format == "md" ? fl::cli::DocFormat::markdown
+            const auto f = format == "md"     ? fl::cli::DocFormat::markdown
                            : format == "json" ? fl::cli::DocFormat::json
                                               : fl::cli::DocFormat::text;
             std::cout << fl::cli::render_doc(select_types(registry, selector), f);
         } else if (*example) {
             const auto types = select_types(registry, selector);
-            if (types.size() != 1) throw fl::InputError("example needs KIND/TYPE, e.g. friction_law/three_state_junctions");
+            if (types.size() != 1)
+                throw fl::InputError("example needs KIND/TYPE, e.g. friction_law/three_state_junctions");
             std::cout << fl::example_yaml(*types.front());
         }
         return fl::exit_code::ok;
@@ -471,8 +485,9 @@ int main(int argc, char** argv) {
         log->error("run failed: {}", e.what());
         return fl::exit_code::run_failure;
     } catch (const std::bad_alloc&) {
-        log->error("out of memory: the scene asks for more than this machine has; make the lattice, the junctions "
-                   "per block or the observers' output smaller");
+        log->error(
+            "out of memory: the scene asks for more than this machine has; make the lattice, the junctions "
+            "per block or the observers' output smaller");
         return fl::exit_code::run_failure;
     } catch (const std::filesystem::filesystem_error& e) {
         log->error("cannot use '{}': {}", e.path1().string(), e.code().message());

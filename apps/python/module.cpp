@@ -59,7 +59,8 @@ std::optional<fs::path> shipped_plugins() {
     return std::nullopt;
 }
 
-std::vector<fs::path> plugin_directories(const std::vector<fs::path>& explicit_paths, const std::vector<fs::path>& scene) {
+std::vector<fs::path> plugin_directories(const std::vector<fs::path>& explicit_paths,
+                                         const std::vector<fs::path>& scene) {
     const char* env = std::getenv("FRICTIONLAB_PLUGIN_PATH");
     return fl::plugin_directories(explicit_paths, scene, env ? env : "", shipped_plugins());
 }
@@ -80,8 +81,8 @@ public:
                         const std::vector<fs::path>& plugin_paths) {
         return PyScene(file, std::nullopt, overrides, plugin_paths);
     }
-    static PyScene from_yaml(const std::string& text, const std::string& name, const std::vector<std::string>& overrides,
-                             const std::vector<fs::path>& plugin_paths) {
+    static PyScene from_yaml(const std::string& text, const std::string& name,
+                             const std::vector<std::string>& overrides, const std::vector<fs::path>& plugin_paths) {
         return PyScene(name, text, overrides, plugin_paths);
     }
 
@@ -112,7 +113,8 @@ public:
 
         // The run steps in a worker thread; this (main) thread waits with the GIL released and looks
         // for signals, which CPython delivers to the main thread only, ten times a second.
-        auto result = std::async(std::launch::async, [&] { return fl::run_scene(target->scene_, *target->registry_, *log, options); });
+        auto result = std::async(std::launch::async,
+                                 [&] { return fl::run_scene(target->scene_, *target->registry_, *log, options); });
         bool interrupted = false;
         std::optional<py::error_already_set> signal_error;
         {
@@ -149,8 +151,11 @@ public:
 private:
     PyScene(fs::path source, std::optional<std::string> text, std::vector<std::string> overrides,
             std::vector<fs::path> plugin_paths)
-        : source_(std::move(source)), text_(std::move(text)), overrides_(std::move(overrides)),
-          plugin_paths_(std::move(plugin_paths)), registry_(std::make_shared<fl::Registry>()) {
+        : source_(std::move(source)),
+          text_(std::move(text)),
+          overrides_(std::move(overrides)),
+          plugin_paths_(std::move(plugin_paths)),
+          registry_(std::make_shared<fl::Registry>()) {
         fl::Diagnostics diagnostics;
         auto document = text_ ? fl::SceneDocument::parse(*text_, source_.string(), overrides_, diagnostics)
                               : fl::SceneDocument::load(source_, overrides_, diagnostics);

@@ -59,9 +59,10 @@ Chain1d::Chain1d(const Params& p, const Context& ctx) {
     body_.node_sets["trailing_edge"] = {0};
     body_.node_sets["leading_edge"] = {n - 1};
     for (Index i = 0; i + 1 < n; ++i) body_.bonds.push_back({i, i + 1});
-    ctx.log.debug("{}: chain of {} blocks, a = {:.4g} m, m = {:.4g} kg, k = {:.4g} N/m, eta = {:.4g} N s/m, "
-                  "eta_z = {:.4g} N s/m",
-                  ctx.name, n, a, node_mass(), body_.bond_stiffness, eta_, eta_z_);
+    ctx.log.debug(
+        "{}: chain of {} blocks, a = {:.4g} m, m = {:.4g} kg, k = {:.4g} N/m, eta = {:.4g} N s/m, "
+        "eta_z = {:.4g} N s/m",
+        ctx.name, n, a, node_mass(), body_.bond_stiffness, eta_, eta_z_);
 }
 
 std::vector<std::unique_ptr<Effect>> Chain1d::effects(const Context&) {

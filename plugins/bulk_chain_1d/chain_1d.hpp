@@ -34,9 +34,9 @@ namespace frictionlab {
 class Chain1d final : public BulkModel {
 public:
     struct Params : SliderParams {
-        int blocks = 100;               // N
-        double bond_stiffness = 0;      // k, N/m; 0: E B H / a
-        double damping_factor = 0.5;    // c in eta = sqrt(c k m)
+        int blocks = 100;                    // N
+        double bond_stiffness = 0;           // k, N/m; 0: E B H / a
+        double damping_factor = 0.5;         // c in eta = sqrt(c k m)
         double vertical_damping_factor = 2;  // c_z in eta_z = sqrt(c_z k m)
     };
     static constexpr std::string_view type = "chain_1d";

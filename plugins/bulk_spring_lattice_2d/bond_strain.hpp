@@ -47,8 +47,12 @@ inline constexpr double series_bound = 1.0 / 256;
 /// few ulps of exact (test_bond_strain.cpp).
 struct TensionSeries {
     explicit TensionSeries(double k)
-        : c0(k * 0.5), c1(k * -0.375), c2(k * 0.3124999999725654), c3(k * -0.2734374999742801),
-          c4(k * 0.24609854452148686), c5(k * -0.22559043236480483) {}
+        : c0(k * 0.5),
+          c1(k * -0.375),
+          c2(k * 0.3124999999725654),
+          c3(k * -0.2734374999742801),
+          c4(k * 0.24609854452148686),
+          c5(k * -0.22559043236480483) {}
 
     double operator()(double delta) const {
         double p = c5 * delta + c4;

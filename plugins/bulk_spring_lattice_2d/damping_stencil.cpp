@@ -10,8 +10,8 @@ namespace {
 
 FRICTIONLAB_HOT_KERNEL
 void stencil(const double* __restrict vx, const double* __restrict vz, const double* __restrict c0,
-             const double* __restrict c1, const double* __restrict c2, const double* __restrict c3, Index o0,
-             Index o1, Index o2, Index o3, Index n, double* __restrict fx, double* __restrict fz) {
+             const double* __restrict c1, const double* __restrict c2, const double* __restrict c3, Index o0, Index o1,
+             Index o2, Index o3, Index n, double* __restrict fx, double* __restrict fz) {
     for (Index i = 0; i < n; ++i) {
         const double x = vx[i], z = vz[i];
         const double a0 = c0[i], b0 = c0[i - o0], a1 = c1[i], b1 = c1[i - o1];
@@ -29,10 +29,12 @@ void interior_stencil(const double* __restrict vx, const double* __restrict vz, 
                       Index o2, Index o3, Index n, double* __restrict fx, double* __restrict fz) {
     for (Index i = 0; i < n; ++i) {
         const double x = vx[i], z = vz[i];
-        fx[i] += ((eta * (vx[i + o0] - x) - eta * (x - vx[i - o0])) + (eta * (vx[i + o1] - x) - eta * (x - vx[i - o1]))) +
-                 ((eta * (vx[i + o2] - x) - eta * (x - vx[i - o2])) + (eta * (vx[i + o3] - x) - eta * (x - vx[i - o3])));
-        fz[i] += ((eta * (vz[i + o0] - z) - eta * (z - vz[i - o0])) + (eta * (vz[i + o1] - z) - eta * (z - vz[i - o1]))) +
-                 ((eta * (vz[i + o2] - z) - eta * (z - vz[i - o2])) + (eta * (vz[i + o3] - z) - eta * (z - vz[i - o3])));
+        fx[i] +=
+            ((eta * (vx[i + o0] - x) - eta * (x - vx[i - o0])) + (eta * (vx[i + o1] - x) - eta * (x - vx[i - o1]))) +
+            ((eta * (vx[i + o2] - x) - eta * (x - vx[i - o2])) + (eta * (vx[i + o3] - x) - eta * (x - vx[i - o3])));
+        fz[i] +=
+            ((eta * (vz[i + o0] - z) - eta * (z - vz[i - o0])) + (eta * (vz[i + o1] - z) - eta * (z - vz[i - o1]))) +
+            ((eta * (vz[i + o2] - z) - eta * (z - vz[i - o2])) + (eta * (vz[i + o3] - z) - eta * (z - vz[i - o3])));
     }
 }
 

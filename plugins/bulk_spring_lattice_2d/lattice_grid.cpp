@@ -40,10 +40,10 @@ std::array<BondFamily, 4> LatticeGrid::families() const {
         return b;
     };
     return {{
-        family(1, 0, l, 1.0),    // (ix, iz) -> (ix + 1, iz)
-        family(0, 1, l, 1.0),    // (ix, iz) -> (ix, iz + 1)
-        family(1, 1, d, 0.5),    // (ix, iz) -> (ix + 1, iz + 1)
-        family(-1, 1, d, 0.5),   // (ix + 1, iz) -> (ix, iz + 1)
+        family(1, 0, l, 1.0),   // (ix, iz) -> (ix + 1, iz)
+        family(0, 1, l, 1.0),   // (ix, iz) -> (ix, iz + 1)
+        family(1, 1, d, 0.5),   // (ix, iz) -> (ix + 1, iz + 1)
+        family(-1, 1, d, 0.5),  // (ix + 1, iz) -> (ix, iz + 1)
     }};
 }
 

@@ -16,18 +16,18 @@
 namespace frictionlab {
 
 struct BondFamily {
-    Index dx, dz;                // grid offset from the "from" node to the "to" node
-    Index offset;                // dx + nx dz: bond i joins node i to node i + offset
-    Index count;                 // bonds i = 0 .. count - 1 (some masked out)
-    double ref_x, ref_z;         // the bond vector at rest, (dx, dz) l_s, m
-    double ex, ez;               // its direction (unit vector)
-    double rest_length;          // m: l_s, or sqrt(2) l_s rounded
-    double relative_stiffness;   // 1 for straight bonds, 1/2 for diagonals (Li2020 Sec. 2.1)
+    Index dx, dz;               // grid offset from the "from" node to the "to" node
+    Index offset;               // dx + nx dz: bond i joins node i to node i + offset
+    Index count;                // bonds i = 0 .. count - 1 (some masked out)
+    double ref_x, ref_z;        // the bond vector at rest, (dx, dz) l_s, m
+    double ex, ez;              // its direction (unit vector)
+    double rest_length;         // m: l_s, or sqrt(2) l_s rounded
+    double relative_stiffness;  // 1 for straight bonds, 1/2 for diagonals (Li2020 Sec. 2.1)
     /// ref_x^2 + ref_z^2 - rest_length^2 to within ~1e-32 rest_length^2: zero for straight bonds, the
     /// rounding of sqrt(2) l_s for diagonals. It lets a law take r^2 - l^2 from the displacement
     /// relative to the rest vector, free of cancellation (bond_strain.hpp).
     double rest_defect;
-    std::vector<double> mask;    // count values: 1 for a bond, 0 for a pair that wraps round an edge
+    std::vector<double> mask;  // count values: 1 for a bond, 0 for a pair that wraps round an edge
 };
 
 struct LatticeGrid {

@@ -59,10 +59,9 @@ bool geometric_series(const double* __restrict x, const double* __restrict z, co
 template <RestVector R>
 [[gnu::always_inline]] inline bool series_damped(const double* __restrict x, const double* __restrict z,
                                                  const double* __restrict vx, const double* __restrict vz,
-                                                 const double* __restrict inverse_l2,
-                                                 const double* __restrict dashpot, Index offset, Index count,
-                                                 const SeriesFamily& c, double* __restrict fx,
-                                                 double* __restrict fz) {
+                                                 const double* __restrict inverse_l2, const double* __restrict dashpot,
+                                                 Index offset, Index count, const SeriesFamily& c,
+                                                 double* __restrict fx, double* __restrict fz) {
     std::int64_t beyond = 0;
     for (Index i = 0; i < count; ++i) {
         const double t = series_tension<R>(x, z, inverse_l2, offset, i, c, beyond);
@@ -72,11 +71,11 @@ template <RestVector R>
     return beyond != 0;
 }
 
-#define FRICTIONLAB_SERIES_DAMPED(name, rest_vector)                                                                  \
-    FRICTIONLAB_HOT_KERNEL                                                                                            \
-    bool name(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2,          \
-              const double* dashpot, Index offset, Index count, SeriesFamily c, double* fx, double* fz) {              \
-        return series_damped<rest_vector>(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);              \
+#define FRICTIONLAB_SERIES_DAMPED(name, rest_vector)                                                          \
+    FRICTIONLAB_HOT_KERNEL                                                                                    \
+    bool name(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2, \
+              const double* dashpot, Index offset, Index count, SeriesFamily c, double* fx, double* fz) {     \
+        return series_damped<rest_vector>(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);       \
     }
 FRICTIONLAB_SERIES_DAMPED(series_damped_along_x, RestVector::along_x)
 FRICTIONLAB_SERIES_DAMPED(series_damped_along_z, RestVector::along_z)
@@ -88,9 +87,12 @@ bool geometric_series_damped(const double* x, const double* z, const double* vx,
                              const double* inverse_l2, const double* dashpot, Index offset, Index count,
                              const SeriesFamily& c, double* fx, double* fz) {
     switch (rest_vector_of(c.ref_x, c.ref_z, c.rest_defect)) {
-    case RestVector::along_x: return series_damped_along_x(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
-    case RestVector::along_z: return series_damped_along_z(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
-    case RestVector::any: break;
+        case RestVector::along_x:
+            return series_damped_along_x(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
+        case RestVector::along_z:
+            return series_damped_along_z(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
+        case RestVector::any:
+            break;
     }
     return series_damped_any(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
 }
@@ -98,9 +100,9 @@ bool geometric_series_damped(const double* x, const double* z, const double* vx,
 /// The bonds the series could not do, with a square root and a division each (and their dashpots
 /// again if `dashpot` is given). They are few (a point load's neighbourhood at high load): a second
 /// pass finds them by their delta.
-void exact_beyond_bound(const double* x, const double* z, const double* vx, const double* vz,
-                        const double* inverse_l2, const double* dashpot, Index offset, Index count,
-                        const SeriesFamily& c, double k, double* fx, double* fz) {
+void exact_beyond_bound(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2,
+                        const double* dashpot, Index offset, Index count, const SeriesFamily& c, double k, double* fx,
+                        double* fz) {
     for (Index i = 0; i < count; ++i) {
         const double delta = bond_delta(x, z, inverse_l2, offset, i, c);
         if (std::abs(delta) <= series_bound) continue;
@@ -115,9 +117,8 @@ void exact_beyond_bound(const double* x, const double* z, const double* vx, cons
 
 /// Linearised: t = k (Delta . e - l) along the reference direction e (Delta_u . e, as the rest Delta is l e).
 FRICTIONLAB_HOT_KERNEL
-void small_strain(const double* __restrict x, const double* __restrict z, const double* __restrict mask,
-                  Index offset, Index count, double ex, double ez, double l, double k, double* __restrict fx,
-                  double* __restrict fz) {
+void small_strain(const double* __restrict x, const double* __restrict z, const double* __restrict mask, Index offset,
+                  Index count, double ex, double ez, double l, double k, double* __restrict fx, double* __restrict fz) {
     for (Index i = 0; i < count; ++i) {
         const double dx = x[i + offset] - x[i], dz = z[i + offset] - z[i];
         const double t = mask[i] * (k * (dx * ex + dz * ez - l));
@@ -139,7 +140,11 @@ std::array<std::vector<double>, 4> inverse_square_lengths(const std::array<BondF
 }  // namespace
 
 LatticeSprings::LatticeSprings(const LatticeGrid& grid, double bond_stiffness, Law law)
-    : grid_(grid), families_(grid.families()), stiffness_(bond_stiffness), law_(law), pair_(families_, grid.size()),
+    : grid_(grid),
+      families_(grid.families()),
+      stiffness_(bond_stiffness),
+      law_(law),
+      pair_(families_, grid.size()),
       inverse_l2_(inverse_square_lengths(families_)) {}
 
 std::string LatticeSprings::describe() const {
@@ -171,9 +176,9 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
         const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, TensionSeries(k)};
         const double* dashpot = damping ? damping->coefficients(n) : nullptr;
         const double* inverse_l2 = inverse_l2_[n].data();
-        const bool beyond = dashpot ? geometric_series_damped(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c,
-                                                              px, pz)
-                                    : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
+        const bool beyond =
+            dashpot ? geometric_series_damped(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, px, pz)
+                    : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
         if (beyond) exact_beyond_bound(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, k, px, pz);
     }
     pair_.add_to(f.fx.data(), f.fz.data());

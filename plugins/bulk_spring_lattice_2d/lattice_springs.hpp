@@ -56,7 +56,7 @@ private:
     std::array<BondFamily, 4> families_;
     double stiffness_;
     Law law_;
-    PairForces pair_;            // scratch: this evaluation's per-bond forces
+    PairForces pair_;                                // scratch: this evaluation's per-bond forces
     std::array<std::vector<double>, 4> inverse_l2_;  // per family: 1/l^2 of each bond, 0 on masked pairs
 };
 

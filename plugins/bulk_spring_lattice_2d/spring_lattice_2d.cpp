@@ -43,18 +43,18 @@ std::string SpringLattice2d::too_large(const Params& p) {
     constexpr double bytes_per_node = 430, most_nodes = 4.0 * 1024 * 1024;
     const double nodes = static_cast<double>(p.nx) * static_cast<double>(p.nz);
     if (nodes <= most_nodes) return {};
-    return fmt::format("nx x nz = {:.0f} nodes would need about {:.3g} GB of memory before the first step; a "
-                       "lattice may have at most {:.0f} nodes",
-                       nodes, nodes * bytes_per_node / 1e9, most_nodes);
+    return fmt::format(
+        "nx x nz = {:.0f} nodes would need about {:.3g} GB of memory before the first step; a "
+        "lattice may have at most {:.0f} nodes",
+        nodes, nodes * bytes_per_node / 1e9, most_nodes);
 }
 
 std::string SpringLattice2d::spacing_mismatch(const Params& p) {
     if (p.nx < 2 || p.nz < 2) return {};  // the per-key bounds report this
     const double along_x = p.length / (p.nx - 1), along_z = p.height / (p.nz - 1);
     if (std::abs(along_x - along_z) <= 1e-9 * std::max(along_x, along_z)) return {};
-    return fmt::format(
-        "the lattice cells must be square: length/(nx-1) = {:.6g} m but height/(nz-1) = {:.6g} m", along_x,
-        along_z);
+    return fmt::format("the lattice cells must be square: length/(nx-1) = {:.6g} m but height/(nz-1) = {:.6g} m",
+                       along_x, along_z);
 }
 
 SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)

@@ -37,7 +37,7 @@ public:
     struct Params : SliderParams {
         int nx = 41;
         int nz = 9;
-        double damping_factor = 0.5;   // c in eta = sqrt(c K m)
+        double damping_factor = 0.5;  // c in eta = sqrt(c K m)
         BondDamping::Mode damping_mode = BondDamping::Mode::full_vector;
         LatticeSprings::Law springs = LatticeSprings::Law::geometric;
     };

@@ -13,18 +13,24 @@ ParamSpec<RateState::Params> RateState::spec() {
         "Rate-and-state friction (Dieterich 1979, doi:10.1029/JB084iB05p02161; Ruina 1983, "
         "doi:10.1029/JB088iB12p10359), regularised: mu = a asinh[(v/2v0) exp(psi/a)] with the state psi "
         "integrated with the bulk (aging or slip law); force -mu f_N on each interface block.");
-    s.add("a", &Params::a, "Direct-effect coefficient a: an instantaneous velocity step v1 -> v2 raises mu by a ln(v2/v1).")
-        .unit("1").greater_than(0);
+    s.add("a", &Params::a,
+          "Direct-effect coefficient a: an instantaneous velocity step v1 -> v2 raises mu by a ln(v2/v1).")
+        .unit("1")
+        .greater_than(0);
     s.add("b", &Params::b, "Evolution-effect coefficient b: the steady state changes by (a - b) ln(v2/v1).")
-        .unit("1").greater_than(0);
+        .unit("1")
+        .greater_than(0);
     s.add("d_c", &Params::d_c, "Characteristic slip distance D_c over which psi evolves to its new steady state.")
-        .unit("m").greater_than(0);
+        .unit("m")
+        .greater_than(0);
     s.add("f0", &Params::f0, "Reference friction coefficient f0: the steady-state mu at v = v0.")
-        .unit("1").greater_than(0);
+        .unit("1")
+        .greater_than(0);
     s.add("v0", &Params::v0, "Reference slip velocity v0.").unit("m/s").greater_than(0);
     s.add("initial_velocity", &Params::initial_velocity,
           "psi starts at its steady state psi_ss = f0 - b ln(v/v0) for this velocity (both laws).")
-        .unit("m/s").greater_than(0);
+        .unit("m/s")
+        .greater_than(0);
     s.choice("law", &Params::law, {{"aging", Law::aging}, {"slip", Law::slip}},
              "State evolution: aging, dpsi/dt = (b v0/D_c)[exp((f0 - psi)/b) - |v|/v0]; or slip, "
              "dpsi/dt = -(|v|/D_c)(psi - psi_ss(v)).");
@@ -61,8 +67,8 @@ double RateState::state_rate(double v, double psi) const {
 }
 
 std::string RateState::describe() const {
-    return fmt::format("rate-and-state friction ({} law, a={:.3g}, b={:.3g}, D_c={:.3g} m)", law_ == Law::aging ? "aging" : "slip", p_.a, p_.b,
-                       p_.d_c);
+    return fmt::format("rate-and-state friction ({} law, a={:.3g}, b={:.3g}, D_c={:.3g} m)",
+                       law_ == Law::aging ? "aging" : "slip", p_.a, p_.b, p_.d_c);
 }
 
 void RateState::add_forces(const StageView& s, ForceView& f) {

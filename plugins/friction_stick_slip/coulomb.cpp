@@ -23,7 +23,8 @@ ParamSpec<Params> CoulombStrength::spec() {
         "mu_k f_N against its velocity and re-sticks when it stops or reverses.");
     stick_slip::add_settings(s);
     s.add("mu_k", &Params::mu_k, "Kinetic coefficient: a slipping block feels mu_k f_N against its velocity.")
-        .unit("1").at_least(0);
+        .unit("1")
+        .at_least(0);
     s.rule("mu_k", order_rule);
     return s;
 }
@@ -31,7 +32,8 @@ ParamSpec<Params> CoulombStrength::spec() {
 CoulombStrength::CoulombStrength(const Params& p) : mu_k_(spec().checked(p).mu_k) {}
 
 void CoulombStrength::declare(Quantities& q, const std::string& node_set, Index blocks) {
-    slipping_ = &q.field("slipping", node_set, blocks, "1", "1 while the block slips, 0 while it is stuck or detached.");
+    slipping_ =
+        &q.field("slipping", node_set, blocks, "1", "1 while the block slips, 0 while it is stuck or detached.");
 }
 
 std::string CoulombStrength::describe(const stick_slip::Settings& settings, const std::string& stiffness) const {

@@ -24,7 +24,8 @@ ParamSpec<Params> SlipWeakeningStrength::spec() {
     stick_slip::add_settings(s);
     s.add("mu_d", &Params::mu_d, "Residual coefficient, reached after a slip D_c.").unit("1").at_least(0);
     s.add("critical_slip", &Params::critical_slip, "Slip D_c over which the strength weakens from mu_s to mu_d.")
-        .unit("m").greater_than(0);
+        .unit("m")
+        .greater_than(0);
     s.rule("mu_d", order_rule);
     return s;
 }
@@ -33,7 +34,8 @@ SlipWeakeningStrength::SlipWeakeningStrength(const Params& p)
     : mu_s_(spec().checked(p).mu_s), mu_d_(p.mu_d), critical_slip_(p.critical_slip) {}
 
 void SlipWeakeningStrength::declare(Quantities& q, const std::string& node_set, Index blocks) {
-    slip_ = &q.field("slip", node_set, blocks, "m", "Slip delta of the block since it last stuck (0 while stuck or detached).");
+    slip_ = &q.field("slip", node_set, blocks, "m",
+                     "Slip delta of the block since it last stuck (0 while stuck or detached).");
 }
 
 std::string SlipWeakeningStrength::describe(const stick_slip::Settings& settings, const std::string& stiffness) const {

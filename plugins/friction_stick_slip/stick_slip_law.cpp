@@ -31,7 +31,8 @@ using stick_slip::stiffness;
 template <class Strength>
 StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
     : name_(ctx.name.empty() ? std::string(type) : ctx.name), settings_(stick_slip::settings_of(p)), strength_(p) {
-    if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
+    if (!ctx.body || !ctx.quantities)
+        throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
     nodes_ = ctx.body->nodes(settings_.node_set);
     Quantities& q = *ctx.quantities;
     const Index n = static_cast<Index>(nodes_.size());
@@ -55,8 +56,10 @@ double StickSlipLaw<Strength>::stage_slip(const Block& b, double x) const {
 template <class Strength>
 double StickSlipLaw<Strength>::stage_force(const Block& b, double x, double v, double normal, double slip) const {
     switch (b.mode) {
-        case Mode::detached: return 0;
-        case Mode::stuck: return -b.stiffness * (x - b.anchor);
+        case Mode::detached:
+            return 0;
+        case Mode::stuck:
+            return -b.stiffness * (x - b.anchor);
         case Mode::slipping:
             return -strength_(std::max(0.0, normal), slip) * std::tanh(v / settings_.regularisation_velocity);
     }

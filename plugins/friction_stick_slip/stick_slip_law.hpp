@@ -27,10 +27,10 @@ struct Settings {
 enum class Mode : std::uint8_t { detached, stuck, slipping };
 struct Block {
     Mode mode = Mode::detached;
-    double stiffness = 0;  // k_t, N/m
-    double anchor = 0;     // m, stuck: where the spring is unloaded
-    double slip = 0;       // m, delta: slip since the block last stuck (slipping only)
-    double direction = 0;  // s = +-1, slipping: the direction it broke in
+    double stiffness = 0;                 // k_t, N/m
+    double anchor = 0;                    // m, stuck: where the spring is unloaded
+    double slip = 0;                      // m, delta: slip since the block last stuck (slipping only)
+    double direction = 0;                 // s = +-1, slipping: the direction it broke in
     bool reached_stick_velocity = false;  // slipping: |v| has exceeded stick_velocity
     double x_start = 0, v_start = 0;      // m, m/s: at the start of the current step
 };
@@ -46,17 +46,21 @@ std::string stiffness_text(const Settings&);
 template <class P>
 void add_settings(ParamSpec<P>& s) {
     s.add("mu_s", &P::mu_s, "Static coefficient: a stuck block breaks when its spring force exceeds mu_s f_N.")
-        .unit("1").greater_than(0);
+        .unit("1")
+        .greater_than(0);
     s.add("tangential_stiffness", &P::tangential_stiffness,
           "Tangential stiffness k_t of the spring that holds a stuck block; 0 = sqrt(39.2e9 N/m^2 * f_N) per block, "
           "from its normal force at each commit.")
-        .unit("N/m").at_least(0);
+        .unit("N/m")
+        .at_least(0);
     s.add("stick_velocity", &P::stick_velocity,
           "A slipping block re-sticks when its speed falls below this after exceeding it, or its velocity reverses.")
-        .unit("m/s").at_least(0);
+        .unit("m/s")
+        .at_least(0);
     s.add("regularisation_velocity", &P::regularisation_velocity,
           "v_r of the kinetic force -S tanh(v/v_r), a smooth sign(v).")
-        .unit("m/s").greater_than(0);
+        .unit("m/s")
+        .greater_than(0);
     s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
 }
 template <class P>
@@ -124,7 +128,9 @@ public:
 
     StickSlipLaw(const Params&, const Context&);
 
-    std::string describe() const override { return strength_.describe(settings_, stick_slip::stiffness_text(settings_)); }
+    std::string describe() const override {
+        return strength_.describe(settings_, stick_slip::stiffness_text(settings_));
+    }
     void add_forces(const StageView& s, ForceView& f) override;
     void begin_stage(const StageInfo&, const StageView&) override;
     void begin_step(const StageView&) override;

@@ -29,12 +29,12 @@ enum class JunctionState : std::uint8_t { pinned, sliding, dislocated };
 /// What the hot arrays do not need: identity, history and clock of one junction.
 struct Junction {
     std::uint64_t id = 0;
-    double sign = 1;         // s: the direction the junction was overcome in (B.9)
-    double f0 = 0;           // pinned: force when it entered the pinned state, N
-    double anchor = 0;       // pinned: block position when it entered the pinned state, m
-    double tan_phi = 0;      // dislocated: current tan(phi) (frozen while relaxing, B.11)
-    double entry = 0;        // sliding/dislocated: time the state was entered, s
-    double lifetime = 0;     // sliding/dislocated: drawn duration t_s or t_d, s
+    double sign = 1;      // s: the direction the junction was overcome in (B.9)
+    double f0 = 0;        // pinned: force when it entered the pinned state, N
+    double anchor = 0;    // pinned: block position when it entered the pinned state, m
+    double tan_phi = 0;   // dislocated: current tan(phi) (frozen while relaxing, B.11)
+    double entry = 0;     // sliding/dislocated: time the state was entered, s
+    double lifetime = 0;  // sliding/dislocated: drawn duration t_s or t_d, s
     std::uint64_t sliding_draws = 0, dislocated_draws = 0;  // keyed-random counters (random.hpp)
 
     double deadline() const { return entry + lifetime; }
@@ -129,7 +129,7 @@ private:
     std::vector<double> b_;     // pinned: f0 - k_s (anchor - x_ref)
     std::vector<double> base_;  // active: step-start tangential force
     std::vector<double> lo_, hi_, off_;
-    std::vector<double> deadline_;      // active: entry + lifetime
+    std::vector<double> deadline_;  // active: entry + lifetime
     std::vector<JunctionState> state_;
     Index pinned_ = 0, sliding_ = 0;
     std::uint64_t next_id_ = 0;

@@ -32,12 +32,13 @@ constexpr std::uint64_t removal_slot = ~std::uint64_t{0};
 std::string angle_rule(const Params& p) {
     const double m = p.mu_d * std::tan(p.initial_angle);
     if (m < 1) return {};
-    return fmt::format("mu_d * tan(initial_angle) = {:.4g} must be below 1: the dislocated-junction force "
-                       "(Li et al. 2020, Eq. 11) divides by 1 - mu_d tan(phi0)", m);
+    return fmt::format(
+        "mu_d * tan(initial_angle) = {:.4g} must be below 1: the dislocated-junction force "
+        "(Li et al. 2020, Eq. 11) divides by 1 - mu_d tan(phi0)",
+        m);
 }
 
 std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
-
 
 }  // namespace
 
@@ -48,32 +49,47 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
         "p = pi rbar^2 H_d, which break at mu_s p, slide at mu_d p for a Gaussian time t_s, then ride a "
         "decaying asperity angle for a Gaussian time t_d before re-pinning.");
     s.add("hardness", &Params::hardness, "Hardness H_d of the asperities; sets the junction load p = pi rbar^2 H_d.")
-        .unit("Pa").greater_than(0);
-    s.add("contact_radius", &Params::contact_radius, "Mean micro-contact radius rbar (p = pi rbar^2 H_d, k_s = 8 G* rbar).")
-        .unit("m").greater_than(0);
+        .unit("Pa")
+        .greater_than(0);
+    s.add("contact_radius", &Params::contact_radius,
+          "Mean micro-contact radius rbar (p = pi rbar^2 H_d, k_s = 8 G* rbar).")
+        .unit("m")
+        .greater_than(0);
     s.add("youngs_modulus", &Params::youngs_modulus, "Young's modulus E of the asperities, for Mindlin's stiffness.")
-        .unit("Pa").greater_than(0);
+        .unit("Pa")
+        .greater_than(0);
     s.add("poisson_ratio", &Params::poisson_ratio, "Poisson ratio nu of the asperities, for Mindlin's stiffness.")
-        .unit("1").greater_than(-1).at_most(0.5);
+        .unit("1")
+        .greater_than(-1)
+        .at_most(0.5);
     s.add("tangential_stiffness", &Params::tangential_stiffness,
           "Tangential stiffness k_s of one junction; 0 = Mindlin, 8 G* rbar with G = E/(2(1+nu)), G* = G/(2(2-nu)).")
-        .unit("N/m").at_least(0);
+        .unit("N/m")
+        .at_least(0);
     s.add("mu_s", &Params::mu_s, "Static coefficient of one micro-contact: a pinned junction breaks when |f| > mu_s p.")
-        .unit("1").greater_than(0);
+        .unit("1")
+        .greater_than(0);
     s.add("mu_d", &Params::mu_d, "Sliding coefficient of one micro-contact: a sliding junction carries mu_d p.")
-        .unit("1").at_least(0);
+        .unit("1")
+        .at_least(0);
     s.add("sliding_time_mean", &Params::sliding_time_mean, "Mean t_s of the sliding-state duration (Gaussian, t > 0).")
-        .unit("s").greater_than(0);
+        .unit("s")
+        .greater_than(0);
     s.add("sliding_time_sd", &Params::sliding_time_sd, "Standard deviation of the sliding-state duration.")
-        .unit("s").at_least(0);
+        .unit("s")
+        .at_least(0);
     s.add("dislocated_time_mean", &Params::dislocated_time_mean,
           "Mean t_d of the dislocated-state duration (Gaussian, t > 0).")
-        .unit("s").greater_than(0);
+        .unit("s")
+        .greater_than(0);
     s.add("dislocated_time_sd", &Params::dislocated_time_sd, "Standard deviation of the dislocated-state duration.")
-        .unit("s").at_least(0);
+        .unit("s")
+        .at_least(0);
     s.add("initial_angle", &Params::initial_angle,
           "Contact angle phi0 of a junction entering the dislocated state; tan(phi) decays linearly to 0 over t_d.")
-        .unit("rad").at_least(0).less_than(std::numbers::pi / 2);
+        .unit("rad")
+        .at_least(0)
+        .less_than(std::numbers::pi / 2);
     s.choice("removal", &Params::removal,
              {{"random", Removal::random},
               {"most_loaded_pinned", Removal::most_loaded_pinned},
@@ -116,7 +132,8 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
       sampler_(ctx.seed, {params.sliding_time_mean, params.sliding_time_sd},
                {params.dislocated_time_mean, params.dislocated_time_sd}),
       next_event_(infinity) {
-    if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
+    if (!ctx.body || !ctx.quantities)
+        throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
     nodes_ = ctx.body->nodes(params.node_set);
     const Index n = static_cast<Index>(nodes_.size());
     Quantities& q = *ctx.quantities;
@@ -214,8 +231,10 @@ void ThreeStateJunctions::commit_block(Index i, double x, double t) {
     BlockJunctions& b = blocks_[k];
     b.advance(x - x_start_[k]);
     x_start_[k] = x;
-    if (events_) break_pinned(b, i, x, t);
-    else if (settle_overload_ == SettleOverload::slip_and_repin) repin_overloaded(b, x);
+    if (events_)
+        break_pinned(b, i, x, t);
+    else if (settle_overload_ == SettleOverload::slip_and_repin)
+        repin_overloaded(b, x);
     update_active(b, i, x, t);
     follow_normal_force(b, i, x);
     b.refresh_active();
@@ -292,9 +311,10 @@ void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double
     // An exploding run makes P_b absurd within a step; stop it here rather than allocate junctions
     // until memory runs out (the run's runaway check only looks every few steps).
     if (!(ratio <= max_junctions_per_block))
-        throw RunError(fmt::format("{}: block {} has a normal force of {:.3g} N, which would need {:.3g} junctions "
-                                   "(more than {:.0e}): the run is unstable, or p is far too small",
-                                   name_, i, (*normal_force_)[i], ratio, max_junctions_per_block));
+        throw RunError(
+            fmt::format("{}: block {} has a normal force of {:.3g} N, which would need {:.3g} junctions "
+                        "(more than {:.0e}): the run is unstable, or p is far too small",
+                        name_, i, (*normal_force_)[i], ratio, max_junctions_per_block));
     // The count n stays when floor(ratio + tol) <= n <= ceil(ratio - tol), i.e. (exactly, n being an
     // integer) ratio + tol < n + 1 and ratio - tol > n - 1: the common case, without floor and ceil.
     const auto n = static_cast<double>(b.size());
@@ -308,7 +328,8 @@ void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double
 Index ThreeStateJunctions::removal_choice(const BlockJunctions& b, Index i, double x) {
     const Index n = b.size(), pinned = b.pinned();
     switch (removal_) {
-        case Removal::random: break;
+        case Removal::random:
+            break;
         case Removal::most_loaded_pinned: {
             if (pinned == 0) break;
             Index best = 0;

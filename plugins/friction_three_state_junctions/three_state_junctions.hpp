@@ -34,8 +34,7 @@ namespace frictionlab {
 ///     from -> to                      when                              force on entry
 ///     pinned -> sliding (C1)          |f| > mu_s p (strict)             s mu_d p, s = sign f; draw t_s
 ///     sliding regular <-> relax (C2)  block reverses (the clamp)        continuous
-///     sliding -> dislocated (C3)      t >= entry + t_s and s f > 0      regular: s f^d(phi0)
-///                                                                         = s (mu_d + tan phi0) p / (1 - mu_d tan phi0);
+///     sliding -> dislocated (C3)      t >= entry + t_s and s f > 0      regular: s f^d(phi0) (*)
 ///                                                                       relaxing: s (s f + f^n(phi0)); draw t_d
 ///     sliding -> pinned (B.13)        t >= entry + t_s and s f <= 0     f0 = 0
 ///     dislocated relax (C4)           g < cap: phi frozen, f^n kept     continuous
@@ -43,6 +42,7 @@ namespace frictionlab {
 ///                                                                       or the current force (relaxing)
 ///     dislocated -> pinned (C6)       g <= 0 (separation)               f0 = 0
 ///     count change (B.7)              N^b outside [floor, ceil](P_b/p)  new junctions pinned, f0 = 0
+///     (*) f^d(phi0) = (mu_d + tan phi0) p / (1 - mu_d tan phi0)
 ///
 /// Step structure (B.17): states, anchors, clocks and counts are frozen within a step; every stage
 /// force is a function of the stage position only, with dx measured from the step start. commit()

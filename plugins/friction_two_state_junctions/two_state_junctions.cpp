@@ -22,7 +22,6 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 
 std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
-
 }  // namespace
 
 ParamSpec<Params> TwoStateJunctions::spec() {
@@ -31,19 +30,26 @@ ParamSpec<Params> TwoStateJunctions::spec() {
         "and Trømborg et al. (2014), doi:10.1073/pnas.1321752111: N_s junctions per interface block, pinned "
         "springs of stiffness k_bar sqrt(f_N/<f_N>) that break at mu_s f_N/N_s, slip at mu_d f_N/N_s for a "
         "Gaussian time t_R, then re-pin unloaded.");
-    s.add("junctions_per_block", &Params::junctions_per_block, "Number N_s of junctions on every interface block (fixed).")
-        .unit("1").at_least(1);
+    s.add("junctions_per_block", &Params::junctions_per_block,
+          "Number N_s of junctions on every interface block (fixed).")
+        .unit("1")
+        .at_least(1);
     s.add("mu_s", &Params::mu_s, "Static coefficient: a pinned junction breaks when |f| > mu_s f_N / N_s.")
-        .unit("1").greater_than(0);
+        .unit("1")
+        .greater_than(0);
     s.add("mu_d", &Params::mu_d, "Dynamic coefficient: a slipping junction carries mu_d f_N / N_s.")
-        .unit("1").at_least(0);
+        .unit("1")
+        .at_least(0);
     s.add("junction_stiffness", &Params::junction_stiffness,
           "Stiffness k_bar of one pinned junction on a block at the mean normal force; k_i = k_bar sqrt(f_N,i/<f_N>).")
-        .unit("N/m").greater_than(0);
+        .unit("N/m")
+        .greater_than(0);
     s.add("slipping_time_mean", &Params::slipping_time_mean, "Mean <t_R> of the slipping duration (Gaussian, t > 0).")
-        .unit("s").greater_than(0);
+        .unit("s")
+        .greater_than(0);
     s.add("slipping_time_sd", &Params::slipping_time_sd, "Standard deviation sigma_R of the slipping duration.")
-        .unit("s").at_least(0);
+        .unit("s")
+        .at_least(0);
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     s.rule("mu_d", order_rule);
     return s;
@@ -59,7 +65,8 @@ TwoStateJunctions::TwoStateJunctions(const Params& params, const Context& ctx)
       slipping_time_mean_(params.slipping_time_mean),
       slipping_time_sd_(params.slipping_time_sd),
       next_event_(infinity) {
-    if (!ctx.body || !ctx.quantities) throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
+    if (!ctx.body || !ctx.quantities)
+        throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
     nodes_ = ctx.body->nodes(params.node_set);
     const Index n = static_cast<Index>(nodes_.size());
     Quantities& q = *ctx.quantities;

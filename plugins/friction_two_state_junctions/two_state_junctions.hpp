@@ -8,7 +8,6 @@
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
-
 namespace frictionlab {
 
 /// Two-state (pinned, slipping) junction friction: K. Thøgersen, J. K. Trømborg, H. A. Sveinsson,

@@ -15,29 +15,26 @@ using Params = DormandPrince::Params;
 
 // The Butcher tableau (Hairer, Norsett & Wanner, Table II.5.2); row 7 of a is b.
 constexpr double c[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
-constexpr double a[7][6] = {
-    {},
-    {1.0 / 5},
-    {3.0 / 40, 9.0 / 40},
-    {44.0 / 45, -56.0 / 15, 32.0 / 9},
-    {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
-    {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
-    {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
+constexpr double a[7][6] = {{},
+                            {1.0 / 5},
+                            {3.0 / 40, 9.0 / 40},
+                            {44.0 / 45, -56.0 / 15, 32.0 / 9},
+                            {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
+                            {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
+                            {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
 constexpr double b[7] = {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0};
 // b - bhat: the 5th-order minus the embedded 4th-order weights.
-constexpr double e[7] = {71.0 / 57600,     0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525,
-                         -1.0 / 40};
+constexpr double e[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 
 std::string dt_min_rule(const Params& p) {
-    if (p.dt_min >= p.dt_max)
-        return fmt::format("dt_min = {:g} s must be below dt_max = {:g} s", p.dt_min, p.dt_max);
+    if (p.dt_min >= p.dt_max) return fmt::format("dt_min = {:g} s must be below dt_max = {:g} s", p.dt_min, p.dt_max);
     return {};
 }
 
 std::string initial_step_rule(const Params& p) {
     if (p.initial_step < p.dt_min || p.initial_step > p.dt_max)
-        return fmt::format("initial_step = {:g} s must lie between dt_min = {:g} s and dt_max = {:g} s",
-                           p.initial_step, p.dt_min, p.dt_max);
+        return fmt::format("initial_step = {:g} s must lie between dt_min = {:g} s and dt_max = {:g} s", p.initial_step,
+                           p.dt_min, p.dt_max);
     return {};
 }
 
@@ -155,13 +152,13 @@ double DormandPrince::step(System& system, double max_dt) {
 
 void DormandPrince::fail(const System& system, double h, const ErrorNorm::Result& worst) const {
     const std::string component = component_name(system.layout(), worst.worst);
-    const std::string why =
-        std::isfinite(worst.value)
-            ? fmt::format("the error of {} is {:.3g} times its tolerance", component, worst.value)
-            : fmt::format("the error estimate of {} is not finite", component);
-    throw RunError(fmt::format("step {}, t = {:.9g} s: dormand_prince would need a step below dt_min = {:.3g} s: at "
-                               "h = {:.3g} s {} (loosen rtol and the atol_*, or lower dt_min)",
-                               system.step_index() + 1, system.time(), p_.dt_min, h, why));
+    const std::string why = std::isfinite(worst.value)
+                                ? fmt::format("the error of {} is {:.3g} times its tolerance", component, worst.value)
+                                : fmt::format("the error estimate of {} is not finite", component);
+    throw RunError(
+        fmt::format("step {}, t = {:.9g} s: dormand_prince would need a step below dt_min = {:.3g} s: at "
+                    "h = {:.3g} s {} (loosen rtol and the atol_*, or lower dt_min)",
+                    system.step_index() + 1, system.time(), p_.dt_min, h, why));
 }
 
 }  // namespace frictionlab

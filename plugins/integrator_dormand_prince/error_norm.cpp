@@ -29,12 +29,11 @@ ErrorNorm::Result ErrorNorm::operator()(const Eigen::VectorXd& error, const Eige
         return {std::numeric_limits<double>::infinity(), i};
     }
     const Index positions = 2 * layout_.nodes, aux = layout_.aux;
-    const Result parts[] = {
-        part_norm(error.head(positions), y0.head(positions) - reference_, y1.head(positions) - reference_,
-                  tol_.atol_position, tol_.rtol),
-        part_norm(error.segment(positions, positions), y0.segment(positions, positions),
-                  y1.segment(positions, positions), tol_.atol_velocity, tol_.rtol),
-        part_norm(error.tail(aux), y0.tail(aux), y1.tail(aux), tol_.atol_aux, tol_.rtol)};
+    const Result parts[] = {part_norm(error.head(positions), y0.head(positions) - reference_,
+                                      y1.head(positions) - reference_, tol_.atol_position, tol_.rtol),
+                            part_norm(error.segment(positions, positions), y0.segment(positions, positions),
+                                      y1.segment(positions, positions), tol_.atol_velocity, tol_.rtol),
+                            part_norm(error.tail(aux), y0.tail(aux), y1.tail(aux), tol_.atol_aux, tol_.rtol)};
     Result worst{-1, 0};
     for (int k = 0; k < 3; ++k)
         if (parts[k].value > worst.value) worst = {parts[k].value, parts[k].worst + k * positions};

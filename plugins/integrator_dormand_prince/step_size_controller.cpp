@@ -7,7 +7,7 @@ namespace frictionlab {
 
 namespace {
 constexpr double order = 5;         // error estimate of order 4: err ~ h^5
-constexpr double beta = 0.04;         // the P part
+constexpr double beta = 0.04;       // the P part
 constexpr double err_floor = 1e-4;  // the memory of an error far below tolerance (Hairer)
 }  // namespace
 

@@ -70,8 +70,8 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
         Index unconverged = -1;
         for (Index i = 0; i < n; ++i) {
             const double g = v_[i] - v_explicit[i] - h / mass[i] * (force_[i] - force0_[i]);
-            const double scale = mass[i] / h * std::abs(v_explicit[i] - v_start[i]) + std::abs(force0_[i]) +
-                                 std::abs(force_[i]);
+            const double scale =
+                mass[i] / h * std::abs(v_explicit[i] - v_start[i]) + std::abs(force0_[i]) + std::abs(force_[i]);
             if (mass[i] / h * std::abs(g) <= 1e-12 * scale) continue;
             (g > 0 ? high_[i] : low_[i]) = v_[i];
             if (high_[i] - low_[i] <= 4 * std::numeric_limits<double>::epsilon() * std::abs(v_[i])) continue;
@@ -81,10 +81,10 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
         }
         if (unconverged < 0) break;
         if (iteration == max_iterations)
-            throw RunError(fmt::format("imex_euler: step {}, t = {:.9g} s: the implicit x-velocity update of node {} "
-                                       "did not converge in {} Newton iterations (vx between {:.6g} and {:.6g} m/s)",
-                                       system.step_index() + 1, t, unconverged, max_iterations, low_[unconverged],
-                                       high_[unconverged]));
+            throw RunError(fmt::format(
+                "imex_euler: step {}, t = {:.9g} s: the implicit x-velocity update of node {} "
+                "did not converge in {} Newton iterations (vx between {:.6g} and {:.6g} m/s)",
+                system.step_index() + 1, t, unconverged, max_iterations, low_[unconverged], high_[unconverged]));
     }
     v_explicit = v_;
 }
@@ -92,8 +92,8 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
 bool ImexEuler::linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
                                 Eigen::VectorXd& out) const {
     Eigen::VectorXd ju;
-    symplectic_euler_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h,
-                          positions, u, ju, out);
+    symplectic_euler_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h, positions,
+                          u, ju, out);
     return true;
 }
 

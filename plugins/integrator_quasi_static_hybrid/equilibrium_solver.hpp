@@ -29,13 +29,13 @@ namespace frictionlab {
 class EquilibriumSolver {
 public:
     struct Settings {
-        double position_tolerance = 1e-13;   // m
+        double position_tolerance = 1e-13;  // m
         int max_iterations = 12;
-        int slow_after = 3;                  // iterations: a solve that needed more renews K for the next
-        double rate_step = 2e-7;             // s: time step of the difference quotient dF/dt
+        int slow_after = 3;       // iterations: a solve that needed more renews K for the next
+        double rate_step = 2e-7;  // s: time step of the difference quotient dF/dt
         // Relative; the difference quotient's round-off leaves ~1e-9 of |v| (measured on the 41 x 9 lattice).
         double velocity_tolerance = 1e-6;
-        double probe_displacement = 1e-8;    // m: largest displacement of the difference quotient K v
+        double probe_displacement = 1e-8;  // m: largest displacement of the difference quotient K v
     };
     struct Counts {
         long long solves = 0, iterations = 0, factorisations = 0;

@@ -28,8 +28,10 @@ std::unique_ptr<Integrator> dynamic_scheme(const Params& p, const Context& ctx) 
 
 std::string hold_rule(const Params& p) {
     if (p.quiet_hold < p.check_interval)
-        return fmt::format("quiet_hold = {:g} s must be at least check_interval = {:g} s (the calm is judged at "
-                           "the checks)", p.quiet_hold, p.check_interval);
+        return fmt::format(
+            "quiet_hold = {:g} s must be at least check_interval = {:g} s (the calm is judged at "
+            "the checks)",
+            p.quiet_hold, p.check_interval);
     return {};
 }
 
@@ -81,18 +83,18 @@ QuasiStaticHybrid::QuasiStaticHybrid(const Params& p, const Context& ctx)
     : p_(spec().checked(p)),
       log_(ctx.log),
       dynamic_(dynamic_scheme(p, ctx)),
-      solver_({.position_tolerance = p.position_tolerance, .rate_step = p.dt}) {
-}
+      solver_({.position_tolerance = p.position_tolerance, .rate_step = p.dt}) {}
 
 QuasiStaticHybrid::~QuasiStaticHybrid() {
     const double total = quiet_time_ + dynamic_time_, wall = seconds(quiet_wall_ + dynamic_wall_);
     if (total > 0)
-        log_.info("quasi_static_hybrid: quiet {:.4g} % of simulated time ({} steps), {:.4g} % of wall time; dynamic "
-                  "{} steps; {} switches to quiet, {} to dynamic; {} static solves, {} Newton iterations, {} "
-                  "factorisations",
-                  100 * quiet_time_ / total, quiet_steps_, wall > 0 ? 100 * seconds(quiet_wall_) / wall : 0.0,
-                  dynamic_steps_, to_quiet_, to_dynamic_, solver_.counts().solves, solver_.counts().iterations,
-                  solver_.counts().factorisations);
+        log_.info(
+            "quasi_static_hybrid: quiet {:.4g} % of simulated time ({} steps), {:.4g} % of wall time; dynamic "
+            "{} steps; {} switches to quiet, {} to dynamic; {} static solves, {} Newton iterations, {} "
+            "factorisations",
+            100 * quiet_time_ / total, quiet_steps_, wall > 0 ? 100 * seconds(quiet_wall_) / wall : 0.0, dynamic_steps_,
+            to_quiet_, to_dynamic_, solver_.counts().solves, solver_.counts().iterations,
+            solver_.counts().factorisations);
 }
 
 std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() const {
@@ -143,9 +145,9 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system) {
         // The quasi-static state of this time: equilibrium with the current velocities held, and
         // the steady velocities there, which the current ones must be close to.
         y_ = system.y();
-        calm = solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_) &&
-               (system.y().segment(2 * n, 2 * n) - y_.segment(2 * n, 2 * n)).lpNorm<Eigen::Infinity>() <=
-                   p_.quiet_speed;
+        calm =
+            solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_) &&
+            (system.y().segment(2 * n, 2 * n) - y_.segment(2 * n, 2 * n)).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
     }
     if (!calm) {
         calm_since_ = std::numeric_limits<double>::quiet_NaN();
@@ -168,8 +170,8 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     const double t = system.time();
     // Scheduled events at or before t have been judged by the last commit.
     const double scheduled = system.next_event_time();
-    double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
-                            system.foreseen_event_time(s));
+    double event =
+        std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(), system.foreseen_event_time(s));
     const Index n = system.layout().nodes;
     start_ = y_;
     system.begin_step();

@@ -79,14 +79,14 @@ private:
     spdlog::logger& log_;
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
-    Eigen::VectorXd y_;            // the quiet solution being formed
+    Eigen::VectorXd y_;             // the quiet solution being formed
     Eigen::VectorXd start_, mean_;  // a quiet step's start, and its start with the step's mean velocity
     bool quiet_ = false;
     bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
     double next_check_ = -std::numeric_limits<double>::infinity();
     double calm_since_ = std::numeric_limits<double>::quiet_NaN();  // start of the current calm spell
     long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0;
-    double quiet_time_ = 0, dynamic_time_ = 0;                // simulated, s
+    double quiet_time_ = 0, dynamic_time_ = 0;  // simulated, s
     std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{};
 };
 

@@ -66,15 +66,15 @@ template <bool per_mass, bool consume>
 // Each combination for the three parts: positions (rate: the stage's velocities, kept), velocities
 // (forces per mass, consumed) and aux variables (rates, consumed); cloned per ISA (the bodies are
 // inlined into each clone).
-#define FRICTIONLAB_RK4_STAGE(name, body, per_mass, consume)                                              \
-    FRICTIONLAB_HOT_KERNEL                                                                                \
+#define FRICTIONLAB_RK4_STAGE(name, body, per_mass, consume)                                                   \
+    FRICTIONLAB_HOT_KERNEL                                                                                     \
     void name(const double* y, Rates<consume> k, const double* inverse_mass, double c, Index n, double* stage, \
-              double* sum) {                                                                              \
-        body<per_mass, consume>(y, k, inverse_mass, c, n, stage, sum);                                    \
+              double* sum) {                                                                                   \
+        body<per_mass, consume>(y, k, inverse_mass, c, n, stage, sum);                                         \
     }
-#define FRICTIONLAB_RK4_STAGES(body)                                   \
-    FRICTIONLAB_RK4_STAGE(body##_positions, body, false, false)        \
-    FRICTIONLAB_RK4_STAGE(body##_velocities, body, true, true)         \
+#define FRICTIONLAB_RK4_STAGES(body)                            \
+    FRICTIONLAB_RK4_STAGE(body##_positions, body, false, false) \
+    FRICTIONLAB_RK4_STAGE(body##_velocities, body, true, true)  \
     FRICTIONLAB_RK4_STAGE(body##_aux, body, false, true)
 FRICTIONLAB_RK4_STAGES(first)
 FRICTIONLAB_RK4_STAGES(middle)
@@ -84,7 +84,9 @@ FRICTIONLAB_RK4_STAGES(last)
 
 }  // namespace
 
-ParamSpec<Rk4::Params> Rk4::spec() { return fixed_step_spec("Classical 4th-order Runge-Kutta, fixed step; discrete state frozen within a step."); }
+ParamSpec<Rk4::Params> Rk4::spec() {
+    return fixed_step_spec("Classical 4th-order Runge-Kutta, fixed step; discrete state frozen within a step.");
+}
 
 Rk4::Rk4(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 

@@ -7,8 +7,11 @@
 
 namespace frictionlab {
 
-ParamSpec<SemiImplicitEuler::Params> SemiImplicitEuler::spec() { return fixed_step_spec("Semi-implicit (symplectic) Euler, fixed step, 1st order, one evaluation per step; stable for "
-        "omega*dt < 2."); }
+ParamSpec<SemiImplicitEuler::Params> SemiImplicitEuler::spec() {
+    return fixed_step_spec(
+        "Semi-implicit (symplectic) Euler, fixed step, 1st order, one evaluation per step; stable for "
+        "omega*dt < 2.");
+}
 
 SemiImplicitEuler::SemiImplicitEuler(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 
@@ -32,8 +35,8 @@ double SemiImplicitEuler::step(System& system, double max_dt) {
 bool SemiImplicitEuler::linearised_step(const JacobianProduct& jacobian, double h, Index positions,
                                         const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
     Eigen::VectorXd ju;
-    symplectic_euler_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h,
-                          positions, u, ju, out);
+    symplectic_euler_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h, positions,
+                          u, ju, out);
     return true;
 }
 

@@ -7,8 +7,11 @@
 
 namespace frictionlab {
 
-ParamSpec<VelocityVerlet::Params> VelocityVerlet::spec() { return fixed_step_spec("Velocity Verlet (kick-drift-kick), fixed step, 2nd order; symplectic for position-dependent forces, "
-        "velocity-dependent forces at the Euler-predicted end velocity; stable for omega*dt < 2."); }
+ParamSpec<VelocityVerlet::Params> VelocityVerlet::spec() {
+    return fixed_step_spec(
+        "Velocity Verlet (kick-drift-kick), fixed step, 2nd order; symplectic for position-dependent forces, "
+        "velocity-dependent forces at the Euler-predicted end velocity; stable for omega*dt < 2.");
+}
 
 VelocityVerlet::VelocityVerlet(const Params& p, const Context&) : FixedStepIntegrator(p) {}
 
@@ -16,8 +19,8 @@ namespace {
 /// Kick-drift-kick from y into out; velocity-dependent forces at the end are taken at the
 /// Euler-predicted velocity v_n + h a_n. `rate(t_offset, state, dy)` is dy/dt at t + t_offset.
 template <class Rate>
-void verlet_step(Rate&& rate, double h, Index p, const Eigen::VectorXd& y, Eigen::VectorXd& start,
-                 Eigen::VectorXd& end, Eigen::VectorXd& out) {
+void verlet_step(Rate&& rate, double h, Index p, const Eigen::VectorXd& y, Eigen::VectorXd& start, Eigen::VectorXd& end,
+                 Eigen::VectorXd& out) {
     const Index rest = y.size() - p;  // velocities and aux, whose rates are updated together
     rate(0.0, y, start);
     out = y;
@@ -49,8 +52,8 @@ double VelocityVerlet::step(System& system, double max_dt) {
 bool VelocityVerlet::linearised_step(const JacobianProduct& jacobian, double h, Index positions,
                                      const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
     Eigen::VectorXd start, end;
-    verlet_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h, positions, u,
-                start, end, out);
+    verlet_step([&](double, const Eigen::VectorXd& s, Eigen::VectorXd& dy) { jacobian(s, dy); }, h, positions, u, start,
+                end, out);
     return true;
 }
 

@@ -60,8 +60,8 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     }
     const double tolerance = 1e-9 * (body.spacing > 0 ? body.spacing : std::max(n.heights.back(), 1.0));
     if (p.height < -tolerance || p.height > n.heights.back() + tolerance)
-        throw InputError(fmt::format("driving_spring: height = {:g} m is outside node set '{}' (0 to {:g} m)",
-                                     p.height, p.node_set, n.heights.back()));
+        throw InputError(fmt::format("driving_spring: height = {:g} m is outside node set '{}' (0 to {:g} m)", p.height,
+                                     p.node_set, n.heights.back()));
     const auto above = std::lower_bound(n.heights.begin(), n.heights.end(), p.height - tolerance);
     const std::size_t k = std::min<std::size_t>(above - n.heights.begin(), n.heights.size() - 1);
     if (std::abs(n.heights[k] - p.height) <= tolerance) return {{n.nodes[k], 1.0}};
@@ -94,14 +94,12 @@ double DrivingSpring::driving_point_x(const Positions& x) const {
 }
 
 std::string DrivingSpring::describe() const {
-    return fmt::format("driving spring K_S={:g} N/m, V={:g} m/s{} at h={:g} m ({})", params_.stiffness,
-                       params_.velocity,
-                       params_.reversal_period > 0 ? fmt::format(" reversing every {:g} s", params_.reversal_period / 2)
-                                                   : "",
-                       params_.height,
-                       attachment_.size() == 1 ? fmt::format("node {}", attachment_[0].node)
-                                               : fmt::format("between nodes {} and {}", attachment_[0].node,
-                                                             attachment_[1].node));
+    return fmt::format(
+        "driving spring K_S={:g} N/m, V={:g} m/s{} at h={:g} m ({})", params_.stiffness, params_.velocity,
+        params_.reversal_period > 0 ? fmt::format(" reversing every {:g} s", params_.reversal_period / 2) : "",
+        params_.height,
+        attachment_.size() == 1 ? fmt::format("node {}", attachment_[0].node)
+                                : fmt::format("between nodes {} and {}", attachment_[0].node, attachment_[1].node));
 }
 
 double DrivingSpring::far_end(double t) const {

@@ -33,10 +33,10 @@ public:
     /// How the driving point at height h meets the node set: at a node, or interpolated between two.
     enum class Attach { node, interpolated };
     struct Params {
-        double stiffness = 0.8e6;     // K_S, N/m
-        double velocity = 1e-4;       // V, m/s
-        double reversal_period = 0;   // T, s; 0: never reverses
-        double height = 0.005;        // h, m
+        double stiffness = 0.8e6;    // K_S, N/m
+        double velocity = 1e-4;      // V, m/s
+        double reversal_period = 0;  // T, s; 0: never reverses
+        double height = 0.005;       // h, m
         Attach attachment = Attach::node;
         std::string node_set = "trailing_edge";
     };

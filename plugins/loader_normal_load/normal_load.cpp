@@ -41,8 +41,8 @@ Eigen::ArrayXd load_weights(const NormalLoad::Params& p, Index n) {
     for (Index k = 0; k < n; ++k) {
         const double i = k + 1.0;
         const double shape = p.formula == NormalLoad::Formula::paper_literal ? (2 * i - n) / n
-                             : n > 1                      ? (2 * i - n - 1) / (n - 1.0)
-                                                          : 0.0;
+                             : n > 1                                         ? (2 * i - n - 1) / (n - 1.0)
+                                                                             : 0.0;
         w(k) = p.total_force / n * (1 + p.theta * shape);
     }
     return w;

@@ -22,8 +22,9 @@ ParamSpec<PlateSprings::Params> PlateSprings::spec() {
 namespace {
 const NodeSet& pulled_nodes(const PlateSprings::Params& p, const Context& ctx) {
     if (ctx.quantities->find_scalar("driving_force"))
-        throw InputError("plate_springs: another loader already publishes 'driving_force' (a driving_spring?); a "
-                         "scene loads through the plate or through a driving spring, not both");
+        throw InputError(
+            "plate_springs: another loader already publishes 'driving_force' (a driving_spring?); a "
+            "scene loads through the plate or through a driving spring, not both");
     const NodeSet& nodes = ctx.body->nodes(p.node_set);
     if (nodes.empty()) throw InputError("plate_springs: node set '" + p.node_set + "' is empty");
     return nodes;
@@ -37,8 +38,9 @@ PlateSprings::PlateSprings(const Params& p, const Context& ctx)
       force_(ctx.quantities->scalar("driving_force", "N", "Force of the loading on the slider (+x).")),
       displacement_(ctx.quantities->scalar("driving_displacement", "m",
                                            "Displacement of the driving point(s) since loading began.")),
-      driver_(ctx.quantities->scalar("driver_position", "m", "Displacement V (t - t0) of the driver since loading "
-                                                             "began.")) {}
+      driver_(ctx.quantities->scalar("driver_position", "m",
+                                     "Displacement V (t - t0) of the driver since loading "
+                                     "began.")) {}
 
 std::string PlateSprings::describe() const {
     return fmt::format("plate springs k_p={:g} N/m on each of {} nodes of '{}', V={:g} m/s", params_.stiffness,

@@ -29,8 +29,8 @@ namespace frictionlab {
 class PlateSprings final : public Loader {
 public:
     struct Params {
-        double stiffness = 3e6;   // k_p per node, N/m
-        double velocity = 1e-4;   // V, m/s
+        double stiffness = 3e6;  // k_p per node, N/m
+        double velocity = 1e-4;  // V, m/s
         std::string node_set = "top";
     };
     static constexpr std::string_view type = "plate_springs";

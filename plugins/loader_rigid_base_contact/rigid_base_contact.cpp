@@ -24,8 +24,9 @@ ParamSpec<RigidBaseContact::Params> RigidBaseContact::spec() {
 namespace {
 double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body) {
     if (!(body.bond_stiffness > 0))
-        throw InputError("rigid_base_contact: the bulk model gives no bond stiffness K, so K_b = stiffness_ratio * K "
-                         "is undefined");
+        throw InputError(
+            "rigid_base_contact: the bulk model gives no bond stiffness K, so K_b = stiffness_ratio * K "
+            "is undefined");
     return p.stiffness_ratio * body.bond_stiffness;
 }
 }  // namespace

@@ -12,10 +12,25 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-const std::vector<std::string> block_columns{
-    "time", "step", "stage", "pinned", "sliding", "dislocated", "junctions", "pinned_reference", "normalised_pinned",
-    "pinned_fraction", "sliding_fraction", "dislocated_fraction", "slip", "slip_since_loading", "velocity",
-    "friction_force", "normal_force", "bond_force_left", "bond_force_right"};
+const std::vector<std::string> block_columns{"time",
+                                             "step",
+                                             "stage",
+                                             "pinned",
+                                             "sliding",
+                                             "dislocated",
+                                             "junctions",
+                                             "pinned_reference",
+                                             "normalised_pinned",
+                                             "pinned_fraction",
+                                             "sliding_fraction",
+                                             "dislocated_fraction",
+                                             "slip",
+                                             "slip_since_loading",
+                                             "velocity",
+                                             "friction_force",
+                                             "normal_force",
+                                             "bond_force_left",
+                                             "bond_force_right"};
 
 double ratio(double a, double b) { return b > 0 ? a / b : nan; }
 
@@ -30,9 +45,10 @@ const Eigen::ArrayXd* interface_field(const RunView& view, std::string_view name
 }  // namespace
 
 ParamSpec<ContactArea::Params> ContactArea::spec() {
-    ParamSpec<Params> s("Real contact of the interface and the local dynamics of chosen blocks (Li et al. 2020 §3.3, "
-                        "Fig. 9, Eq. 17): normalised pinned count, junction fractions, slip, velocity, friction, "
-                        "normal and neighbour bond forces per block; junction totals of the whole interface.");
+    ParamSpec<Params> s(
+        "Real contact of the interface and the local dynamics of chosen blocks (Li et al. 2020 §3.3, "
+        "Fig. 9, Eq. 17): normalised pinned count, junction fractions, slip, velocity, friction, "
+        "normal and neighbour bond forces per block; junction totals of the whole interface.");
     s.add("blocks", &Params::blocks,
           "Interface blocks to follow, 0-based from the trailing edge (the paper's block 6 is 5).")
         .unit("1")
@@ -97,8 +113,8 @@ void ContactArea::begin(const RunView& view) {
                              view.info, params_.format);
         blocks_.push_back(std::move(b));
     }
-    std::vector<std::string> columns{"time",      "step",    "stage",      "junctions",
-                                     "pinned",    "sliding", "dislocated", "pinned_fraction"};
+    std::vector<std::string> columns{"time",   "step",    "stage",      "junctions",
+                                     "pinned", "sliding", "dislocated", "pinned_fraction"};
     if (junction_area_) columns.push_back("contact_area");
     interface_table_ =
         open_table(view.output_directory / (params_.prefix + ".csv"), columns, view.info, params_.format);

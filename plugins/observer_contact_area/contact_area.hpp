@@ -69,7 +69,7 @@ private:
         double rest_length = 0;
     };
     struct Block {
-        Index index = 0;       // along the interface
+        Index index = 0;  // along the interface
         Index node = 0;
         Bond left, right;
         double pinned_reference = std::numeric_limits<double>::quiet_NaN();

@@ -9,9 +9,10 @@
 namespace frictionlab {
 
 ParamSpec<EnergyBalance::Params> EnergyBalance::spec() {
-    ParamSpec<Params> s("Energy bookkeeping as CSV: kinetic energy, each effect's stored energy and work, the "
-                        "loaders' input, damping and friction dissipation, and the residual of the work-energy "
-                        "theorem (switches the run's work accounting on).");
+    ParamSpec<Params> s(
+        "Energy bookkeeping as CSV: kinetic energy, each effect's stored energy and work, the "
+        "loaders' input, damping and friction dissipation, and the residual of the work-energy "
+        "theorem (switches the run's work accounting on).");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
     s.rule("file", [](const Params& p) { return output_file_name_problem(p.file); });
     return s;
@@ -22,8 +23,9 @@ EnergyBalance::EnergyBalance(const Params& p, const Context&) : params_(p) {}
 void EnergyBalance::begin(const RunView& view) {
     const System& system = view.system;
     if (!system.work_accounting())
-        throw RunError("energy observer: the system's work accounting is off (the run switches it on for an "
-                       "observer whose needs_work_accounting() is true, before the first step)");
+        throw RunError(
+            "energy observer: the system's work accounting is off (the run switches it on for an "
+            "observer whose needs_work_accounting() is true, before the first step)");
     system.for_each_effect([&](const Effect& e) {
         effects_.push_back(&e);
         groups_.push_back(dynamic_cast<const Loader*>(&e)        ? Group::loader

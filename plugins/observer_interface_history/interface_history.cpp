@@ -9,8 +9,9 @@
 namespace frictionlab {
 
 ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
-    ParamSpec<Params> s("Space-time history of the interface: velocity, slip, pinned fraction and shear/normal "
-                        "ratio of every interface block, and its normal and friction forces, one row per observation.");
+    ParamSpec<Params> s(
+        "Space-time history of the interface: velocity, slip, pinned fraction and shear/normal "
+        "ratio of every interface block, and its normal and friction forces, one row per observation.");
     s.add("node_set", &Params::node_set, "Node set to follow, ordered along x.");
     add_table_format_param(s, &Params::format);
     return s;
@@ -25,13 +26,12 @@ void InterfaceHistory::begin(const RunView& view) {
     for (std::size_t b = 0; b < nodes_.size(); ++b) columns.push_back(fmt::format("block_{}", b));
 
     const auto add = [&](const char* file, std::function<double(const RunView&, Index)> value) {
-        tables_.push_back({open_table(view.output_directory / file, columns, view.info, params_.format),
-                           std::move(value)});
+        tables_.push_back(
+            {open_table(view.output_directory / file, columns, view.info, params_.format), std::move(value)});
     };
     add("interface_velocity.csv", [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
-    add("interface_slip.csv", [this](const RunView& v, Index b) {
-        return v.state.x(nodes_[b]) - v.body.x0(nodes_[b]);
-    });
+    add("interface_slip.csv",
+        [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0(nodes_[b]); });
     // Published fields are over the interface node set, indexed like it.
     const Quantities& q = view.quantities;
     const auto blocks = static_cast<Index>(nodes_.size());

@@ -19,7 +19,8 @@ namespace frictionlab {
 ///   interface_normal_force.csv     normal_force of each block (N), when the scene publishes it
 ///   interface_friction_force.csv   friction_force of each block (N), when the friction law publishes it
 ///   interface_shear_ratio.csv      friction_force / normal_force of each block, when both exist
-/// (or interface_*.h5 with `format: hdf5`). Rows cost a pass over the interface at the observer's cadence; nothing in between.
+/// (or interface_*.h5 with `format: hdf5`). Rows cost a pass over the interface at the observer's cadence; nothing in
+/// between.
 class InterfaceHistory final : public Observer {
 public:
     struct Params {

@@ -7,8 +7,9 @@
 namespace frictionlab {
 
 ParamSpec<LoadingCurve::Params> LoadingCurve::spec() {
-    ParamSpec<Params> s("Loading curve (Li et al. 2020, Fig. 6): driving force F_S, F_S/F_N, total friction and "
-                        "normal force, driving-point displacement against time, as CSV.");
+    ParamSpec<Params> s(
+        "Loading curve (Li et al. 2020, Fig. 6): driving force F_S, F_S/F_N, total friction and "
+        "normal force, driving-point displacement against time, as CSV.");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
     s.rule("file", [](const Params& p) { return output_file_name_problem(p.file); });
     return s;

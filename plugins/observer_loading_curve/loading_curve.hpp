@@ -26,8 +26,8 @@ public:
 private:
     struct Column {
         std::string name;
-        const double* scalar = nullptr;          // a published scalar, or
-        const Eigen::ArrayXd* field = nullptr;   // the sum of a published field
+        const double* scalar = nullptr;         // a published scalar, or
+        const Eigen::ArrayXd* field = nullptr;  // the sum of a published field
     };
     Params params_;
     std::vector<Column> columns_;

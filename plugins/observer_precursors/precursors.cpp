@@ -20,17 +20,19 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 std::string yaml_number(double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null"; }
 
 const std::vector<std::string> event_columns{
-    "event", "finished", "t_start", "t_end", "duration", "driving_force", "normal_load", "force_ratio",
-    "nucleation_block", "nucleation_x", "extent", "extent_over_length", "min_ruptured_x", "max_ruptured_x",
-    "ruptured_blocks", "global", "front_speed", "crossing_speed", "max_slip"};
+    "event",          "finished",       "t_start",          "t_end",        "duration",    "driving_force",
+    "normal_load",    "force_ratio",    "nucleation_block", "nucleation_x", "extent",      "extent_over_length",
+    "min_ruptured_x", "max_ruptured_x", "ruptured_blocks",  "global",       "front_speed", "crossing_speed",
+    "max_slip"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay"};
 
 }  // namespace
 
 ParamSpec<Precursors::Params> Precursors::spec() {
-    ParamSpec<Params> s("Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
-                        "theory.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
-                        "as CSV tables and a summary with the global static coefficient.");
+    ParamSpec<Params> s(
+        "Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
+        "theory.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
+        "as CSV tables and a summary with the global static coefficient.");
     s.choice("criterion", &Params::criterion,
              {{"pinned_fraction", Criterion::pinned_fraction}, {"slip", Criterion::slip}},
              "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
@@ -63,7 +65,8 @@ ParamSpec<Precursors::Params> Precursors::spec() {
           "with it (B.19a); in quiet times so that it scales with the loading rate as quiet_time does; 0: never.")
         .unit("1")
         .at_least(0);
-    s.add("events_file", &Params::events_file, "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
+    s.add("events_file", &Params::events_file,
+          "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
           "CSV file of the fronts: per event and block, when the block first ruptured.");
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
@@ -92,15 +95,19 @@ void Precursors::begin(const RunView& view) {
     for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0(interface_[i]) - body.x0(interface_[0]);
     geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
     geometry.spacing = body.spacing;
-    detector_.emplace(std::move(geometry), params_.quiet_time,
-                      RuptureEventDetector::Options{params_.global_span,
-                                                    params_.nucleation_window_quiet_times * params_.quiet_time});
+    detector_.emplace(
+        std::move(geometry), params_.quiet_time,
+        RuptureEventDetector::Options{params_.global_span, params_.nucleation_window_quiet_times * params_.quiet_time});
 
     const Quantities& q = view.quantities;
-    if (const auto* s = q.find_scalar("driving_force")) driving_force_ = &s->value;
-    else view.log.warn("precursors: no effect publishes 'driving_force'; F_S of the events is NaN");
-    if (const auto* s = q.find_scalar("normal_load")) normal_load_ = &s->value;
-    else view.log.warn("precursors: no effect publishes 'normal_load'; F_N of the events is NaN");
+    if (const auto* s = q.find_scalar("driving_force"))
+        driving_force_ = &s->value;
+    else
+        view.log.warn("precursors: no effect publishes 'driving_force'; F_S of the events is NaN");
+    if (const auto* s = q.find_scalar("normal_load"))
+        normal_load_ = &s->value;
+    else
+        view.log.warn("precursors: no effect publishes 'normal_load'; F_N of the events is NaN");
 
     slip_.resize(n);
     ruptured_.resize(n);
@@ -139,7 +146,8 @@ void Precursors::end(const RunView& view) {
 void Precursors::write(const RuptureEvent& e) {
     row_.assign({double(e.index), e.finished ? 1.0 : 0.0, e.t_start, e.t_end, e.duration(), e.driving_force,
                  e.normal_load, e.force_ratio(), double(e.nucleation), e.nucleation_x, e.extent, e.extent_over_length,
-                 e.min_x, e.max_x, double(e.ruptured_blocks), e.global ? 1.0 : 0.0, e.front_speed, e.crossing_speed, e.max_slip});
+                 e.min_x, e.max_x, double(e.ruptured_blocks), e.global ? 1.0 : 0.0, e.front_speed, e.crossing_speed,
+                 e.max_slip});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {

@@ -15,25 +15,25 @@ namespace frictionlab {
 
 /// One rupture event: a precursor (l < L) or a global slip (every block ruptured).
 struct RuptureEvent {
-    int index = 0;                 // 0-based, in order of start
-    bool finished = false;         // false: still open when the history ended (end of run)
-    double t_start = 0, t_end = 0; // first and last observation with a ruptured block, s
-    double driving_force = 0;      // F_S at the start (nucleation), N
-    double normal_load = 0;        // F_N at the start, N
-    int nucleation = 0;            // block first ruptured (index along the interface)
+    int index = 0;                  // 0-based, in order of start
+    bool finished = false;          // false: still open when the history ended (end of run)
+    double t_start = 0, t_end = 0;  // first and last observation with a ruptured block, s
+    double driving_force = 0;       // F_S at the start (nucleation), N
+    double normal_load = 0;         // F_N at the start, N
+    int nucleation = 0;             // block first ruptured (index along the interface)
     /// Per block: the time it first ruptured within the event, NaN if it did not.
     std::vector<double> first_rupture;
-    double max_slip = 0;           // m, the largest slip of any block since the event started
+    double max_slip = 0;  // m, the largest slip of any block since the event started
 
     // Measures, filled when the event is closed (RuptureEventDetector::measure).
     int ruptured_blocks = 0;
-    bool global = false;           // the ruptured blocks span at least global_span of L (B.19a)
-    double nucleation_x = 0;       // m, from the trailing edge
-    double min_x = 0, max_x = 0;   // m, nearest and farthest ruptured block from the trailing edge
-    double extent = 0;             // l = min(L, max_x + l_s/2), m
-    double extent_over_length = 0; // l/L
-    double front_speed = 0;        // m/s, see RuptureEventDetector; NaN if unresolved
-    double crossing_speed = 0;     // m/s, over the far half of the front's path; NaN if unresolved
+    bool global = false;            // the ruptured blocks span at least global_span of L (B.19a)
+    double nucleation_x = 0;        // m, from the trailing edge
+    double min_x = 0, max_x = 0;    // m, nearest and farthest ruptured block from the trailing edge
+    double extent = 0;              // l = min(L, max_x + l_s/2), m
+    double extent_over_length = 0;  // l/L
+    double front_speed = 0;         // m/s, see RuptureEventDetector; NaN if unresolved
+    double crossing_speed = 0;      // m/s, over the far half of the front's path; NaN if unresolved
 
     double duration() const { return t_end - t_start; }
     double force_ratio() const { return normal_load != 0 ? driving_force / normal_load : std::nan(""); }
@@ -47,9 +47,9 @@ struct RuptureEventOptions {
 
 /// What the history says so far (B.20).
 struct RuptureSummary {
-    int events = 0;                       // closed events
+    int events = 0;  // closed events
     bool global_seen = false;
-    int precursors_before_global = 0;     // events that started before the first global one (all, if none yet)
+    int precursors_before_global = 0;            // events that started before the first global one (all, if none yet)
     double global_driving_force = std::nan("");  // F_S at the start of the first global event, N
     double global_normal_load = std::nan("");    // F_N then, N
     double global_time = std::nan("");           // its start, s
@@ -88,9 +88,9 @@ struct RuptureSummary {
 class RuptureEventDetector {
 public:
     struct Interface {
-        Eigen::ArrayXd x;      // block positions from the trailing edge, increasing, m
-        double length = 0;     // L, m
-        double spacing = 0;    // l_s, m
+        Eigen::ArrayXd x;    // block positions from the trailing edge, increasing, m
+        double length = 0;   // L, m
+        double spacing = 0;  // l_s, m
     };
 
     using Options = RuptureEventOptions;
@@ -126,9 +126,9 @@ private:
     double quiet_time_;
     Options options_;
     std::optional<RuptureEvent> open_;
-    std::optional<RuptureEvent> held_;  // ended, not yet reported (nucleation_window > 0)
-    Eigen::ArrayXd held_base_slip_;     // the held event's base_slip_
-    double open_slip_since_held_ = 0;   // the open event's largest slip measured from held_base_slip_
+    std::optional<RuptureEvent> held_;    // ended, not yet reported (nucleation_window > 0)
+    Eigen::ArrayXd held_base_slip_;       // the held event's base_slip_
+    double open_slip_since_held_ = 0;     // the open event's largest slip measured from held_base_slip_
     std::vector<RuptureEvent> reported_;  // reported, not yet returned
     int reported_count_ = 0;
     double last_t_ = -std::numeric_limits<double>::infinity();

@@ -91,10 +91,11 @@ void insert_cells(vtkUnstructuredGrid& grid, int type, const std::vector<std::ar
 }  // namespace
 
 ParamSpec<VtkSeries::Params> VtkSeries::spec() {
-    ParamSpec<Params> s("Lattice snapshots for ParaView: a .vtu file per observation (nodes at their reference positions with "
-                        "displacement, velocity, net force, node-set roles, every published field and the strain of each "
-                        "cell) and a .pvd collection "
-                        "with their simulated times, valid after every snapshot.");
+    ParamSpec<Params> s(
+        "Lattice snapshots for ParaView: a .vtu file per observation (nodes at their reference positions with "
+        "displacement, velocity, net force, node-set roles, every published field and the strain of each "
+        "cell) and a .pvd collection "
+        "with their simulated times, valid after every snapshot.");
     s.add("prefix", &Params::prefix,
           "Name of the collection <prefix>.pvd and of the folder <prefix>/ of its .vtu files, in the run's output "
           "directory.");
@@ -141,12 +142,15 @@ void VtkSeries::begin(const RunView& view) {
     writer_->SetInputData(grid_);
     writer_->SetDataModeToAppended();
     writer_->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
-    if (params_.compress) writer_->SetCompressorTypeToZLib();
-    else writer_->SetCompressorTypeToNone();
+    if (params_.compress)
+        writer_->SetCompressorTypeToZLib();
+    else
+        writer_->SetCompressorTypeToNone();
 
     std::filesystem::create_directories(view.output_directory / params_.prefix);
-    view.log.info("vtk_series: {} ({} points, {} cells, {} point arrays)", collection_file(view.output_directory).string(),
-                  grid_->GetNumberOfPoints(), grid_->GetNumberOfCells(), grid_->GetPointData()->GetNumberOfArrays());
+    view.log.info("vtk_series: {} ({} points, {} cells, {} point arrays)",
+                  collection_file(view.output_directory).string(), grid_->GetNumberOfPoints(),
+                  grid_->GetNumberOfCells(), grid_->GetPointData()->GetNumberOfArrays());
 }
 
 void VtkSeries::build_cells(const Body& body) {
@@ -223,9 +227,10 @@ void VtkSeries::add_role(const Body& body) {
 void VtkSeries::add_fields(const RunView& view) {
     for (const auto& [name, field] : view.quantities.fields()) {
         if (std::find(std::begin(own_arrays), std::end(own_arrays), name) != std::end(own_arrays))
-            throw RunError(fmt::format("vtk_series: a published field is named '{}', like an array this observer "
-                                       "computes; rename the field",
-                                       name));
+            throw RunError(
+                fmt::format("vtk_series: a published field is named '{}', like an array this observer "
+                            "computes; rename the field",
+                            name));
         const NodeSet& nodes = view.body.nodes(field.node_set);
         if (static_cast<Index>(nodes.size()) != field.values.size())
             throw RunError(fmt::format("vtk_series: field '{}' has {} values but its node set '{}' has {} nodes", name,
@@ -325,7 +330,8 @@ void VtkSeries::write_snapshot(const RunView& view) {
 std::string VtkSeries::collection_time(double t, long long steps) {
     if (steps <= 0 || t <= 0 || !std::isfinite(t)) return fmt::format("{}", t);  // shortest exact text
     // Decimals that resolve a hundredth of the mean step; the value rounded to them, trailing zeros cut.
-    const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(t / static_cast<double>(steps)))), 0, 17);
+    const int decimals =
+        std::clamp(2 - static_cast<int>(std::floor(std::log10(t / static_cast<double>(steps)))), 0, 17);
     std::string text = fmt::format("{:.{}f}", t, decimals);
     if (text.find('.') != std::string::npos) {
         text.erase(text.find_last_not_of('0') + 1);

@@ -59,8 +59,7 @@ public:
     void add_forces(const frictionlab::StageView& s, frictionlab::ForceView& f) override {
         for (std::size_t k = 0; k < nodes_.size(); ++k) {
             const Index node = nodes_[k];
-            const double force =
-                -p_.mu * (*normal_force_)(k) * std::tanh(s.vx(node) / p_.regularisation_velocity);
+            const double force = -p_.mu * (*normal_force_)(k)*std::tanh(s.vx(node) / p_.regularisation_velocity);
             (*friction_force_)(k) = force;  // published for observers
             f.fx(node) += force;
         }

@@ -76,8 +76,9 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     const std::string sidecar = read_text(dir_ / "tiny_out" / "loading_curve.csv.meta.yaml");
     for (const char* key : {"framework: frictionlab", "scene_hash: ", "seed: 7", "integrator_rk4", "columns: [time,"})
         EXPECT_NE(sidecar.find(key), std::string::npos) << key << "\n" << sidecar;
-    EXPECT_NE(sidecar.find(std::string("scene_hash: ") + read_text(dir_ / "tiny_out" / "run.yaml").substr(
-                  read_text(dir_ / "tiny_out" / "run.yaml").find("scene_hash: ") + 12, 16)),
+    EXPECT_NE(sidecar.find(std::string("scene_hash: ") +
+                           read_text(dir_ / "tiny_out" / "run.yaml")
+                               .substr(read_text(dir_ / "tiny_out" / "run.yaml").find("scene_hash: ") + 12, 16)),
               std::string::npos);
     // every: 2e-5 s over 3e-4 s at dt = 2e-7: t = 0, 2e-5, ..., 3e-4, each observed exactly once.
     const auto rows = std::count(curve.begin(), curve.end(), '\n') - 1;  // one header
@@ -177,7 +178,10 @@ TEST_F(Cli, FailingRunStopsCleanlyAndKeepsItsOutputs) {
     std::size_t rows = 0;
     while (std::getline(csv, line)) {
         if (line.empty() || line[0] == '#') continue;
-        if (header.empty()) { header = line; continue; }
+        if (header.empty()) {
+            header = line;
+            continue;
+        }
         EXPECT_EQ(std::count(line.begin(), line.end(), ','), std::count(header.begin(), header.end(), ','));
         ++rows;
     }
@@ -224,8 +228,9 @@ TEST_F(Cli, AMistypedCommandGetsADidYouMean) {
 }
 
 TEST_F(Cli, SharedOptionsGoBeforeOrAfterTheCommand) {
-    for (const std::string args : {"-q check " + scene("tiny_lattice.yaml"), "--log-level warn check " + scene("tiny_lattice.yaml"),
-                                   "check -q " + scene("tiny_lattice.yaml")}) {
+    for (const std::string args :
+         {"-q check " + scene("tiny_lattice.yaml"), "--log-level warn check " + scene("tiny_lattice.yaml"),
+          "check -q " + scene("tiny_lattice.yaml")}) {
         auto r = frictionlab(args, dir_);
         EXPECT_EQ(r.code, 0) << args << "\n" << r.output;
         EXPECT_EQ(r.output, scene("tiny_lattice.yaml") + ": ok\n") << args;
@@ -281,12 +286,14 @@ TEST_F(Cli, RunYamlRecordsTheCommandLineAndTheOverridesAndOneHashWhereverItRuns)
     const YAML::Node b = YAML::LoadFile((dir_ / "b" / "run.yaml").string());
     EXPECT_EQ(a["scene_hash"].as<std::string>(), b["scene_hash"].as<std::string>()) << "the output path is not physics";
     EXPECT_EQ(a["scene"]["output"].as<std::string>(), "a");
-    EXPECT_EQ(a["overrides"].as<std::vector<std::string>>(), (std::vector<std::string>{"seed=9", "integrator.dt=1e-7"}));
+    EXPECT_EQ(a["overrides"].as<std::vector<std::string>>(),
+              (std::vector<std::string>{"seed=9", "integrator.dt=1e-7"}));
     const auto command = a["command_line"].as<std::vector<std::string>>();
     ASSERT_EQ(command.size(), 10u);
     EXPECT_EQ(fs::path(command[0]).filename(), "frictionlab");
-    EXPECT_EQ(std::vector<std::string>(command.begin() + 1, command.end()),
-              (std::vector<std::string>{"run", "-q", tiny, "--set", "seed=9", "--set", "integrator.dt=1e-7", "-o", "a"}));
+    EXPECT_EQ(
+        std::vector<std::string>(command.begin() + 1, command.end()),
+        (std::vector<std::string>{"run", "-q", tiny, "--set", "seed=9", "--set", "integrator.dt=1e-7", "-o", "a"}));
     EXPECT_EQ(a["seed"].as<int>(), 9);
 }
 
@@ -297,8 +304,8 @@ namespace {
 TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
     // On a terminal (a pseudo-terminal from util-linux's script) the run draws one live progress
     // line; a log line printed after it must start on a cleared line, not after the progress text.
-    const std::string command = std::string("script -qec \"'") + FRICTIONLAB_CLI + "' run " + scene("every_observer.yaml") +
-                                " -o out\" /dev/null";
+    const std::string command = std::string("script -qec \"'") + FRICTIONLAB_CLI + "' run " +
+                                scene("every_observer.yaml") + " -o out\" /dev/null";
     const std::string cmd = "cd '" + dir_.string() + "' && " + command;
     FILE* pipe = popen(cmd.c_str(), "r");
     ASSERT_NE(pipe, nullptr);
@@ -316,7 +323,8 @@ TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
         const std::string before = output.substr(from, start - from);
         // What the terminal still shows left of the log line: the text after the last carriage return.
         const std::string shown = before.substr(before.rfind('\r') == std::string::npos ? 0 : before.rfind('\r') + 1);
-        EXPECT_EQ(shown.find("stage "), std::string::npos) << "a log line printed after the progress text: '" << shown << "'";
+        EXPECT_EQ(shown.find("stage "), std::string::npos)
+            << "a log line printed after the progress text: '" << shown << "'";
         ++log_lines;
     }
     EXPECT_GT(log_lines, 5);

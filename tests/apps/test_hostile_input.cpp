@@ -63,7 +63,8 @@ TEST_F(HostileInput, OnlyARegularFileOfSensibleSizeIsReadAsAScene) {
 
 TEST_F(HostileInput, CadencesStepsAndDurationsNoRunCouldFinishAreRefusedBeforeStarting) {
     expect_refused(tiny() + " --set observers[0].every=1e-19", "cannot be scheduled");
-    for (const char* dt : {"1e-30", "5e-324"}) expect_refused(tiny() + " --set integrator.dt=" + dt, "steps, more than");
+    for (const char* dt : {"1e-30", "5e-324"})
+        expect_refused(tiny() + " --set integrator.dt=" + dt, "steps, more than");
     expect_refused(tiny() + " --set stages[1].duration=1e5", "5e+11 steps, more than the 1e+11");
     // A stage of 1e300 s: no observation time can be added to its clock any more.
     expect_refused(tiny() + " --set stages[1].duration=1e300", "cannot be scheduled over 1e+300 s of stages");
@@ -80,8 +81,9 @@ TEST_F(HostileInput, ObserverFilesStayInTheOutputDirectoryAndNeverCollide) {
     for (const char* file : {"../x.csv", "/tmp/x.csv", "run.yaml"})
         expect_refused(tiny() + " --set observers[0].file=" + file, "observers[0].file:");
     // Two observers on one file: the second is refused before the first step, naming the file.
-    const auto r = frictionlab("run -q " + every_observer() + " -o out --set stages[1].duration=1e-4"
-                               " --set observers[4].file=loading_curve.csv",
+    const auto r = frictionlab("run -q " + every_observer() +
+                                   " -o out --set stages[1].duration=1e-4"
+                                   " --set observers[4].file=loading_curve.csv",
                                dir_);
     EXPECT_EQ(r.code, 2) << r.output;
     EXPECT_NE(r.output.find("loading_curve.csv' is written by another observer of this run"), std::string::npos)
@@ -157,9 +159,11 @@ TEST_F(HostileInput, AFullDiskFailsTheRunCleanlyNamingEnospc) {
     // copied out before the namespace, and the disk, go away.
     if (shell("unshare -m true", dir_) != 0) GTEST_SKIP() << "no mount namespace here (not root?)";
     fs::create_directories(dir_ / "disk");
-    const int code = shell("unshare -m sh -c \"mount -t tmpfs -o size=256k tmpfs disk && cd disk && "
-                           "\\\"$CLI\\\" run -q " + every_observer() + " -o out; code=\\$?; cp -r out ../copied; exit \\$code\"",
-                           dir_);
+    const int code = shell(
+        "unshare -m sh -c \"mount -t tmpfs -o size=256k tmpfs disk && cd disk && "
+        "\\\"$CLI\\\" run -q " +
+            every_observer() + " -o out; code=\\$?; cp -r out ../copied; exit \\$code\"",
+        dir_);
     const std::string said = read_text(dir_ / "shell.log");
     EXPECT_EQ(code, 1) << said;
     expect_clean_failure(dir_ / "copied", said, "No space left on device (ENOSPC)");

@@ -28,8 +28,7 @@ protected:
             std::vector<std::string>{"run", std::string(TEST_SCENES) + "/every_observer.yaml", "--set",
                                      "stages[1].duration=10", "-o", "out"},
             dir_);
-        const bool writing =
-            wait_until([&] { return whole_rows(dir_ / "out" / "loading_curve.csv") >= 5; }, 120);
+        const bool writing = wait_until([&] { return whole_rows(dir_ / "out" / "loading_curve.csv") >= 5; }, 120);
         EXPECT_TRUE(writing) << cli->output();
         return cli;
     }

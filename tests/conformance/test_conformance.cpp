@@ -54,8 +54,11 @@ std::string scene_with(Kind kind, const std::string& snippet) {
     const auto section = [&](Kind k, const std::string& fallback) {
         if (k != kind) return fallback;
         const bool list = k == Kind::loader || k == Kind::observer;
-        return std::string(to_string(k) == "bulk_model" ? "bulk" : k == Kind::friction_law ? "friction"
-                           : k == Kind::loader ? "loaders" : k == Kind::observer ? "observers" : "integrator") +
+        return std::string(to_string(k) == "bulk_model" ? "bulk"
+                           : k == Kind::friction_law    ? "friction"
+                           : k == Kind::loader          ? "loaders"
+                           : k == Kind::observer        ? "observers"
+                                                        : "integrator") +
                ":\n" + (list ? "  -\n" : "") + indented;
     };
     return "output: out\n" + section(Kind::bulk_model, "bulk: {type: spring_lattice_2d}\n") +
@@ -108,7 +111,8 @@ public:
         system_->derivative(system_->time(), y, dy);
         // The lattice is not in the pipeline, so the force on an interface node is the law's alone.
         Eigen::ArrayXd f(static_cast<Index>(nodes.size()));
-        for (std::size_t k = 0; k < nodes.size(); ++k) f(static_cast<Index>(k)) = dy(2 * n + nodes[k]) * body.mass(nodes[k]);
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+            f(static_cast<Index>(k)) = dy(2 * n + nodes[k]) * body.mass(nodes[k]);
         return f;
     }
     const Quantities& quantities() const { return quantities_; }
@@ -144,8 +148,8 @@ TEST(Conformance, EveryFrictionLawResistsForwardMotionOfAStuckInterface) {
 TEST(Conformance, EveryFrictionLawIsDeterministicForASeed) {
     for (const TypeInfo* law : shipped().types(Kind::friction_law)) {
         FrictionLawProbe a(*law, 11), b(*law, 11);
-        for (double dx : {1e-8, 1e-6}) EXPECT_TRUE((a.interface_force(dx, 1e-5) == b.interface_force(dx, 1e-5)).all())
-                                           << law->type;
+        for (double dx : {1e-8, 1e-6})
+            EXPECT_TRUE((a.interface_force(dx, 1e-5) == b.interface_force(dx, 1e-5)).all()) << law->type;
     }
 }
 

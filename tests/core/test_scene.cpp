@@ -32,8 +32,10 @@ protected:
     /// The good scene with the `key` section replaced by `yaml` (a list item for list sections).
     std::string with_section(const std::string& key, const std::string& yaml) {
         YAML::Node root = YAML::Load(testing::good_scene_text());
-        if (root[key].IsSequence()) root[key][0] = YAML::Load(yaml);
-        else root[key] = YAML::Load(yaml);
+        if (root[key].IsSequence())
+            root[key][0] = YAML::Load(yaml);
+        else
+            root[key] = YAML::Load(yaml);
         YAML::Emitter out;
         out << root;
         return out.c_str();
@@ -119,15 +121,16 @@ TEST_F(SceneTest, WholeNumbersInListsAreWrittenBackAsIntegers) {
     EXPECT_NE(a.scene.resolved_yaml.find("weights: [5, 2.5, 0]"), std::string::npos) << a.scene.resolved_yaml;
     const auto again = check(a.scene.resolved_yaml);
     ASSERT_TRUE(again.diagnostics.empty()) << again.diagnostics.format();
-    EXPECT_EQ(std::get<std::vector<double>>(again.scene.friction->values.at("weights")), (std::vector<double>{5, 2.5, 0}));
+    EXPECT_EQ(std::get<std::vector<double>>(again.scene.friction->values.at("weights")),
+              (std::vector<double>{5, 2.5, 0}));
     EXPECT_EQ(again.scene.hash, a.scene.hash);
 }
 
 TEST_F(SceneTest, OverridesReplaceAndAddValues) {
-    const auto [scene, d] = check(testing::good_scene_text(),
-                                  {"friction.mu_s=0.9", "loaders[1].velocity=1e-3", "stages[1].duration=0.5",
-                                   "seed=3", "friction.mu_d=0.1", "bulk.geometry=linear", "friction.weights=[2, 3]",
-                                   "title='x: y'"});
+    const auto [scene, d] =
+        check(testing::good_scene_text(),
+              {"friction.mu_s=0.9", "loaders[1].velocity=1e-3", "stages[1].duration=0.5", "seed=3", "friction.mu_d=0.1",
+               "bulk.geometry=linear", "friction.weights=[2, 3]", "title='x: y'"});
     ASSERT_TRUE(d.empty()) << d.format();
     EXPECT_DOUBLE_EQ(std::get<double>(scene.friction->values.at("mu_s")), 0.9);
     EXPECT_DOUBLE_EQ(std::get<double>(scene.friction->values.at("mu_d")), 0.1);
@@ -147,8 +150,8 @@ TEST_F(SceneTest, OverrideCanReplaceAWholeComponent) {
 }
 
 TEST_F(SceneTest, OverrideErrorsPointIntoTheCommandLine) {
-    const auto [scene, d] = check(testing::good_scene_text(),
-                                  {"friction.mu_s=-1", "friction.mu_z=1", "stages[7].duration=1", "seed", "bulk.nx=[1"});
+    const auto [scene, d] = check(testing::good_scene_text(), {"friction.mu_s=-1", "friction.mu_z=1",
+                                                               "stages[7].duration=1", "seed", "bulk.nx=[1"});
     EXPECT_EQ(d.format(),
               "<command line>:1:5: error: in --set 'seed': expected key.path=value\n"
               "<command line>:1:7: error: stages[7]: in --set 'stages[7].duration=1': no such item: stages has 2 "
@@ -168,14 +171,17 @@ TEST_F(SceneTest, OverrideOfAMissingSectionCreatesIt) {
 }
 
 TEST_F(SceneTest, ExampleOfEveryTypeValidatesAsItsKind) {
-    const std::pair<Kind, std::string> sections[] = {{Kind::bulk_model, "bulk"},  {Kind::friction_law, "friction"},
-                                                     {Kind::loader, "loaders"},   {Kind::integrator, "integrator"},
+    const std::pair<Kind, std::string> sections[] = {{Kind::bulk_model, "bulk"},
+                                                     {Kind::friction_law, "friction"},
+                                                     {Kind::loader, "loaders"},
+                                                     {Kind::integrator, "integrator"},
                                                      {Kind::observer, "observers"}};
     for (const auto& [kind, key] : sections) {
         for (const TypeInfo* info : registry_.types(kind)) {
             SCOPED_TRACE(info->type);
             const std::string example = example_yaml(*info);
-            for (const auto& p : info->params) EXPECT_NE(example.find("\n" + p.key + ": "), std::string::npos) << example;
+            for (const auto& p : info->params)
+                EXPECT_NE(example.find("\n" + p.key + ": "), std::string::npos) << example;
             EXPECT_NE(example.find("  # "), std::string::npos) << example;
             const auto [scene, d] = check(with_section(key, example));
             EXPECT_TRUE(d.empty()) << d.format() << example;
@@ -187,7 +193,8 @@ TEST_F(SceneTest, ExampleCommentsGiveDocUnitAndBounds) {
     const std::string example = example_yaml(*registry_.find(Kind::bulk_model, "fake_lattice"));
     EXPECT_NE(example.find("# A lattice that is never built.\n# Second line of the summary.\n"), std::string::npos)
         << example;
-    EXPECT_NE(example.find("spacing: 0.001       # Rest length of a spring. [m] (> 0)\n"), std::string::npos) << example;
+    EXPECT_NE(example.find("spacing: 0.001       # Rest length of a spring. [m] (> 0)\n"), std::string::npos)
+        << example;
     EXPECT_NE(example.find("nz: 9                # Nodes along z. (> 0; <= 1000)\n"), std::string::npos) << example;
     EXPECT_NE(example.find("geometry: geometric  # Spring model. (one of: geometric, linear)\n"), std::string::npos)
         << example;
@@ -222,9 +229,17 @@ TEST_F(SceneTest, FolderIsNotASceneFile) {
 
 TEST_F(SceneTest, NoInputCrashesTheReader) {
     std::mt19937 random(7);
-    std::vector<std::string> inputs = {"",       "~",      "[]",        "- 1\n- 2\n", "a: &x [*x]\nb: *x\n",
-                                       "{{{{",   "\t\t",   "? [1]\n: 2", "bulk: &b {type: fake_lattice, nx: *b}\n",
-                                       "---\n---\n", std::string("a: \0b\n", 6)};
+    std::vector<std::string> inputs = {"",
+                                       "~",
+                                       "[]",
+                                       "- 1\n- 2\n",
+                                       "a: &x [*x]\nb: *x\n",
+                                       "{{{{",
+                                       "\t\t",
+                                       "? [1]\n: 2",
+                                       "bulk: &b {type: fake_lattice, nx: *b}\n",
+                                       "---\n---\n",
+                                       std::string("a: \0b\n", 6)};
     inputs.push_back(std::string(100000, '['));
     inputs.push_back(std::string(100000, '-'));
     std::string nested;
@@ -238,7 +253,8 @@ TEST_F(SceneTest, NoInputCrashesTheReader) {
     for (const auto& text : inputs) {
         Checked out;
         EXPECT_NO_THROW({
-            const auto doc = SceneDocument::parse(text, "junk.yaml", {"bulk.nx=3", "stages[0].name=x"}, out.diagnostics);
+            const auto doc =
+                SceneDocument::parse(text, "junk.yaml", {"bulk.nx=3", "stages[0].name=x"}, out.diagnostics);
             doc.plugin_paths(out.diagnostics);
             out.scene = doc.validate(registry_, out.diagnostics);
             out.diagnostics.format();

@@ -26,8 +26,8 @@ public:
         s.add("nz", &Params::nz, "Nodes along z.").greater_than(0).at_most(1000);
         s.add("spacing", &Params::spacing, "Rest length of a spring.").unit("m").greater_than(0);
         s.add("density", &Params::density, "Mass density.").unit("kg/m^3").greater_than(0);
-        s.choice("geometry", &Params::geometry, {{"geometric", Params::Geometry::geometric}, {"linear", Params::Geometry::linear}},
-                 "Spring model.");
+        s.choice("geometry", &Params::geometry,
+                 {{"geometric", Params::Geometry::geometric}, {"linear", Params::Geometry::linear}}, "Spring model.");
         s.add("periodic", &Params::periodic, "Periodic along x.");
         return s;
     }
@@ -61,9 +61,11 @@ public:
         s.add("mu_d", &Params::mu_d, "Dynamic coefficient.").unit("1").at_least(0);
         s.add("weights", &Params::weights, "Weights of the junction classes.").at_least(0).less_than(10);
         s.choice("state_model", &Params::state_model,
-                 {{"two_state", Params::StateModel::two_state}, {"three_state", Params::StateModel::three_state}}, "Junction states.");
+                 {{"two_state", Params::StateModel::two_state}, {"three_state", Params::StateModel::three_state}},
+                 "Junction states.");
         s.rule("mu_d", [](const Params& p) {
-            return p.mu_d <= p.mu_s ? std::string() : fmt::format("must not exceed mu_s = {:g}, got {:g}", p.mu_s, p.mu_d);
+            return p.mu_d <= p.mu_s ? std::string()
+                                    : fmt::format("must not exceed mu_s = {:g}, got {:g}", p.mu_s, p.mu_d);
         });
         return s;
     }

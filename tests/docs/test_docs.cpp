@@ -4,8 +4,8 @@
 // - Fenced ```sh lines that call `build/bin/frictionlab`: run from the source tree. `run` becomes
 //   `check` with the same arguments (a run takes minutes and writes into the tree; `check` reads the
 //   scene, applies every --set and -o, and estimates the stable step), `study` becomes
-//   `study --check`, `sweep` becomes `sweep --check`, and `plot` draws two tiny runs made here. SCENE stands for a shipped scene.
-//   Other shell lines (package installation, cmake) are the build's own business.
+//   `study --check`, `sweep` becomes `sweep --check`, and `plot` draws two tiny runs made here. SCENE stands for a
+//   shipped scene. Other shell lines (package installation, cmake) are the build's own business.
 // - Lines `--set ...` in any fence: applied to a shipped scene with `frictionlab check`.
 // - Fenced ```yaml blocks: a scene (it has `bulk:`) is written out and checked; a study or sweep (it has
 //   `scene:`) is written beside the base scene it names and checked with `check`.
@@ -50,8 +50,10 @@ std::vector<Fence> fences(const fs::path& markdown) {
     std::optional<Fence> open;
     for (int n = 1; std::getline(in, line); ++n) {
         if (line.rfind("```", 0) == 0) {
-            if (open) out.push_back(*open), open.reset();
-            else open = Fence{markdown.filename().string(), line.substr(3), "", n};
+            if (open)
+                out.push_back(*open), open.reset();
+            else
+                open = Fence{markdown.filename().string(), line.substr(3), "", n};
         } else if (open) {
             open->text += line + "\n";
         }
@@ -199,7 +201,8 @@ TEST_F(Docs, TheGlossaryNamesEveryColumnAndArrayARunWrites) {
         std::istringstream columns(header);
         for (std::string column; std::getline(columns, column, ',');) {
             ++checked;
-            EXPECT_TRUE(documented(column)) << file.path().filename() << ": column '" << column << "' is not in the glossary";
+            EXPECT_TRUE(documented(column))
+                << file.path().filename() << ": column '" << column << "' is not in the glossary";
         }
     }
     const auto vtu = dir_ / "out/lattice/lattice_000000.vtu";
@@ -207,9 +210,9 @@ TEST_F(Docs, TheGlossaryNamesEveryColumnAndArrayARunWrites) {
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName(vtu.c_str());
     reader->Update();
-    for (auto* data : {static_cast<vtkFieldData*>(reader->GetOutput()->GetPointData()),
-                       static_cast<vtkFieldData*>(reader->GetOutput()->GetCellData()),
-                       reader->GetOutput()->GetFieldData()})
+    for (auto* data :
+         {static_cast<vtkFieldData*>(reader->GetOutput()->GetPointData()),
+          static_cast<vtkFieldData*>(reader->GetOutput()->GetCellData()), reader->GetOutput()->GetFieldData()})
         for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
             const std::string name = data->GetArrayName(i);
             ++checked;

@@ -23,7 +23,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         HardCase{"theta_plus_one", "--set loaders[1].theta=1", "no load on the trailing edge block: detachment"},
         HardCase{"theta_minus_one", "--set loaders[1].theta=-1", "no load on the leading edge block"},
-        HardCase{"normal_2kN", "--set loaders[1].total_force=2000" + heavy_settle, "five times the junctions and contact"},
+        HardCase{"normal_2kN", "--set loaders[1].total_force=2000" + heavy_settle,
+                 "five times the junctions and contact"},
         HardCase{"normal_10kN", "--set loaders[1].total_force=10000" + heavy_settle, "25x: ~2600 junctions per block"},
         HardCase{"loading_1000x", "--set loaders[2].velocity=0.1", "1000x the paper's loading rate"},
         HardCase{"velocity_reversals", "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002",
@@ -37,8 +38,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         HardCase{"step_at_0_9_of_limit", "--set integrator.dt=5.2e-7", "0.9 of the estimated stable step 5.78e-7 s"},
         HardCase{"zero_damping", "--set bulk.damping_factor=0", "no dashpots: the lattice rings and reverses"},
-        HardCase{"lattice_101x21", "--set bulk.nx=101 --set bulk.nz=21 --set stages[0].duration=0.002 --set "
-                                   "stages[1].duration=0.002",
+        HardCase{"lattice_101x21",
+                 "--set bulk.nx=101 --set bulk.nz=21 --set stages[0].duration=0.002 --set "
+                 "stages[1].duration=0.002",
                  "close to RK4's damping limit at dt = 2e-7 s"}),
     [](const auto& info) { return info.param.name; });
 
@@ -59,14 +61,13 @@ const std::string adaptive = " --set 'integrator={type: dormand_prince}'";
 
 INSTANTIATE_TEST_SUITE_P(
     Adaptive, HardCases,
-    ::testing::Values(
-        HardCase{"adaptive_velocity_reversals",
-                 "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002" + adaptive,
-                 "dormand_prince through five reversals, landing on each kink of the drive"},
-        HardCase{"adaptive_normal_10kN", "--set loaders[1].total_force=10000" + heavy_settle + adaptive,
-                 "dormand_prince with ~2600 junctions per block breaking while settling"},
-        HardCase{"adaptive_zero_damping", "--set bulk.damping_factor=0" + adaptive,
-                 "dormand_prince on an undamped, ringing lattice"}),
+    ::testing::Values(HardCase{"adaptive_velocity_reversals",
+                               "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002" + adaptive,
+                               "dormand_prince through five reversals, landing on each kink of the drive"},
+                      HardCase{"adaptive_normal_10kN", "--set loaders[1].total_force=10000" + heavy_settle + adaptive,
+                               "dormand_prince with ~2600 junctions per block breaking while settling"},
+                      HardCase{"adaptive_zero_damping", "--set bulk.damping_factor=0" + adaptive,
+                               "dormand_prince on an undamped, ringing lattice"}),
     [](const auto& info) { return info.param.name; });
 
 /// Cases refused as bad input before anything runs.

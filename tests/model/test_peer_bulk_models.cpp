@@ -22,8 +22,8 @@ struct Outputs {
 
 Outputs run(const std::string& overrides) {
     const auto dir = testing::work_directory();
-    const auto r = testing::frictionlab(
-        "run -q " + std::string(MODEL_SCENES) + "/side_loaded_coulomb.yaml " + overrides, dir);
+    const auto r =
+        testing::frictionlab("run -q " + std::string(MODEL_SCENES) + "/side_loaded_coulomb.yaml " + overrides, dir);
     EXPECT_EQ(r.code, 0) << r.output;
     return {testing::read_csv(dir / "side_loaded_out" / "loading_curve.csv"),
             testing::read_csv(dir / "side_loaded_out" / "precursors.csv")};

@@ -41,19 +41,19 @@ TEST_F(PluginRefusal, NoEntrySymbol) {
 }
 
 TEST_F(PluginRefusal, HeaderVersion) {
-    EXPECT_EQ(refused("testplugin_bad_header_version.so"),
-              prefix("testplugin_bad_header_version.so") +
-                  fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
-                              plugin_header_version + 1, sizeof(PluginHeader), plugin_header_version,
-                              sizeof(PluginHeader)));
+    EXPECT_EQ(
+        refused("testplugin_bad_header_version.so"),
+        prefix("testplugin_bad_header_version.so") +
+            fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
+                        plugin_header_version + 1, sizeof(PluginHeader), plugin_header_version, sizeof(PluginHeader)));
 }
 
 TEST_F(PluginRefusal, HeaderSize) {
-    EXPECT_EQ(refused("testplugin_bad_header_size.so"),
-              prefix("testplugin_bad_header_size.so") +
-                  fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
-                              plugin_header_version, sizeof(PluginHeader) - 8, plugin_header_version,
-                              sizeof(PluginHeader)));
+    EXPECT_EQ(
+        refused("testplugin_bad_header_size.so"),
+        prefix("testplugin_bad_header_size.so") +
+            fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
+                        plugin_header_version, sizeof(PluginHeader) - 8, plugin_header_version, sizeof(PluginHeader)));
 }
 
 TEST_F(PluginRefusal, FrameworkAbiNamesTheField) {
@@ -82,7 +82,8 @@ TEST_F(PluginRefusal, TextFileNamedSo) {
 
 TEST_F(PluginRefusal, TruncatedLibraryIsRefusedBeforeDlopenMapsIt) {
     // `head -c 4096 x.so > y.so`: dlopen would map segments past the end and die of SIGBUS.
-    const auto truncated = std::filesystem::temp_directory_path() / fmt::format("frictionlab_truncated_{}.so", ::getpid());
+    const auto truncated =
+        std::filesystem::temp_directory_path() / fmt::format("frictionlab_truncated_{}.so", ::getpid());
     {
         std::ifstream in(test_plugin("testplugin_good.so"), std::ios::binary);
         std::string head(4096, '\0');

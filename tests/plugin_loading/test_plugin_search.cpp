@@ -63,7 +63,9 @@ TEST(LoadPlugins, EarlierDirectoriesWin) {
 TEST(LoadPlugins, MissingDirectoryIsAnInputErrorNamingIt) {
     Registry registry;
     const auto missing = test_plugin("missing");
-    EXPECT_EQ(refusal([&] { load_plugins(registry, {missing, test_plugin("good")}); }),
+    EXPECT_EQ(refusal([&] {
+                  load_plugins(registry, {missing, test_plugin("good")});
+              }),
               "plugin directory '" + missing.string() + "' does not exist");
     EXPECT_TRUE(registry.plugins().empty());
 }

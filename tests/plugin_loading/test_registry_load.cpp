@@ -116,9 +116,10 @@ TEST(RegistryLoad, DuplicateOfATypeAddedByCode) {
     Registry registry;
     registry.add<NoopLaw<DuplicateLawName>>();
     const auto before = snapshot(registry);
-    EXPECT_EQ(refusal([&] { registry.load(test_plugin("testplugin_duplicate_a.so")); }),
-              test_plugin("testplugin_duplicate_a.so").string() +
-                  ": cannot use this plugin: friction_law type 'test_duplicate_law' is already provided by the program");
+    EXPECT_EQ(
+        refusal([&] { registry.load(test_plugin("testplugin_duplicate_a.so")); }),
+        test_plugin("testplugin_duplicate_a.so").string() +
+            ": cannot use this plugin: friction_law type 'test_duplicate_law' is already provided by the program");
     EXPECT_EQ(snapshot(registry), before);
 }
 
@@ -151,8 +152,7 @@ TEST(RegistryLoadDirectory, LoadsEveryPluginInNameOrderAndSkipsOtherFiles) {
     std::vector<std::string> observers;
     for (const TypeInfo* t : registry.types(Kind::observer)) observers.push_back(t->type);
     EXPECT_EQ(observers, (std::vector<std::string>{"alpha_observer", "beta_observer", "gamma_observer"}));
-    EXPECT_EQ(registry.find(Kind::observer, "beta_observer")->library,
-              test_plugin("good/testplugin_beta.so").string());
+    EXPECT_EQ(registry.find(Kind::observer, "beta_observer")->library, test_plugin("good/testplugin_beta.so").string());
 }
 
 TEST(RegistryLoadDirectory, FirstPluginOfANameWins) {

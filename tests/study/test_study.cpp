@@ -72,8 +72,8 @@ TEST(Study, TinyStudyThroughTheCommand) {
     const StudyTable table(dir / "out" / "study.csv");
 
     // One row per case, the reference first; knobs as the resolved scene has them, defaults included.
-    std::vector<std::string> expected{"case", "family", "scene_hash", "integrator.type", "integrator.dt", "seed",
-                                      "wall_seconds", "cpu_seconds", "steps", "evaluations"};
+    std::vector<std::string> expected{"case", "family",       "scene_hash",  "integrator.type", "integrator.dt",
+                                      "seed", "wall_seconds", "cpu_seconds", "steps",           "evaluations"};
     expected.insert(expected.end(), errors.begin(), errors.end());
     expected.push_back("note");
     EXPECT_EQ(table.header(), expected);
@@ -172,8 +172,7 @@ TEST_F(BadStudy, ErrorsInACaseOverridePointIntoTheStudyFile) {
         "    set: [integrator.dt=fast, \"bulk.nxx=3\"]\n");
     EXPECT_EQ(r.code, 2) << r.output;
     EXPECT_NE(r.output.find("bad.yaml:6:25: error: integrator.dt: expected a number"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("bad.yaml:6:37: error: bulk.nxx: unknown key 'nxx'; did you mean 'nx'?"),
-              std::string::npos)
+    EXPECT_NE(r.output.find("bad.yaml:6:37: error: bulk.nxx: unknown key 'nxx'; did you mean 'nx'?"), std::string::npos)
         << r.output;
 }
 

@@ -100,8 +100,8 @@ long long whole_rows(const std::filesystem::path& csv) {
 
 std::filesystem::path work_directory() {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const auto dir = std::filesystem::path(FRICTIONLAB_BINARY_DIR) / "tests" / "work" / test->test_suite_name() /
-                     test->name();
+    const auto dir =
+        std::filesystem::path(FRICTIONLAB_BINARY_DIR) / "tests" / "work" / test->test_suite_name() / test->name();
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -123,7 +123,8 @@ constexpr double exact = 1e-9;             // the CSV tables keep 10 significant
 
 TEST(FrictionSwap, TheTestScenesDifferOnlyInTheFrictionBlock) {
     const std::string base = testing::read_text(scenes / "swap_base.yaml");
-    for (const char* law : {"coulomb", "slip_weakening", "two_state_junctions", "three_state_junctions", "rate_state"}) {
+    for (const char* law :
+         {"coulomb", "slip_weakening", "two_state_junctions", "three_state_junctions", "rate_state"}) {
         const std::string variant =
             with_friction(base, testing::read_text(scenes / (std::string("friction_") + law + ".yaml")));
         EXPECT_EQ(outside_friction(variant), outside_friction(base)) << law;
@@ -142,7 +143,8 @@ TEST(FrictionSwap, CoulombHoldsUpToTheStaticThresholdThenSlipsAtTheKineticOne) {
     // slips at exactly mu_k f_N against its motion.
     const auto r = run.block(run.ratio, 0), v = run.block(run.velocity, 0);
     const std::size_t rows = r.size();
-    const std::size_t slipping = first_row(rows, 0, [&](std::size_t k) { return std::abs(r[k] + mu_k) < exact * mu_k; });
+    const std::size_t slipping =
+        first_row(rows, 0, [&](std::size_t k) { return std::abs(r[k] + mu_k) < exact * mu_k; });
     ASSERT_LT(slipping, rows) << "block 0 never slipped";
     double peak = 0;
     for (std::size_t k = 0; k < slipping; ++k) peak = std::max(peak, -r[k]);
@@ -170,7 +172,8 @@ TEST(FrictionSwap, SlipWeakeningStrengthFallsLinearlyWithSlipOverDc) {
     const std::size_t rows = r.size();
     // The weakening branch of block 0's first slip: back from the first row at mu_d, while it moved
     // forward and its strength only fell (before it broke, a stuck block's force rose).
-    const std::size_t residual = first_row(rows, 0, [&](std::size_t k) { return std::abs(r[k] + mu_d) < exact * mu_d; });
+    const std::size_t residual =
+        first_row(rows, 0, [&](std::size_t k) { return std::abs(r[k] + mu_d) < exact * mu_d; });
     ASSERT_LT(residual, rows) << "block 0 never weakened to mu_d";
     std::size_t start = residual;
     while (start > 1 && v[start - 1] > 0 && -r[start - 1] >= -r[start]) --start;
@@ -197,7 +200,7 @@ TEST(FrictionSwap, SlipWeakeningStrengthFallsLinearlyWithSlipOverDc) {
 TEST(FrictionSwap, TwoStateJunctionsSlipAtMuDAndRepinAfterTheirSlippingTimes) {
     const LawRun run = run_with("two_state_junctions");
     constexpr double mu_d = mu_k, t_mean = 2e-4, t_sd = 6e-5;  // scenes/friction_two_state_junctions.yaml
-    EXPECT_LE(largest_ratio(run), mu_s * (1 + exact));  // every pinned junction holds at most mu_s f_N / N_s
+    EXPECT_LE(largest_ratio(run), mu_s * (1 + exact));         // every pinned junction holds at most mu_s f_N / N_s
     // A block whose junctions all slip carries exactly mu_d f_N against its motion.
     std::size_t unpinned = 0;
     for (int b = 0; b < blocks; ++b) {
@@ -250,7 +253,8 @@ TEST(FrictionSwap, ThreeStateJunctionsShowGrowingPrecursorsBeforeTheFirstGlobalS
     double longest = 0;
     for (std::size_t k = 0; k < g; ++k) {
         EXPECT_LT(extent[k], 1.0);
-        EXPECT_LE(run.events.at("nucleation_block")[k], 1.0) << "precursor " << k << " did not start at the driven edge";
+        EXPECT_LE(run.events.at("nucleation_block")[k], 1.0)
+            << "precursor " << k << " did not start at the driven edge";
         EXPECT_LT(ratio[k], ratio[g]);
         longest = std::max(longest, extent[k]);
     }

@@ -95,8 +95,11 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
         const auto at = summary.find("global_static_coefficient: ");
         ASSERT_NE(at, std::string::npos);
         const std::string stated = summary.substr(at + 27, summary.find('\n', at) - at - 27);
-        if (stated == "null") EXPECT_EQ(row.at("global_static_coefficient"), "nan");
-        else EXPECT_NEAR(std::stod(row.at("global_static_coefficient")), std::stod(stated), 1e-9 * std::abs(std::stod(stated)));
+        if (stated == "null")
+            EXPECT_EQ(row.at("global_static_coefficient"), "nan");
+        else
+            EXPECT_NEAR(std::stod(row.at("global_static_coefficient")), std::stod(stated),
+                        1e-9 * std::abs(std::stod(stated)));
         // -j 2 computes every case bit for bit as -j 1.
         EXPECT_EQ(data_lines(case_dir / "ruptures.csv"), data_lines(dir / "j2" / "cases" / name / "ruptures.csv"));
     }
@@ -107,7 +110,8 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
     EXPECT_EQ(static_cast<std::size_t>(std::count(events.begin(), events.end(), '\n')), all_events + 1);
 
     // A case is an ordinary run: `frictionlab run` with the same values writes the same events.
-    const auto single = frictionlab("run -q " SWEEP_FILES "/tiny_scene.yaml --set loaders[2].velocity=0.12 --set seed=2 -o single", dir);
+    const auto single = frictionlab(
+        "run -q " SWEEP_FILES "/tiny_scene.yaml --set loaders[2].velocity=0.12 --set seed=2 -o single", dir);
     ASSERT_EQ(single.code, 0) << single.output;
     EXPECT_EQ(data_lines(dir / "single" / "ruptures.csv"),
               data_lines(dir / "j1" / "cases" / "velocity-0.12_seed-2" / "ruptures.csv"));

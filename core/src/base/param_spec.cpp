@@ -8,12 +8,18 @@ namespace frictionlab {
 
 std::string to_string(ValueType type) {
     switch (type) {
-        case ValueType::boolean: return "boolean";
-        case ValueType::integer: return "integer";
-        case ValueType::real: return "number";
-        case ValueType::string: return "string";
-        case ValueType::real_list: return "list of numbers";
-        case ValueType::string_list: return "list of strings";
+        case ValueType::boolean:
+            return "boolean";
+        case ValueType::integer:
+            return "integer";
+        case ValueType::real:
+            return "number";
+        case ValueType::string:
+            return "string";
+        case ValueType::real_list:
+            return "list of numbers";
+        case ValueType::string_list:
+            return "list of strings";
     }
     return "?";
 }
@@ -55,8 +61,8 @@ std::string choice_violation(const ParamInfo& p, const std::string& s) {
     if (p.choices.empty()) return {};
     for (const auto& c : p.choices)
         if (c == s) return {};
-    return "must be one of " + join_list(p.choices, [](const std::string& c) { return "'" + c + "'"; }) +
-           ", got '" + s + "'";
+    return "must be one of " + join_list(p.choices, [](const std::string& c) { return "'" + c + "'"; }) + ", got '" +
+           s + "'";
 }
 }  // namespace
 

@@ -14,11 +14,16 @@ Integrator::~Integrator() = default;
 
 std::string_view to_string(Kind kind) {
     switch (kind) {
-        case Kind::bulk_model: return "bulk_model";
-        case Kind::friction_law: return "friction_law";
-        case Kind::loader: return "loader";
-        case Kind::observer: return "observer";
-        case Kind::integrator: return "integrator";
+        case Kind::bulk_model:
+            return "bulk_model";
+        case Kind::friction_law:
+            return "friction_law";
+        case Kind::loader:
+            return "loader";
+        case Kind::observer:
+            return "observer";
+        case Kind::integrator:
+            return "integrator";
     }
     return "?";
 }

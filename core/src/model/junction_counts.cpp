@@ -10,14 +10,16 @@ JunctionCounts JunctionCounts::require(const Quantities& q, Index blocks, std::s
     const auto find = [&](std::string_view name) {
         const Quantities::Field* f = q.find_field(name);
         if (!f)
-            throw RunError(fmt::format("{} needs the field '{}' (junction counts per interface block, published by a "
-                                       "friction law with junctions such as three_state_junctions), but no effect of "
-                                       "the scene publishes it",
-                                       needed_by, name));
+            throw RunError(
+                fmt::format("{} needs the field '{}' (junction counts per interface block, published by a "
+                            "friction law with junctions such as three_state_junctions), but no effect of "
+                            "the scene publishes it",
+                            needed_by, name));
         if (f->node_set != "interface" || f->values.size() != blocks)
-            throw RunError(fmt::format("{} needs the field '{}' over the {} nodes of 'interface', but it is over '{}' "
-                                       "with {} values",
-                                       needed_by, name, blocks, f->node_set, f->values.size()));
+            throw RunError(
+                fmt::format("{} needs the field '{}' over the {} nodes of 'interface', but it is over '{}' "
+                            "with {} values",
+                            needed_by, name, blocks, f->node_set, f->values.size()));
         return &f->values;
     };
     JunctionCounts c;

@@ -29,8 +29,8 @@ Eigen::ArrayXd& Quantities::field(const std::string& name, const std::string& no
     return f.values;
 }
 
-const Eigen::ArrayXd& Quantities::needed_field(const std::string& name, const std::string& node_set,
-                                               Eigen::Index size, std::string reader) {
+const Eigen::ArrayXd& Quantities::needed_field(const std::string& name, const std::string& node_set, Eigen::Index size,
+                                               std::string reader) {
     Field& f = declared(fields_, name, node_set, size);
     f.readers.push_back(std::move(reader));
     return f.values;

@@ -19,9 +19,10 @@ CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::str
     : TableWriter(file), columns_(columns.size()) {
     fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd_ < 0 && errno == EEXIST)
-        throw InputError(fmt::format("'{}' is written by another observer of this run already; give each observer "
-                                     "its own file",
-                                     file.string()));
+        throw InputError(
+            fmt::format("'{}' is written by another observer of this run already; give each observer "
+                        "its own file",
+                        file.string()));
     if (fd_ < 0) throw RunError(fmt::format("cannot create '{}': {}", file.string(), os_error(errno)));
     write_file_atomically(table_sidecar_path(file), table_sidecar_yaml(Provenance::of(info), columns));
     append(fmt::format("{}\n", fmt::join(columns, ",")));
@@ -35,7 +36,8 @@ void CsvTable::row(const std::vector<double>& values) {
     if (values.size() != columns_)
         throw RunError(fmt::format("{}: row of {} values for {} columns", file_.string(), values.size(), columns_));
     line_.clear();
-    for (std::size_t i = 0; i < values.size(); ++i) fmt::format_to(std::back_inserter(line_), "{}{:.10g}", i ? "," : "", values[i]);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        fmt::format_to(std::back_inserter(line_), "{}{:.10g}", i ? "," : "", values[i]);
     line_ += '\n';
     append(line_);
 }

@@ -59,7 +59,9 @@ std::size_t Hdf5Table::chunk_rows(std::size_t columns) {
 }
 
 Hdf5Table::Hdf5Table(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info)
-    : TableWriter(file), columns_(columns.size()), chunk_rows_(chunk_rows(columns.size())),
+    : TableWriter(file),
+      columns_(columns.size()),
+      chunk_rows_(chunk_rows(columns.size())),
       buffer_(chunk_rows_ * columns_) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported as RunError, not printed
     file_id_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);

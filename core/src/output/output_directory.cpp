@@ -56,9 +56,10 @@ void prepare_output_directory(const fs::path& dir, bool overwrite, const std::ve
     std::error_code ec;
     if (fs::exists(fs::symlink_status(dir, ec))) {
         if (!overwrite)
-            throw InputError(fmt::format("output directory '{}' already exists; choose another or pass --overwrite "
-                                         "to replace it",
-                                         dir.string()));
+            throw InputError(
+                fmt::format("output directory '{}' already exists; choose another or pass --overwrite "
+                            "to replace it",
+                            dir.string()));
         if (const std::string why = why_not_replaceable(dir, keep); !why.empty())
             throw InputError(fmt::format("--overwrite refuses to replace '{}': {}", dir.string(), why));
         fs::remove_all(dir, ec);

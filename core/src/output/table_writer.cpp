@@ -9,7 +9,8 @@ TableWriter::~TableWriter() = default;
 
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
                                         const RunInfo& info, TableFormat format) {
-    if (format == TableFormat::hdf5) return std::make_unique<Hdf5Table>(std::filesystem::path(file).replace_extension(".h5"), columns, info);
+    if (format == TableFormat::hdf5)
+        return std::make_unique<Hdf5Table>(std::filesystem::path(file).replace_extension(".h5"), columns, info);
     return std::make_unique<CsvTable>(file, columns, info);
 }
 

@@ -78,8 +78,8 @@ std::string elf_problem(const std::filesystem::path& file) {
     else if (header.e_type != ET_DYN)
         problem = "it is an ELF file but not a shared library";
     else if (machine != EM_NONE && header.e_machine != machine)
-        problem = fmt::format("it is built for another machine (ELF machine {}, this one is {})", header.e_machine,
-                              machine);
+        problem =
+            fmt::format("it is built for another machine (ELF machine {}, this one is {})", header.e_machine, machine);
     else if (header.e_shoff + std::uint64_t{header.e_shnum} * header.e_shentsize > size)
         problem = fmt::format("it is truncated: its section table ends at byte {}, the file has {}",
                               header.e_shoff + std::uint64_t{header.e_shnum} * header.e_shentsize, size);
@@ -87,7 +87,8 @@ std::string elf_problem(const std::filesystem::path& file) {
         problem = "its program headers cannot be read";
     for (std::size_t i = 0; problem.empty() && i < segments; ++i) {
         GElf_Phdr segment{};
-        if (!gelf_getphdr(elf, static_cast<int>(i), &segment)) problem = "its program headers cannot be read";
+        if (!gelf_getphdr(elf, static_cast<int>(i), &segment))
+            problem = "its program headers cannot be read";
         else if (segment.p_offset + segment.p_filesz > size)
             problem = fmt::format("it is truncated: segment {} ends at byte {}, the file has {}", i,
                                   segment.p_offset + segment.p_filesz, size);
@@ -132,8 +133,7 @@ PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(absolute
     // Only the first two fields are read before they have been checked: their place never moves.
     if (header_->header_version != plugin_header_version || header_->header_size != sizeof(PluginHeader))
         fail(fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
-                         header_->header_version, header_->header_size, plugin_header_version,
-                         sizeof(PluginHeader)));
+                         header_->header_version, header_->header_size, plugin_header_version, sizeof(PluginHeader)));
     if (auto diff = first_difference(header_->abi, current_abi()); !diff.empty()) fail(diff);
     if (!header_->register_types) fail("its header has no register function");
     if (!header_->name || !header_->version) fail("its header has no name or version");

@@ -15,10 +15,10 @@ std::string duplicate_in(const std::vector<TypeInfo>& types, std::size_t first) 
     for (std::size_t j = first; j < types.size(); ++j)
         for (std::size_t i = 0; i < j; ++i)
             if (types[i].kind == types[j].kind && types[i].type == types[j].type)
-                return i >= first ? fmt::format("it registers {} type '{}' twice", to_string(types[j].kind),
-                                                types[j].type)
-                                  : fmt::format("{} type '{}' is already provided by {}", to_string(types[j].kind),
-                                                types[j].type, provider(types[i].library));
+                return i >= first
+                           ? fmt::format("it registers {} type '{}' twice", to_string(types[j].kind), types[j].type)
+                           : fmt::format("{} type '{}' is already provided by {}", to_string(types[j].kind),
+                                         types[j].type, provider(types[i].library));
     return {};
 }
 }  // namespace

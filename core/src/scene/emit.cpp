@@ -97,7 +97,6 @@ std::string resolved_yaml(const Scene& scene, const Registry& registry) { return
 
 std::string physics_yaml(const Scene& scene, const Registry& registry) { return scene_yaml(scene, registry, false); }
 
-
 namespace {
 
 std::string bounds_text(const ParamInfo& p) {
@@ -135,7 +134,8 @@ std::string example_yaml(const TypeInfo& info) {
         const ParamInfo& steps = detail::scene_level_params(Kind::observer)[1];
         lines.push_back({"every_steps: 100", detail::comment_for(steps) + "; or 'every' in s"});
     }
-    for (const auto& p : info.params) lines.push_back({p.key + ": " + yaml_text(p.default_value), detail::comment_for(p)});
+    for (const auto& p : info.params)
+        lines.push_back({p.key + ": " + yaml_text(p.default_value), detail::comment_for(p)});
     std::size_t width = 0;
     for (const auto& l : lines) width = std::max(width, l.text.size());
 

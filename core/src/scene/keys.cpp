@@ -49,7 +49,7 @@ const std::vector<ParamInfo>& top_level_params() {
 }
 
 const std::vector<std::string>& top_level_sections() {
-    static const std::vector<std::string> keys = {"plugin_paths", "bulk",   "friction",  "loaders",
+    static const std::vector<std::string> keys = {"plugin_paths", "bulk",   "friction", "loaders",
                                                   "integrator",   "stages", "observers"};
     return keys;
 }

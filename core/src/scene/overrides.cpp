@@ -59,13 +59,15 @@ private:
                 std::size_t index = 0;
                 const auto [end_of_number, error] = std::from_chars(text_.data() + digits, text_.data() + i, index);
                 if (error != std::errc() || end_of_number != text_.data() + i)
-                    return fail(digits, "", fmt::format("list index {} is out of range", text_.substr(digits, i - digits))),
+                    return fail(digits, "",
+                                fmt::format("list index {} is out of range", text_.substr(digits, i - digits))),
                            false;
                 steps_.push_back({"", index, open});
                 ++i;
             }
             if (i == end) return true;
-            if (text_[i] != '.') return fail(i, "", fmt::format("unexpected character '{}' in the key path", text_[i])), false;
+            if (text_[i] != '.')
+                return fail(i, "", fmt::format("unexpected character '{}' in the key path", text_[i])), false;
             ++i;
         }
     }
@@ -92,7 +94,8 @@ private:
         sources_->add(node, where(node));
         if (depth == 0) return;
         if (node.IsMap())
-            for (auto it = node.begin(); it != node.end(); ++it) record(it->first, depth - 1), record(it->second, depth - 1);
+            for (auto it = node.begin(); it != node.end(); ++it)
+                record(it->first, depth - 1), record(it->second, depth - 1);
         if (node.IsSequence())
             for (const auto& item : node) record(item, depth - 1);
     }
@@ -154,7 +157,8 @@ private:
     // A key the override added has no mark; point unknown-key errors at the override.
     void record_key(const YAML::Node& map, const Step& step) {
         for (auto it = map.begin(); it != map.end(); ++it)
-            if (it->first.IsScalar() && it->first.Scalar() == step.key) return sources_->add(it->first, at_column(step.offset));
+            if (it->first.IsScalar() && it->first.Scalar() == step.key)
+                return sources_->add(it->first, at_column(step.offset));
     }
 
     static constexpr int max_depth = 4;

@@ -18,7 +18,7 @@ namespace {
 struct SceneData {
     std::optional<YAML::Node> root;  // none when the file could not be read or is malformed
     detail::SourceMap sources;
-    std::filesystem::path folder;    // that relative plugin paths are taken from
+    std::filesystem::path folder;  // that relative plugin paths are taken from
 };
 }  // namespace
 
@@ -97,8 +97,8 @@ SceneDocument SceneDocument::load(const std::filesystem::path& file, const std::
     return load_located(file, from_command_line(overrides), diagnostics);
 }
 
-SceneDocument SceneDocument::load_located(const std::filesystem::path& file, const std::vector<SceneOverride>& overrides,
-                                          Diagnostics& diagnostics) {
+SceneDocument SceneDocument::load_located(const std::filesystem::path& file,
+                                          const std::vector<SceneOverride>& overrides, Diagnostics& diagnostics) {
     auto data = read(read_file(file, diagnostics), file.string(), file.parent_path(), overrides, diagnostics);
     return SceneDocument(std::make_unique<Impl>(std::move(data)));
 }
@@ -124,7 +124,8 @@ Scene SceneDocument::validate(const Registry& registry, Diagnostics& diagnostics
     scene.file = impl_->data.sources.file();
     if (!impl_->data.root) return scene;
     reporting_failures(impl_->data.sources.file(), diagnostics, [&] {
-        scene = detail::validate_scene(*impl_->data.root, impl_->data.sources, impl_->data.folder, registry, diagnostics);
+        scene =
+            detail::validate_scene(*impl_->data.root, impl_->data.sources, impl_->data.folder, registry, diagnostics);
     });
     return scene;
 }

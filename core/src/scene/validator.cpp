@@ -43,8 +43,10 @@ template <class T>
 T value_or(const ParamValues& values, const std::string& key, T fallback) {
     const auto it = values.find(key);
     if (it == values.end()) return fallback;
-    if constexpr (std::is_same_v<T, ParamValue>) return it->second;
-    else return std::get<T>(it->second);
+    if constexpr (std::is_same_v<T, ParamValue>)
+        return it->second;
+    else
+        return std::get<T>(it->second);
 }
 
 struct ComponentRead {
@@ -98,7 +100,8 @@ private:
         const std::string output = value_or(top.values, "output", std::string());
         scene.output_directory = output;
         if (top.values.contains("output") && output.empty())
-            reporter_.error(top.given.at("output").site(), "output", "expected the output directory, got an empty string");
+            reporter_.error(top.given.at("output").site(), "output",
+                            "expected the output directory, got an empty string");
     }
 
     void report_missing_sections(const YAML::Node& root, const Section& top) {
@@ -106,7 +109,8 @@ private:
             return fmt::format("a mapping with the {} type and its parameters", to_string(kind));
         };
         if (!top.given.contains("bulk")) report_missing(root, "bulk", component(Kind::bulk_model), "", reporter_);
-        if (!top.given.contains("integrator")) report_missing(root, "integrator", component(Kind::integrator), "", reporter_);
+        if (!top.given.contains("integrator"))
+            report_missing(root, "integrator", component(Kind::integrator), "", reporter_);
         if (!top.given.contains("stages")) report_missing(root, "stages", "a non-empty list of stages", "", reporter_);
     }
 
@@ -161,7 +165,8 @@ private:
         c.section = read_section(entry, path, keys, reporter_);
         for (const auto& [key, given] : c.section.given) c.spec.value_where[key] = reporter_.where(given.site());
         if (info)
-            for (const auto& p : info->params) c.spec.values[p.key] = value_or(c.section.values, p.key, p.default_value);
+            for (const auto& p : info->params)
+                c.spec.values[p.key] = value_or(c.section.values, p.key, p.default_value);
         c.spec.stages = value_or(c.section.values, "stages", std::vector<std::string>());
         c.spec.every = value_or(c.section.values, "every", 0.0);
         c.spec.every_steps = value_or(c.section.values, "every_steps", std::int64_t{0});
@@ -224,8 +229,9 @@ private:
         std::vector<StageSpec> stages;
         if (!list) return stages;
         if (!list->value.IsSequence() || list->value.size() == 0) {
-            reporter_.error(list->site(), "stages", "expected a non-empty list of stages, got " +
-                                                        (list->value.IsSequence() ? std::string("an empty list") : describe(list->value)));
+            reporter_.error(list->site(), "stages",
+                            "expected a non-empty list of stages, got " +
+                                (list->value.IsSequence() ? std::string("an empty list") : describe(list->value)));
             return stages;
         }
         stages_usable_ = true;
@@ -256,8 +262,10 @@ private:
         }
         const SourceLocation here = reporter_.where(entry.value);
         const auto [it, first] = first_use.emplace(name, fmt::format("{} (line {})", path, here.line));
-        if (!first) reporter_.error(here, key, "duplicate stage name " + quote(name) + ", first used by " + it->second);
-        else stage_names_.push_back(name);
+        if (!first)
+            reporter_.error(here, key, "duplicate stage name " + quote(name) + ", first used by " + it->second);
+        else
+            stage_names_.push_back(name);
     }
 
     void check_loader_stages(const std::vector<ComponentRead>& loaders) {
@@ -346,10 +354,11 @@ std::vector<std::filesystem::path> read_plugin_paths(const YAML::Node& root, con
     for (std::size_t k = 0; k < names.size(); ++k) {
         const std::filesystem::path path = folder / names[k];
         std::error_code ec;
-        const std::string problem = !std::filesystem::exists(path, ec)        ? "does not exist"
+        const std::string problem = !std::filesystem::exists(path, ec)         ? "does not exist"
                                     : !std::filesystem::is_directory(path, ec) ? "is not a folder"
-                                                                                : "";
-        if (problem.empty()) paths.push_back(path);
+                                                                               : "";
+        if (problem.empty())
+            paths.push_back(path);
         else
             reporter.error(given->value[k], index_path("plugin_paths", k),
                            fmt::format("plugin path {} {} (looked for {}; relative paths are taken from the scene "

@@ -157,15 +157,15 @@ std::optional<ParamValue> read_list(const ParamInfo& info, const Entry& entry, c
     return ParamValue(std::move(items));
 }
 
-void report_unknown(const YAML::Node& key, const std::string& path, const SectionKeys& keys,
-                    const Reporter& reporter) {
+void report_unknown(const YAML::Node& key, const std::string& path, const SectionKeys& keys, const Reporter& reporter) {
     std::vector<std::string> known;
     for (const auto& p : keys.params) known.push_back(p.key);
     known.insert(known.end(), keys.other_keys.begin(), keys.other_keys.end());
     const std::string name = key.Scalar();
     const std::string guess = did_you_mean(name, known);
     if (!guess.empty()) {
-        reporter.error(key, join_path(path, name), "unknown key " + quote(name) + "; did you mean " + quote(guess) + "?");
+        reporter.error(key, join_path(path, name),
+                       "unknown key " + quote(name) + "; did you mean " + quote(guess) + "?");
         return;
     }
     std::string list;
@@ -202,9 +202,12 @@ void emit_string(YAML::Emitter& out, const std::string& s) {
 std::optional<ParamValue> read_value(const ParamInfo& info, const Entry& entry, const std::string& path,
                                      const Reporter& reporter) {
     switch (info.type) {
-        case ValueType::real_list: return read_list<double>(info, entry, path, reporter);
-        case ValueType::string_list: return read_list<std::string>(info, entry, path, reporter);
-        default: return read_scalar_value(info, entry, path, reporter);
+        case ValueType::real_list:
+            return read_list<double>(info, entry, path, reporter);
+        case ValueType::string_list:
+            return read_list<std::string>(info, entry, path, reporter);
+        default:
+            return read_scalar_value(info, entry, path, reporter);
     }
 }
 
@@ -212,25 +215,32 @@ std::string expectation(const ParamInfo& info) {
     const std::string unit = info.unit.empty() || info.unit == "1" ? "" : " in " + info.unit;
     const std::string choices = info.choices.empty() ? "" : ", each one of " + quote_list(info.choices);
     switch (info.type) {
-        case ValueType::boolean: return "true or false";
-        case ValueType::integer: return "an integer" + unit;
-        case ValueType::real: return "a number" + unit;
-        case ValueType::string: return info.choices.empty() ? "a string" : "one of " + quote_list(info.choices);
-        case ValueType::real_list: return "a list of numbers" + unit;
-        case ValueType::string_list: return "a list of strings" + choices;
+        case ValueType::boolean:
+            return "true or false";
+        case ValueType::integer:
+            return "an integer" + unit;
+        case ValueType::real:
+            return "a number" + unit;
+        case ValueType::string:
+            return info.choices.empty() ? "a string" : "one of " + quote_list(info.choices);
+        case ValueType::real_list:
+            return "a list of numbers" + unit;
+        case ValueType::string_list:
+            return "a list of strings" + choices;
     }
     return "a value";
 }
 
-void report_missing(const YAML::Node& map, const std::string& path, const std::string& expected,
-                    const std::string& doc, const Reporter& reporter) {
+void report_missing(const YAML::Node& map, const std::string& path, const std::string& expected, const std::string& doc,
+                    const Reporter& reporter) {
     reporter.error(map, path, "required key is missing (" + expected + ")" + (doc.empty() ? "" : ": " + doc));
 }
 
 Section read_section(const Entry& map, const std::string& path, const SectionKeys& keys, const Reporter& reporter) {
     Section section;
     if (!map.value.IsMap()) {
-        reporter.error(map.site(), path, "expected a mapping with the keys of " + keys.what + ", got " + describe(map.value));
+        reporter.error(map.site(), path,
+                       "expected a mapping with the keys of " + keys.what + ", got " + describe(map.value));
         section.valid = false;
         return section;
     }
@@ -252,8 +262,10 @@ Section read_section(const Entry& map, const std::string& path, const SectionKey
         }
         section.given.emplace(name, entry);
         if (info == keys.params.end()) continue;
-        if (auto value = read_value(*info, entry, join_path(path, name), reporter)) section.values.emplace(name, *value);
-        else section.valid = false;
+        if (auto value = read_value(*info, entry, join_path(path, name), reporter))
+            section.values.emplace(name, *value);
+        else
+            section.valid = false;
     }
     for (const auto& p : keys.params) {
         if (!p.required || section.given.contains(p.key)) continue;

@@ -37,9 +37,7 @@ std::string join_path(const std::string& parent, const std::string& key) {
     return parent.empty() ? escaped(key) : parent + "." + escaped(key);
 }
 
-std::string index_path(const std::string& parent, std::size_t index) {
-    return fmt::format("{}[{}]", parent, index);
-}
+std::string index_path(const std::string& parent, std::size_t index) { return fmt::format("{}[{}]", parent, index); }
 
 std::string escaped(const std::string& text) {
     constexpr std::size_t longest = 60;
@@ -47,8 +45,10 @@ std::string escaped(const std::string& text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (i == longest) return out.append("...");
         const auto c = static_cast<unsigned char>(text[i]);
-        if (c < 0x20 || c == 0x7f) out += fmt::format("\\x{:02x}", c);
-        else out += text[i];
+        if (c < 0x20 || c == 0x7f)
+            out += fmt::format("\\x{:02x}", c);
+        else
+            out += text[i];
     }
     return out;
 }
@@ -72,12 +72,16 @@ bool is_quoted(const YAML::Node& node) { return node.IsScalar() && node.Tag() !=
 std::string describe(const YAML::Node& node) {
     if (!node.IsDefined()) return "nothing";
     switch (node.Type()) {
-        case YAML::NodeType::Null: return "an empty value";
-        case YAML::NodeType::Sequence: return "a list";
-        case YAML::NodeType::Map: return "a mapping";
+        case YAML::NodeType::Null:
+            return "an empty value";
+        case YAML::NodeType::Sequence:
+            return "a list";
+        case YAML::NodeType::Map:
+            return "a mapping";
         case YAML::NodeType::Scalar:
             return is_quoted(node) ? "the quoted string " + quote(node.Scalar()) : quote(node.Scalar());
-        default: return "nothing";
+        default:
+            return "nothing";
     }
 }
 
@@ -122,7 +126,9 @@ private:
     };
 
     bool active() const { return documents_ == 1; }
-    bool reading_key() const { return active() && !stack_.empty() && stack_.back().is_map && stack_.back().expecting_key; }
+    bool reading_key() const {
+        return active() && !stack_.empty() && stack_.back().is_map && stack_.back().expecting_key;
+    }
 
     void check_key(const YAML::Mark& mark, const std::string& key) {
         Frame& f = stack_.back();
@@ -131,9 +137,8 @@ private:
         if (!first)
             found_->error(location(file_, mark), join_path(f.path, key),
                           fmt::format("duplicate key {}, first given at line {}{}", quote(key), it->second.line + 1,
-                                      it->second.line == mark.line
-                                          ? fmt::format(", column {}", it->second.column + 1)
-                                          : std::string()));
+                                      it->second.line == mark.line ? fmt::format(", column {}", it->second.column + 1)
+                                                                   : std::string()));
     }
     void leaf() {
         if (reading_key()) stack_.back().key.clear();
@@ -160,8 +165,10 @@ private:
     void node_done() {
         if (!active() || stack_.empty()) return;
         Frame& f = stack_.back();
-        if (f.is_map) f.expecting_key = !f.expecting_key;
-        else ++f.index;
+        if (f.is_map)
+            f.expecting_key = !f.expecting_key;
+        else
+            ++f.index;
     }
 
     std::string file_;
@@ -179,11 +186,16 @@ std::optional<std::size_t> first_invalid_utf8(std::string_view text) {
         const unsigned char c = byte(i);
         std::size_t length = 0;
         unsigned char low = 0x80, high = 0xbf;  // allowed range of the second byte
-        if (c < 0x80) length = 1;
-        else if (c >= 0xc2 && c <= 0xdf) length = 2;
-        else if (c >= 0xe0 && c <= 0xef) length = 3, low = c == 0xe0 ? 0xa0 : 0x80, high = c == 0xed ? 0x9f : 0xbf;
-        else if (c >= 0xf0 && c <= 0xf4) length = 4, low = c == 0xf0 ? 0x90 : 0x80, high = c == 0xf4 ? 0x8f : 0xbf;
-        else return i;
+        if (c < 0x80)
+            length = 1;
+        else if (c >= 0xc2 && c <= 0xdf)
+            length = 2;
+        else if (c >= 0xe0 && c <= 0xef)
+            length = 3, low = c == 0xe0 ? 0xa0 : 0x80, high = c == 0xed ? 0x9f : 0xbf;
+        else if (c >= 0xf0 && c <= 0xf4)
+            length = 4, low = c == 0xf0 ? 0x90 : 0x80, high = c == 0xf4 ? 0x8f : 0xbf;
+        else
+            return i;
         if (i + length > text.size()) return i;
         for (std::size_t k = 1; k < length; ++k) {
             const unsigned char lo = k == 1 ? low : 0x80, hi = k == 1 ? high : 0xbf;
@@ -222,8 +234,7 @@ std::optional<YAML::Node> read_yaml(const std::string& text, const std::string& 
         std::istringstream in(text);
         YAML::Parser parser(in);
         KeyEventChecker checker(name, key_errors);
-        while (checker.documents() < 2 && parser.HandleNextDocument(checker)) {
-        }
+        while (checker.documents() < 2 && parser.HandleNextDocument(checker)) {}
         YAML::Node root = YAML::Load(text);
         merge(key_errors, diagnostics);
         return root;

@@ -51,7 +51,8 @@ struct ObserverSlot {
         if (!(every > 0)) return;
         // Far behind (a cadence much finer than the step): jump, rather than add `every` millions
         // of times a step; the scene check refuses a cadence too fine to move the sum at all.
-        if (next_time + 1024 * every <= t + tolerance) next_time += std::floor((t + tolerance - next_time) / every) * every;
+        if (next_time + 1024 * every <= t + tolerance)
+            next_time += std::floor((t + tolerance - next_time) / every) * every;
         while (next_time <= t + tolerance) {
             const double next = next_time + every;
             next_time = next > next_time ? next : std::nextafter(next_time, INFINITY);
@@ -103,14 +104,15 @@ struct RunRecord {
         y << YAML::Key << "cpu_seconds" << YAML::Value << summary.cpu_seconds;
         if (!summary.integrator_statistics.empty()) {
             y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
-            for (const auto& [name, value] : summary.integrator_statistics) y << YAML::Key << name << YAML::Value << value;
+            for (const auto& [name, value] : summary.integrator_statistics)
+                y << YAML::Key << name << YAML::Value << value;
             y << YAML::EndMap;
         }
         y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
         for (const auto& p : info.plugins)
-            y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key
-              << "version" << YAML::Value << p.version << YAML::Key << "file" << YAML::Value << p.file.string()
-              << YAML::Key << "fnv1a_64" << YAML::Value << p.fingerprint << YAML::EndMap;
+            y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "version"
+              << YAML::Value << p.version << YAML::Key << "file" << YAML::Value << p.file.string() << YAML::Key
+              << "fnv1a_64" << YAML::Value << p.fingerprint << YAML::EndMap;
         y << YAML::EndSeq;
         y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
         y << YAML::EndMap;
@@ -159,8 +161,10 @@ public:
         const double eta = done > 0 ? (1 - done) / done * (wall - stage_wall_) : 0;
         const std::string line = fmt::format("stage {} ({}): t = {:.6g} s, {:5.1f} %, {:.3g} steps/s, ETA {:.0f} s",
                                              stage.index + 1, stage.name, t, 100 * done, rate, eta);
-        if (live_) std::fprintf(stderr, "\r%-100s", line.c_str()), std::fflush(stderr), eraser_->shown = true;
-        else log_.info(line);
+        if (live_)
+            std::fprintf(stderr, "\r%-100s", line.c_str()), std::fflush(stderr), eraser_->shown = true;
+        else
+            log_.info(line);
         last_ = now;
         last_steps_ = steps;
     }
@@ -186,8 +190,8 @@ public:
         prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
         output_ = scene.output_directory;
         for (const auto& o : scene.observers) {
-            auto observer = located_in_scene(
-                o, [&] { return registry.create<Observer>(o.type, o.values, sim_.context(o.path)); });
+            auto observer =
+                located_in_scene(o, [&] { return registry.create<Observer>(o.type, o.values, sim_.context(o.path)); });
             observers_.push_back({std::move(observer), o.path, o.every, o.every_steps, 0});
         }
         if (std::any_of(observers_.begin(), observers_.end(),
@@ -201,7 +205,9 @@ public:
         const auto start = Clock::now();
         const std::clock_t cpu_start = std::clock();
         const auto summary = [&] {
-            return RunSummary{sim_.system().step_index(), sim_.system().evaluations(), sim_.system().time(),
+            return RunSummary{sim_.system().step_index(),
+                              sim_.system().evaluations(),
+                              sim_.system().time(),
                               std::chrono::duration<double>(Clock::now() - start).count(),
                               static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC,
                               sim_.integrator().statistics()};
@@ -236,8 +242,8 @@ public:
 private:
     RunView view(const StageInfo& stage) {
         const System& sys = sim_.system();
-        return RunView{sys, sys.body(), sys.state(), sim_.quantities(), stage, sys.step_index(), output_, sim_.info(),
-                       log_};
+        return RunView{sys,     sys.body(),  sys.state(), sim_.quantities(), stage, sys.step_index(),
+                       output_, sim_.info(), log_};
     }
 
     void observe_due(const StageInfo& stage, bool all) {
@@ -296,7 +302,9 @@ private:
         if (signal == 0) return;
         const System& sys = sim_.system();
         throw Interrupted(fmt::format("interrupted by {} after step {} at t = {:.9g} s, in stage '{}'",
-                                      signal == SIGTERM ? "SIGTERM" : signal == SIGINT ? "SIGINT" : "a signal",
+                                      signal == SIGTERM  ? "SIGTERM"
+                                      : signal == SIGINT ? "SIGINT"
+                                                         : "a signal",
                                       sys.step_index(), sys.time(), stage.name),
                           signal);
     }
@@ -315,9 +323,10 @@ private:
         Index worst = 0;
         const double speed = (s.vx.square() + s.vz.square()).sqrt().maxCoeff(&worst);
         if (speed > spec.max_speed_at_end)
-            throw RunError(fmt::format("stage '{}' ended at t = {:.9g} s with block {} moving at {:.3g} m/s, above "
-                                       "its max_speed_at_end of {:.3g} m/s (settle longer or damp more)",
-                                       spec.name, s.t, worst, speed, spec.max_speed_at_end));
+            throw RunError(
+                fmt::format("stage '{}' ended at t = {:.9g} s with block {} moving at {:.3g} m/s, above "
+                            "its max_speed_at_end of {:.3g} m/s (settle longer or damp more)",
+                            spec.name, s.t, worst, speed, spec.max_speed_at_end));
         log_.info("stage '{}' ended at rest: max speed {:.3g} m/s (limit {:.3g} m/s)", spec.name, speed,
                   spec.max_speed_at_end);
     }

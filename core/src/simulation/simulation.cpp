@@ -43,9 +43,8 @@ bool all_finite(const double* __restrict y, Index n) {
 Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
     : scene_(scene), registry_(registry), log_(log) {
     info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml};
-    bulk_ = located_in_scene(scene.bulk, [&] {
-        return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk"));
-    });
+    bulk_ = located_in_scene(
+        scene.bulk, [&] { return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk")); });
     record_plugin(scene.bulk, Kind::bulk_model);
 
     struct Pending {
@@ -98,15 +97,17 @@ void Simulation::check_needed_fields() const {
     const auto unpublished = quantities_.unpublished_fields();
     if (unpublished.empty()) return;
     const auto& missing = unpublished.front();
-    const ComponentSpec* reader = scene_.friction && scene_.friction->path == missing.reader ? &*scene_.friction : nullptr;
+    const ComponentSpec* reader =
+        scene_.friction && scene_.friction->path == missing.reader ? &*scene_.friction : nullptr;
     for (const auto& l : scene_.loaders)
         if (l.path == missing.reader) reader = &l;
-    throw InputError(Diagnostic{reader ? reader->where : scene_.bulk.where, missing.reader,
-                                fmt::format("{} reads the field '{}' over node set '{}', which no effect of this scene "
-                                            "computes: add the effect that publishes it (share/docs/glossary.md lists who "
-                                            "publishes each quantity)",
-                                            reader ? reader->type : missing.reader, missing.name, missing.node_set)}
-                         .format());
+    throw InputError(
+        Diagnostic{reader ? reader->where : scene_.bulk.where, missing.reader,
+                   fmt::format("{} reads the field '{}' over node set '{}', which no effect of this scene "
+                               "computes: add the effect that publishes it (share/docs/glossary.md lists who "
+                               "publishes each quantity)",
+                               reader ? reader->type : missing.reader, missing.name, missing.node_set)}
+            .format());
 }
 
 Simulation::~Simulation() = default;
@@ -150,8 +151,8 @@ void Simulation::check_stability(const StageInfo& stage) {
         log_.warn("{}", message);
         return;
     }
-    log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s",
-              e.dt_limit, e.lambda_max, e.limiting_effect, dt);
+    log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s", e.dt_limit,
+              e.lambda_max, e.limiting_effect, dt);
     if (dt <= e.dt_limit) return;
     const std::string message = fmt::format(
         "stage '{}': the time step dt = {:.3g} s is above the estimated stable step {:.3g} s of the {} integrator "
@@ -180,9 +181,10 @@ void Simulation::check_bounded() const {
     Index node = 0;
     const double dx = (s.x - body.x0).abs().max((s.z - body.z0).abs()).maxCoeff(&node);
     if (dx > limit)
-        throw RunError(fmt::format("step {}, t = {:.9g} s: block {} has moved {:.3g} m from its reference position, "
-                                   "more than {} times the slider size: the run is unstable (time step too large?)",
-                                   system_->step_index(), system_->time(), node, dx, runaway_factor));
+        throw RunError(
+            fmt::format("step {}, t = {:.9g} s: block {} has moved {:.3g} m from its reference position, "
+                        "more than {} times the slider size: the run is unstable (time step too large?)",
+                        system_->step_index(), system_->time(), node, dx, runaway_factor));
 }
 
 bool Simulation::reached(double t_end) const {

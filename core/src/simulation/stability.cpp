@@ -19,7 +19,8 @@ using Map = std::function<void(const Eigen::VectorXd& u, Eigen::VectorXd& out)>;
 double dominant_growth(const Map& apply, Index size) {
     constexpr int iterations = 160, averaged = 60;
     Eigen::VectorXd u(size), au(size);
-    for (Index i = 0; i < size; ++i) u(i) = (i % 2 ? 1.0 : -1.0) * (1.0 + 0.37 * std::sin(1.3 * i));  // not an eigenvector
+    for (Index i = 0; i < size; ++i)
+        u(i) = (i % 2 ? 1.0 : -1.0) * (1.0 + 0.37 * std::sin(1.3 * i));  // not an eigenvector
     u.normalize();
     double log_growth = 0;
     for (int k = 0; k < iterations; ++k) {

@@ -26,8 +26,10 @@ System::System(const Body& body, Index aux_size)
 
 void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in, std::string label) {
     std::vector<Effect*> parts = effect->parts();
-    if (parts.empty()) parts = {effect.get()};
-    else label.clear();  // each part is labelled by its own key
+    if (parts.empty())
+        parts = {effect.get()};
+    else
+        label.clear();  // each part is labelled by its own key
     for (std::size_t k = 0; k < parts.size(); ++k) {
         std::string name = label.empty() ? parts[k]->key() : label;
         if (name.empty()) name = "effect_" + std::to_string(parts_.size() + k);
@@ -196,8 +198,9 @@ void System::activate(const StageInfo* stage) {
     active_.clear();
     active_parts_.clear();
     for (const Slot& slot : slots_) {
-        const bool active = !stage || slot.active_in.empty() ||
-                            std::find(slot.active_in.begin(), slot.active_in.end(), stage->name) != slot.active_in.end();
+        const bool active =
+            !stage || slot.active_in.empty() ||
+            std::find(slot.active_in.begin(), slot.active_in.end(), stage->name) != slot.active_in.end();
         if (!active) continue;
         active_.push_back(&slot);
         for (std::size_t k = slot.first_part; k < slot.first_part + slot.part_count; ++k) active_parts_.push_back(k);

@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
         const fl::RunInfo run_info;
         fl::Context ctx{log, 0, &body, &quantities, nullptr, "observers[0]"};
         {
-            auto observer = registry.create<fl::Observer>("max_speed_csv",
-                                                          {{"file_name", std::string("speed.csv")}}, ctx);
+            auto observer =
+                registry.create<fl::Observer>("max_speed_csv", {{"file_name", std::string("speed.csv")}}, ctx);
             const fl::RunView view{system, body, system.state(), quantities, stage, 7, output, run_info, log};
             observer->begin(view);
             observer->observe(view);

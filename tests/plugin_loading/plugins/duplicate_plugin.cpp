@@ -19,8 +19,7 @@ void register_types(frictionlab::Registry& registry) {
 #if defined(DUPLICATE_TWICE)
     try {
         registry.add<Law>();
-    } catch (...) {
-    }
+    } catch (...) {}
 #endif
 }
 }  // namespace

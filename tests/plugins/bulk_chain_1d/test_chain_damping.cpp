@@ -13,7 +13,9 @@ TEST(ChainDamping, ResistsRelativeMotionOfNeighboursOnly) {
     const double eta = 7.0;
     ChainDamping damping(6, eta);
     // Rigid sliding and any vertical motion: no force.
-    EXPECT_EQ(velocity_forces(damping, Eigen::ArrayXd::Constant(6, 0.3), Eigen::ArrayXd::LinSpaced(6, -1, 2)).cwiseAbs().maxCoeff(),
+    EXPECT_EQ(velocity_forces(damping, Eigen::ArrayXd::Constant(6, 0.3), Eigen::ArrayXd::LinSpaced(6, -1, 2))
+                  .cwiseAbs()
+                  .maxCoeff(),
               0.0);
     // v_i = w i: every dashpot is stretched at rate w; interior forces cancel, the ends feel -+ eta w.
     const double w = 0.01;

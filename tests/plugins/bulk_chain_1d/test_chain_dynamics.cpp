@@ -127,8 +127,7 @@ TEST(ChainDynamics, EachBlockSettlesOnTheBaseUnderItsShareOfTheNormalLoad) {
     NormalLoad::Params load;
     load.total_force = 400;
     load.ramp_time = 2e-3;
-    s.system.add_effect(std::make_unique<RigidBaseContact>(RigidBaseContact::Params{},
-                                                           s.services.context(&s.body())));
+    s.system.add_effect(std::make_unique<RigidBaseContact>(RigidBaseContact::Params{}, s.services.context(&s.body())));
     s.system.add_effect(std::make_unique<NormalLoad>(load, s.services.context(&s.body())));
     s.system.begin_stage(StageInfo{"settle", 0, 0.0, 3e-3, false});
     test_support::Rk4 rk4(s.system);

@@ -30,8 +30,8 @@ TEST(ChainSprings, AUniformlyCompressedChainPushesOnlyOnItsEnds) {
     for (Index i = 0; i < 25; ++i) s.y(i) -= i * F / k;
     const Eigen::VectorXd f = s.forces();
     const double tolerance = 1e-9 * F;
-    EXPECT_NEAR(f(0), -F, tolerance);   // the springs push the trailing block back against the load
-    EXPECT_NEAR(f(24), F, tolerance);   // and the leading block forward against its support
+    EXPECT_NEAR(f(0), -F, tolerance);  // the springs push the trailing block back against the load
+    EXPECT_NEAR(f(24), F, tolerance);  // and the leading block forward against its support
     EXPECT_LT(f.segment(1, 23).cwiseAbs().maxCoeff(), tolerance);
     EXPECT_EQ(f.tail(25).cwiseAbs().maxCoeff(), 0.0);  // nothing vertical
     // Shortening (N-1) F/k = F L/(E B H), and strain energy F^2 L/(2 E B H): the bar's.

@@ -77,7 +77,7 @@ TEST(BondDamping, FullVectorDependsOnRelativeVelocityOnly) {
     LatticeFixture f;
     const Eigen::VectorXd y = with_random_velocities(f, f.reference_state(), 0.01, 5);
     Eigen::VectorXd moved = with_random_velocities(f, f.reference_state(), 0.01, 5);
-    moved.head(2 * f.nodes()).array() += 0.003;  // other positions: no effect on a full-vector dashpot
+    moved.head(2 * f.nodes()).array() += 0.003;              // other positions: no effect on a full-vector dashpot
     moved.segment(2 * f.nodes(), f.nodes()).array() += 0.5;  // and a uniform velocity on top
     const Eigen::VectorXd F = f.forces(f.damping(), y), G = f.forces(f.damping(), moved);
     // Adding 0.5 m/s to velocities of 0.01 m/s rounds them to ulp(0.5) = 1.1e-16 m/s.
@@ -90,11 +90,10 @@ TEST(BondDamping, ProjectedModeLeavesRigidRotationFree) {
     // Also at a rotated and translated configuration: only the current bond direction matters.
     for (double phi : {0.0, 0.4}) {
         const double c = std::cos(phi), s = std::sin(phi);
-        const Eigen::VectorXd y =
-            with_rigid_rotation(f, f.displaced([&](double x, double z) {
-                                    return std::pair{c * x - s * z - x + 0.01, s * x + c * z - z};
-                                }),
-                                omega);
+        const Eigen::VectorXd y = with_rigid_rotation(f, f.displaced([&](double x, double z) {
+            return std::pair{c * x - s * z - x + 0.01, s * x + c * z - z};
+        }),
+                                                      omega);
         EXPECT_LE(f.forces(f.damping(), y).cwiseAbs().maxCoeff(), 1e-12 * eta * omega * l) << phi;
     }
 }

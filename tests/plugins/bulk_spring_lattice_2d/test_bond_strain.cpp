@@ -64,7 +64,8 @@ TEST(BondStrain, SeriesMatchesTheClosedFormWithinItsBound) {
     // Near the bound, where the truncation error peaks, and at the smallest strains.
     for (const double delta : {series_bound, -series_bound, std::nextafter(series_bound, 0.0), 1e-300, -1e-12})
         EXPECT_LE(std::abs(TensionSeries(1.0)(delta) - exact_tension(delta, 1.0)),
-                  4 * eps * std::abs(exact_tension(delta, 1.0))) << delta;
+                  4 * eps * std::abs(exact_tension(delta, 1.0)))
+            << delta;
 }
 
 /// The stiffness folded into the coefficients (as the lattice uses it: K and K/2) costs at most one

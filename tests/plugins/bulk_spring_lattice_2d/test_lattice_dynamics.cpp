@@ -119,8 +119,7 @@ double pulse_speed(bool transverse) {
     FreeLattice free(p);
     const Body& b = free.fixture.body();
     const Index n = b.size(), component = transverse ? n : 0;
-    free.system.initial_state().segment(component, n).array() +=
-        1e-7 * (-((b.x0 - x_start) / width).square()).exp();
+    free.system.initial_state().segment(component, n).array() += 1e-7 * (-((b.x0 - x_start) / width).square()).exp();
     const Index station = component + free.fixture.node(static_cast<Index>((x_start + distance) / l + 0.5), p.nz / 2);
     test_support::Rk4 rk4(free.system);
     std::vector<double> u{free.system.y()(station)};
@@ -139,7 +138,7 @@ double pulse_speed(bool transverse) {
 TEST(LatticeDynamics, LongWaveSpeedsAreThoseOfTheElasticConstants) {
     const double E = 3e9, rho = 1180;
     const double c_L = std::sqrt(9 * E / (8 * rho)), c_S = std::sqrt(3 * E / (8 * rho));  // C11 = 9E/8, C44 = 3E/8
-    EXPECT_NEAR(c_L, 1691, 1);  // theory.md A.4
+    EXPECT_NEAR(c_L, 1691, 1);                                                            // theory.md A.4
     EXPECT_NEAR(c_S, 976, 1);
     const double measured_L = pulse_speed(false), measured_S = pulse_speed(true);
     RecordProperty("c_L", fmt::format("{:.1f}", measured_L));

@@ -31,16 +31,18 @@ NodeForce at(const Eigen::VectorXd& f, Index nodes, Index i) { return {f(i), f(n
 void expect_uniaxial_response(const std::string& law, double eps, double tolerance) {
     LatticeFixture f(with_springs(law));
     const double E = 3e9, B = f.body().width, l = f.body().spacing, sigma = E * eps, unit = sigma * B * l;
-    const Eigen::VectorXd F =
-        f.forces(f.springs(), f.displaced([&](double x, double z) { return std::pair{eps * x, -eps / 3 * z}; }));
+    const Eigen::VectorXd F = f.forces(f.springs(), f.displaced([&](double x, double z) {
+        return std::pair{eps * x, -eps / 3 * z};
+    }));
     double leading_total = 0;
     for (Index iz = 0; iz < nz; ++iz)
         for (Index ix = 0; ix < nx; ++ix) {
             const NodeForce n = at(F, f.nodes(), f.node(ix, iz));
             const bool end = ix == 0 || ix == nx - 1, corner = end && (iz == 0 || iz == nz - 1);
             const double side = ix == 0 ? 1.0 : -1.0, up = iz == 0 ? -1.0 : 1.0;
-            const NodeForce expected = !end ? NodeForce{0, 0} : corner ? NodeForce{side * 7 / 8 * unit, up / 8 * unit}
-                                                                       : NodeForce{side * unit, 0};
+            const NodeForce expected = !end     ? NodeForce{0, 0}
+                                       : corner ? NodeForce{side * 7 / 8 * unit, up / 8 * unit}
+                                                : NodeForce{side * unit, 0};
             EXPECT_NEAR(n.x, expected.x, tolerance * unit) << law << " node (" << ix << ", " << iz << ")";
             EXPECT_NEAR(n.z, expected.z, tolerance * unit) << law << " node (" << ix << ", " << iz << ")";
             if (ix == nx - 1) leading_total += n.x;
@@ -91,8 +93,9 @@ TEST(LatticeSprings, SmallStrainRotationActsAsIsotropicCompression) {
     LatticeFixture f(with_springs("small_strain"));
     const double phi = 1e-2, eps = std::cos(phi) - 1;
     const Eigen::VectorXd rotated = f.forces(f.springs(), rigidly_moved(f, phi, 0, 0));
-    const Eigen::VectorXd isotropic =
-        f.forces(f.springs(), f.displaced([&](double x, double z) { return std::pair{eps * x, eps * z}; }));
+    const Eigen::VectorXd isotropic = f.forces(f.springs(), f.displaced([&](double x, double z) {
+        return std::pair{eps * x, eps * z};
+    }));
     const double K = f.body().bond_stiffness, l = f.body().spacing;
     EXPECT_LE((rotated - isotropic).cwiseAbs().maxCoeff(), position_roundoff_force(K, 0.12));
     // A mid-height node of the leading edge: straight spring K l eps plus two diagonals K l eps/2
@@ -112,8 +115,8 @@ Eigen::VectorXd per_bond_reference(const LatticeFixture& f, const Eigen::VectorX
         const Eigen::Vector2d d(y(j) - y(i), y(n + j) - y(n + i));
         const double l = ref.norm(), k = l > 1.2 * b.spacing ? b.bond_stiffness / 2 : b.bond_stiffness;
         const Eigen::Vector2d e = ref / l;
-        const Eigen::Vector2d Fij = geometric ? Eigen::Vector2d(k * (d.norm() - l) * d / d.norm())
-                                              : Eigen::Vector2d(k * (d - ref).dot(e) * e);
+        const Eigen::Vector2d Fij =
+            geometric ? Eigen::Vector2d(k * (d.norm() - l) * d / d.norm()) : Eigen::Vector2d(k * (d - ref).dot(e) * e);
         F(i) += Fij.x();
         F(n + i) += Fij.y();
         F(j) -= Fij.x();

@@ -66,8 +66,7 @@ TEST(SpringLattice2d, ConnectivityCoversEveryBondOnceAndCellsAreCounterClockwise
     ASSERT_EQ(b.cells.size(), (nx - 1) * (nz - 1));
     for (const auto& c : b.cells) {
         double twice_area = 0;  // shoelace: positive for counter-clockwise in the x-z plane
-        for (int k = 0; k < 4; ++k)
-            twice_area += b.x0(c[k]) * b.z0(c[(k + 1) % 4]) - b.x0(c[(k + 1) % 4]) * b.z0(c[k]);
+        for (int k = 0; k < 4; ++k) twice_area += b.x0(c[k]) * b.z0(c[(k + 1) % 4]) - b.x0(c[(k + 1) % 4]) * b.z0(c[k]);
         EXPECT_NEAR(twice_area, 2 * b.spacing * b.spacing, 1e-15);
     }
 }
@@ -85,8 +84,8 @@ TEST(SpringLattice2d, NonSquareCellsAreRejectedWithBothSpacings) {
 
 TEST(SpringLattice2d, SpecDeclaresEveryKeyWithDocAndDefaults) {
     const auto spec = SpringLattice2d::spec();
-    const std::vector<std::string> keys{"length", "height",         "width",        "mass",   "youngs_modulus",
-                                        "nx",     "nz",             "damping_factor", "damping_mode", "springs"};
+    const std::vector<std::string> keys{"length", "height", "width",          "mass",         "youngs_modulus",
+                                        "nx",     "nz",     "damping_factor", "damping_mode", "springs"};
     ASSERT_EQ(spec.params().size(), keys.size());
     for (std::size_t i = 0; i < keys.size(); ++i) {
         EXPECT_EQ(spec.params()[i].key, keys[i]);

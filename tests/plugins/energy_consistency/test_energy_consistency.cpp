@@ -78,7 +78,8 @@ TEST(EnergyConsistency, BaseContactForceIsMinusTheGradientOfItsEnergy) {
 TEST(EnergyConsistency, DrivingSpringForceIsMinusTheGradientOfItsEnergy) {
     const double u = 1e-6;
     RandomLatticeState s(u);
-    for (const auto& [height, attachment] : {std::pair{1e-3, DrivingSpring::Attach::node}, std::pair{1.25e-3, DrivingSpring::Attach::interpolated}}) {
+    for (const auto& [height, attachment] :
+         {std::pair{1e-3, DrivingSpring::Attach::node}, std::pair{1.25e-3, DrivingSpring::Attach::interpolated}}) {
         DrivingSpring::Params p;
         p.height = height;
         p.attachment = attachment;

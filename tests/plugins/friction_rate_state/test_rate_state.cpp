@@ -42,7 +42,8 @@ struct Slider {
         const double h = t / steps;
         auto rate = [&](double p) { return evaluate(v, p).second; };
         for (int n = 0; n < steps; ++n) {
-            const double k1 = rate(psi), k2 = rate(psi + h / 2 * k1), k3 = rate(psi + h / 2 * k2), k4 = rate(psi + h * k3);
+            const double k1 = rate(psi), k2 = rate(psi + h / 2 * k1), k3 = rate(psi + h / 2 * k2),
+                         k4 = rate(psi + h * k3);
             psi += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
         }
         return psi;
@@ -156,8 +157,10 @@ TEST(RateState, WritesOnlyItsOwnAuxSlice) {
     ForceView f = forces_of(dy, layout);
     s.law->add_forces(view_of(y, layout, 0), f);
     for (Index k = 0; k < total; ++k) {
-        if (k == before) EXPECT_DOUBLE_EQ(f.aux_rate[k], 7.0 + s.law->state_rate(1e-3, psi));  // added, not set
-        else EXPECT_EQ(f.aux_rate[k], 7.0) << "aux slot " << k;
+        if (k == before)
+            EXPECT_DOUBLE_EQ(f.aux_rate[k], 7.0 + s.law->state_rate(1e-3, psi));  // added, not set
+        else
+            EXPECT_EQ(f.aux_rate[k], 7.0) << "aux slot " << k;
     }
     Eigen::ArrayXd aux = Eigen::ArrayXd::Constant(total, -1.0);
     s.law->initialise_aux(aux);

@@ -57,7 +57,7 @@ TEST(Coulomb, HoldsAtStaticThresholdAndSlipsJustAbove) {
     const double at = threshold_position(), above = std::nextafter(at, 1.0);
     r.move(0, at, 0.1);
     EXPECT_EQ(r.mode(0), Mode::stuck);
-    EXPECT_EQ(r.force(0), -0.4 * exact_normal);  // exactly mu_s f_N, still held
+    EXPECT_EQ(r.force(0), -0.4 * exact_normal);                         // exactly mu_s f_N, still held
     EXPECT_EQ(r.stage_force(0, above, 0.1), -exact_stiffness * above);  // frozen within a step
     r.move(0, above, 0.1);
     EXPECT_EQ(r.mode(0), Mode::slipping);
@@ -75,7 +75,7 @@ TEST(Coulomb, KineticForceOpposesVelocityAndFollowsStageNormalForce) {
     Rig r = pressed();
     break_forward(r);
     const double x = r.x(0);
-    EXPECT_EQ(r.force(0), -0.17 * exact_normal);  // tanh(0.1 / 1e-6) == 1
+    EXPECT_EQ(r.force(0), -0.17 * exact_normal);                       // tanh(0.1 / 1e-6) == 1
     EXPECT_EQ(r.stage_force(0, x + 1e-3, 0.5), -0.17 * exact_normal);  // independent of position
     EXPECT_EQ(r.stage_force(0, x, -0.5), 0.17 * exact_normal);
     EXPECT_EQ(r.stage_force(0, x, 0), 0);

@@ -32,8 +32,7 @@ inline ThreeStateJunctions::Params exact_params() {
 inline constexpr double exact_dt = 0x1p-16;
 
 struct Rig {
-    explicit Rig(const ThreeStateJunctions::Params& params, Index blocks = 3, std::uint64_t seed = 1,
-                 double x0 = 0)
+    explicit Rig(const ThreeStateJunctions::Params& params, Index blocks = 3, std::uint64_t seed = 1, double x0 = 0)
         : log("three_state_junctions_test") {
         body.x0 = Eigen::ArrayXd::Constant(blocks, x0);
         body.z0 = Eigen::ArrayXd::LinSpaced(blocks, 0, 1);

@@ -84,8 +84,8 @@ TEST(BlockJunctions, BreakingTestIsStrictAndUsesTheExtremes) {
     b.refresh_pinned(1e-6);
     const double threshold = constants.k_s * 2e-6;
     EXPECT_FALSE(b.pinned_beyond(2e-6, threshold * (1 + 1e-12)));
-    EXPECT_TRUE(b.pinned_beyond(2.1e-6, threshold));             // the old one, forwards
-    EXPECT_TRUE(b.pinned_beyond(1e-6 - 2.1e-6, threshold));      // the young one, backwards
+    EXPECT_TRUE(b.pinned_beyond(2.1e-6, threshold));         // the old one, forwards
+    EXPECT_TRUE(b.pinned_beyond(1e-6 - 2.1e-6, threshold));  // the young one, backwards
     EXPECT_DOUBLE_EQ(b.max_pinned_force(2e-6), threshold);
 }
 

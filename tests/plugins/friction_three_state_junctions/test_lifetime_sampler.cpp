@@ -78,8 +78,8 @@ TEST(LifetimeSampler, DrawsAreKeyedAndCountersAdvance) {
     EXPECT_GE(a, 1u);
     EXPECT_NE(s.sliding(3, 17, a), first);  // the next draw of the same junction is new
     std::uint64_t c = 0, d = 0, e = 0;
-    EXPECT_NE(s.sliding(4, 17, c), first);          // another block
-    EXPECT_NE(s.dislocated(3, 17, d), first);       // another purpose
+    EXPECT_NE(s.sliding(4, 17, c), first);                                               // another block
+    EXPECT_NE(s.dislocated(3, 17, d), first);                                            // another purpose
     EXPECT_NE(LifetimeSampler(2, {2e-4, 6e-5}, {1e-3, 3e-4}).sliding(3, 17, e), first);  // another seed
 }
 

@@ -23,8 +23,8 @@ using testing::exact_params;
 using testing::Rig;
 using Params = ThreeStateJunctions::Params;
 
-constexpr int steps_per_sliding = 16;      // t_s / dt in exact_params()
-constexpr int steps_per_dislocated = 64;   // t_d / dt
+constexpr int steps_per_sliding = 16;     // t_s / dt in exact_params()
+constexpr int steps_per_dislocated = 64;  // t_d / dt
 
 /// f^d(phi) of Eq. 11 for one junction, computed independently of the law's split into cap + f^n.
 double dislocated_force(double p, double tan_phi) { return (0.35 + tan_phi) / (1 - 0.35 * tan_phi) * p; }
@@ -443,7 +443,8 @@ TEST(ThreeStateJunctions, AggregatePinnedForceEqualsPerJunctionSumOverRandomHist
         if (n == 500) r.stage(true);
         for (Index i = 0; i < 4; ++i) {
             const double target = n < 500 ? 0.05 : 0.05 + lambda * (1 + 3 * std::sin(n * 0.01 + i));
-            xs[static_cast<std::size_t>(i)] += 0.05 * (target - xs[static_cast<std::size_t>(i)]) + (n < 500 ? 0.05e-6 : 0.3e-6) * jiggle(rng);
+            xs[static_cast<std::size_t>(i)] +=
+                0.05 * (target - xs[static_cast<std::size_t>(i)]) + (n < 500 ? 0.05e-6 : 0.3e-6) * jiggle(rng);
             (*r.normal)(i) = std::max(0.0, (n < 400 ? n * 0.25 : 100.0) + load(rng)) * r.p;
         }
         r.step(xs, 2e-7);

@@ -122,7 +122,7 @@ TEST(TwoStateJunctions, RepinsUnloadedAtTheCurrentPositionAfterTheSlippingTime) 
     r.move(0, x);
     EXPECT_EQ(r.t, broke + 0x1p-12);
     EXPECT_EQ(r.law->pinned(0), 4);
-    EXPECT_EQ(r.force(0), 0.0);                       // unloaded ...
+    EXPECT_EQ(r.force(0), 0.0);                               // unloaded ...
     EXPECT_EQ(r.force(0, x + 0x1p-20), -4 * 1024 * 0x1p-20);  // ... and anchored at x
     EXPECT_EQ(r.law->next_event_time(), std::numeric_limits<double>::infinity());
 }

@@ -54,26 +54,26 @@ TEST(DormandPrinceScene, ReproducesTheRk4LoadingCurveAtDefaultTolerances) {
     EXPECT_LT(worst, 1e-4 * peak) << "largest difference of the driving force, N";
     EXPECT_NEAR(dp.unpinned, rk4.unpinned, 0.02 * rk4.unpinned);
     std::cout << "rk4: " << rk4.steps << " steps, " << rk4.evaluations << " evaluations; dormand_prince: " << dp.steps
-              << " steps, " << dp.evaluations << " evaluations; largest driving-force difference " << worst
-              << " N of " << peak << " N\n";
+              << " steps, " << dp.evaluations << " evaluations; largest driving-force difference " << worst << " N of "
+              << peak << " N\n";
     ::testing::Test::RecordProperty("dormand_prince_evaluations", std::to_string(dp.evaluations));
     ::testing::Test::RecordProperty("rk4_evaluations", std::to_string(rk4.evaluations));
 }
 
 /// Bad tolerances and step bounds are scene errors, all reported at once, each naming its key.
 TEST(DormandPrinceScene, BadParametersAreRefusedWithClearMessages) {
-    const auto r = testing::frictionlab("check --set integrator.rtol=-1 --set integrator.atol_velocity=0 --set "
-                                        "integrator.safety=1 --set integrator.dt_min=1e-3 --set integrator.dt=2e-7 " +
-                                            std::string(DOPRI_SCENES) + "/fast_loading.yaml",
-                                        testing::work_directory());
-    EXPECT_EQ(r.code, 2) << r.output;
-    for (const char* part :
-         {"integrator.rtol: must be >= 0, got -1", "integrator.atol_velocity: must be > 0, got 0",
-          "integrator.safety: must be < 1, got 1", "integrator.dt: unknown key 'dt'"})
-        EXPECT_NE(r.output.find(part), std::string::npos) << part << " missing in: " << r.output;
-    const auto bounds = testing::frictionlab(
-        "check --set integrator.dt_min=1e-3 " + std::string(DOPRI_SCENES) + "/fast_loading.yaml",
+    const auto r = testing::frictionlab(
+        "check --set integrator.rtol=-1 --set integrator.atol_velocity=0 --set "
+        "integrator.safety=1 --set integrator.dt_min=1e-3 --set integrator.dt=2e-7 " +
+            std::string(DOPRI_SCENES) + "/fast_loading.yaml",
         testing::work_directory());
+    EXPECT_EQ(r.code, 2) << r.output;
+    for (const char* part : {"integrator.rtol: must be >= 0, got -1", "integrator.atol_velocity: must be > 0, got 0",
+                             "integrator.safety: must be < 1, got 1", "integrator.dt: unknown key 'dt'"})
+        EXPECT_NE(r.output.find(part), std::string::npos) << part << " missing in: " << r.output;
+    const auto bounds =
+        testing::frictionlab("check --set integrator.dt_min=1e-3 " + std::string(DOPRI_SCENES) + "/fast_loading.yaml",
+                             testing::work_directory());
     EXPECT_EQ(bounds.code, 2) << bounds.output;
     EXPECT_NE(bounds.output.find("integrator.dt_min: dt_min = 0.001 s must be below dt_max = 1e-05 s"),
               std::string::npos)

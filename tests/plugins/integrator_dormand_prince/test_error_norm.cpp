@@ -34,7 +34,7 @@ TEST(ErrorNorm, VelocitiesAndAuxUseTheLargerOfTheStepEndsAndTheirOwnAtol) {
     TwoNodes s;
     s.y0(6) = -2e-3;  // vz of block 0 at the start; scale 1e-6 + 1e-3 * 2e-3 = 3e-6 m/s
     s.error(6) = 1.5e-6;
-    s.y1(8) = 1.0;      // the aux variable at the end; scale 1e-4 + 1e-3 = 1.1e-3
+    s.y1(8) = 1.0;  // the aux variable at the end; scale 1e-4 + 1e-3 = 1.1e-3
     s.error(8) = 1.1e-3;
     const auto r = s.norm(s.error, s.y0, s.y1);
     EXPECT_NEAR(r.value, 1.0, 1e-12);

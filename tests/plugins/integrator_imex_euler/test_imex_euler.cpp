@@ -108,7 +108,7 @@ struct Block {
 
 TEST(ImexEuler, ARateStateBlockCreepsStablyAtTheLi2020Step) {
     const double V = 1e-9, h = 2e-7;  // creep: h f_N a / (m V) = 5e5, far beyond any explicit scheme
-    Block block(V, 1.5 * V, V);  // kicked: the friction brings it back to V within a step
+    Block block(V, 1.5 * V, V);       // kicked: the friction brings it back to V within a step
     const RateState::Params p;
     EXPECT_GT(h * Block::normal * p.a / (Block::mass * V), 1e5);
     // The stable-step estimate sees the friction's stiffness unless the integrator takes it implicitly.

@@ -33,7 +33,8 @@ LoadingRun run_loading(const std::filesystem::path& work, const std::string& ove
 
 TEST(QuasiStaticScenes, StuckLoadingCurveMatchesRk4WithinTheTarget) {
     const auto work = testing::work_directory();
-    const LoadingRun hybrid = run_loading(work, ""), rk4 = run_loading(work, "--set 'integrator={type: rk4, dt: 2.0e-7}'");
+    const LoadingRun hybrid = run_loading(work, ""),
+                     rk4 = run_loading(work, "--set 'integrator={type: rk4, dt: 2.0e-7}'");
     const auto& t = hybrid.curve.at("time");
     ASSERT_EQ(t.size(), rk4.curve.at("time").size()) << "the observer's samples land on the same times";
     // The hybrid crossed the stuck loading in quiet steps, one per sample (every 10 us).

@@ -83,7 +83,8 @@ TEST(QuasiStaticStiffness, BaseContactStiffensOnlyTheNodesInContact) {
 
 TEST(QuasiStaticStiffness, DrivingSpringStiffensItsDrivingPoint) {
     DisplacedLattice s(1e-6, "geometric");
-    for (const auto& [height, attachment] : {std::pair{1e-3, DrivingSpring::Attach::node}, std::pair{1.25e-3, DrivingSpring::Attach::interpolated}}) {
+    for (const auto& [height, attachment] :
+         {std::pair{1e-3, DrivingSpring::Attach::node}, std::pair{1.25e-3, DrivingSpring::Attach::interpolated}}) {
         DrivingSpring::Params p;
         p.height = height;
         p.attachment = attachment;

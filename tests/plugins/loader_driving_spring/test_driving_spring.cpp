@@ -76,8 +76,8 @@ TEST(DrivingSpring, AReversalPeriodMovesTheFarEndAsATriangleWave) {
     s.begin_stage(0.3);
     const double Ks = 0.8e6, V = 1e-4;
     // elapsed time -> far-end position: up, peak at T/2, down, back at 0 at T, up again, and so on.
-    const std::pair<double, double> expected[] = {{0.0, 0.0},     {0.005, 5e-7},  {0.01, 1e-6},   {0.015, 5e-7},
-                                                  {0.02, 0.0},    {0.025, 5e-7},  {0.047, 7e-7},  {0.053, 7e-7},
+    const std::pair<double, double> expected[] = {{0.0, 0.0},     {0.005, 5e-7},  {0.01, 1e-6},  {0.015, 5e-7},
+                                                  {0.02, 0.0},    {0.025, 5e-7},  {0.047, 7e-7}, {0.053, 7e-7},
                                                   {1.0003, 3e-8}, {1.0197, 3e-8}, {4.01, 1e-6}};
     for (const auto& [elapsed, far] : expected) {
         SCOPED_TRACE(elapsed);
@@ -165,7 +165,8 @@ TEST(DrivingSpring, NodeAttachmentRejectsAHeightBetweenNodes) {
         for (const char* part : {"height", "0.004", "0.0025", "0.005", "interpolated"})
             EXPECT_NE(what.find(part), std::string::npos) << part << " missing in: " << what;
     }
-    EXPECT_THROW(DrivingSpring(at_height(0.03, DrivingSpring::Attach::interpolated), services.context(&lattice.body())), InputError);
+    EXPECT_THROW(DrivingSpring(at_height(0.03, DrivingSpring::Attach::interpolated), services.context(&lattice.body())),
+                 InputError);
     // Within 1e-9 l_s of a node counts as the node.
     EXPECT_NO_THROW(DrivingSpring(at_height(0.005 + 1e-13), services.context(&lattice.body())));
 }

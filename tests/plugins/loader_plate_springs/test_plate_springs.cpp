@@ -56,8 +56,8 @@ TEST(PlateSprings, PullsEveryBlockOfAChainBy_kp_TimesItsLagBehindThePlate) {
     EXPECT_NEAR(s.scalar("driver_position"), plate, 1e-18);
     EXPECT_NEAR(s.scalar("driving_displacement"), lag.mean(), 1e-18);
     // The published scalars are those of a single spring of stiffness N k_p.
-    EXPECT_NEAR(s.scalar("driving_force"),
-                5 * 2e6 * (s.scalar("driver_position") - s.scalar("driving_displacement")), 1e-9);
+    EXPECT_NEAR(s.scalar("driving_force"), 5 * 2e6 * (s.scalar("driver_position") - s.scalar("driving_displacement")),
+                1e-9);
     // E = 1/2 k_p sum lag_j^2 with lag_j = V (t - t0) - (x_j - x_j0).
     const double energy = 0.5 * 2e6 * (plate - lag).square().sum();
     EXPECT_NEAR(s.plate.potential_energy(view_of(s.y, s.layout, 0.3 + elapsed)), energy, 1e-12 * energy);

@@ -148,8 +148,10 @@ TEST(EnergyBalance, ColumnsMatchTheClosedFormOfOneStep) {
     for (const auto& [name, values] : expected) {
         for (std::size_t row = 0; row < 2; ++row) {
             const double want = row ? values.second : values.first, got = at(name, row);
-            if (std::isnan(want)) EXPECT_TRUE(std::isnan(got)) << name;
-            else EXPECT_NEAR(got, want, 1e-9 * std::abs(want)) << name << " row " << row;
+            if (std::isnan(want))
+                EXPECT_TRUE(std::isnan(got)) << name;
+            else
+                EXPECT_NEAR(got, want, 1e-9 * std::abs(want)) << name << " row " << row;
         }
     }
     // The two readings of the balance agree: kinetic + stored + dissipated - input is the residual.

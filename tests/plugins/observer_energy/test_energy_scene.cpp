@@ -27,7 +27,8 @@ const std::string scene_file = std::string(ENERGY_SCENES) + "/energy_balance.yam
 
 /// `frictionlab run -q --overwrite --allow-unstable-step <scene> <args>` in dir; returns the energy table.
 testing::Columns run_cli(const fs::path& dir, const std::string& args, const std::string& output) {
-    const auto r = testing::frictionlab("run -q --overwrite --allow-unstable-step '" + scene_file + "' --set output=" + output + " " + args, dir);
+    const auto r = testing::frictionlab(
+        "run -q --overwrite --allow-unstable-step '" + scene_file + "' --set output=" + output + " " + args, dir);
     EXPECT_EQ(r.code, 0) << r.output;
     return testing::read_csv(dir / output / "energy.csv");
 }
@@ -43,8 +44,8 @@ class EnergyScene : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         // ctest runs each test of the suite in its own process, concurrently: one folder per process.
-        const fs::path dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "work" / "EnergyScene" /
-                             std::to_string(getpid());
+        const fs::path dir =
+            fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "work" / "EnergyScene" / std::to_string(getpid());
         fs::remove_all(dir);
         fs::create_directories(dir);
         coarse_ = new testing::Columns(run_cli(dir, "", "dt"));
@@ -163,8 +164,10 @@ std::vector<bool> work_accounting_seen(bool with_energy_observer) {
     EXPECT_EQ(spec.type, "energy");
     spec.type = "work_probe";
     spec.values.clear();
-    if (with_energy_observer) s.scene.observers.push_back(spec);
-    else s.scene.observers = {spec};
+    if (with_energy_observer)
+        s.scene.observers.push_back(spec);
+    else
+        s.scene.observers = {spec};
     s.scene.output_directory = testing::work_directory() / "out";
     run_scene(s.scene, s.registry, s.log, RunOptions{true, true, false});
     return seen;

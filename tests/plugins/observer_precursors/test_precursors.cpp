@@ -110,7 +110,8 @@ protected:
     }
 
     RunView view() {
-        return RunView{*system_, body_, system_->state(), quantities_, stage_, system_->step_index(), dir_, info_, log_};
+        return RunView{*system_, body_, system_->state(), quantities_, stage_, system_->step_index(), dir_,
+                       info_,    log_};
     }
 
     /// Moves to time t with the given blocks sliding (all their junctions), and observes.
@@ -168,7 +169,7 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
     observe_at(observer, 3 * dt, {0, 1, 2});
     observe_at(observer, 4 * dt, {2});
     for (int k = 5; k <= 300; ++k) observe_at(observer, k * dt, {});  // 3 ms quiet: the event ends
-    observe_at(observer, 301 * dt, {3, 4});                          // a second event, open at the end
+    observe_at(observer, 301 * dt, {3, 4});                           // a second event, open at the end
 
     // As if the run were killed now: the finished event is on disk, whole.
     CsvFile before_end = read_csv(dir_ / "precursors.csv");
@@ -201,10 +202,11 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
     EXPECT_DOUBLE_EQ(column(fronts, 2, "distance"), 2 * ls);
 
     const std::string summary = read_text(dir_ / "precursors_summary.yaml");
-    for (const char* expected : {"run_ended: true\n", "events: 2\n", "global_slip_seen: false\n",
-                                 "precursors_before_first_global_slip: 2\n", "global_static_coefficient: null\n",
-                                 "run:\n  framework: frictionlab\n  version: 9.8.7-test\n  scene_file: scene.yaml\n  scene_hash: feedface\n"
-                                 "  seed: 42\n  plugins: observer_precursors 0.1.0\n"})
+    for (const char* expected :
+         {"run_ended: true\n", "events: 2\n", "global_slip_seen: false\n", "precursors_before_first_global_slip: 2\n",
+          "global_static_coefficient: null\n",
+          "run:\n  framework: frictionlab\n  version: 9.8.7-test\n  scene_file: scene.yaml\n  scene_hash: feedface\n"
+          "  seed: 42\n  plugins: observer_precursors 0.1.0\n"})
         EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
     EXPECT_FALSE(fs::exists(dir_ / "precursors_summary.yaml.tmp"));
 }

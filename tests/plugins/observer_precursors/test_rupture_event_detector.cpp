@@ -92,8 +92,10 @@ TEST(RuptureEventDetector, APrecursorFromTheTrailingEdge) {
     EXPECT_NEAR(e.extent_over_length, (x(9) + ls / 2) / length, 1e-12);
     EXPECT_NEAR(e.min_x, 0, 1e-15);
     for (int b = 0; b < blocks; ++b) {
-        if (b <= 9) EXPECT_NEAR(e.first_rupture[b], t0 + b * dt, 1e-12) << b;
-        else EXPECT_TRUE(std::isnan(e.first_rupture[b])) << b;
+        if (b <= 9)
+            EXPECT_NEAR(e.first_rupture[b], t0 + b * dt, 1e-12) << b;
+        else
+            EXPECT_TRUE(std::isnan(e.first_rupture[b])) << b;
     }
     EXPECT_NEAR(e.front_speed, x(9) / (9 * dt), 1e-6) << "farthest distance over its delay";
     EXPECT_NEAR(e.crossing_speed, (x(9) - x(5)) / (4 * dt), 1e-6) << "a steady front: the same speed on its far half";

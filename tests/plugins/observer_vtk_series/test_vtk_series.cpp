@@ -138,7 +138,8 @@ protected:
     }
 
     RunView view() {
-        return RunView{*system_, body_, system_->state(), quantities_, stage_, system_->step_index(), dir_, info_, log_};
+        return RunView{*system_, body_, system_->state(), quantities_, stage_, system_->step_index(), dir_,
+                       info_,    log_};
     }
 
     /// Moves the system to snapshot k (a different time, displacement, velocity and junction counts
@@ -153,8 +154,10 @@ protected:
             y(3 * n + i) = -0.25 * i;
         }
         const double t = 0.25 * k;
-        if (k == 0) system_->initial_state() = y;
-        else system_->accept(t, y);
+        if (k == 0)
+            system_->initial_state() = y;
+        else
+            system_->accept(t, y);
         // Junction counts per interface block; blocks 1 and 4 have none, so no pinned fraction.
         const double pinned[] = {3, 0, 1, 2, 0}, sliding[] = {1, 0, 1, 0, 0}, dislocated[] = {0, 0, 2, 2, 0};
         if (!counts_.empty())
@@ -188,7 +191,8 @@ protected:
             velocity.second.insert(velocity.second.end(), {y(2 * n + i), y(3 * n + i), 0});
             force.second.insert(force.second.end(), {-TestEffect::k * u, -TestEffect::w, 0});
             const Index ix = i % nx, iz = i / nx;
-            role.second.push_back((iz == nz - 1 ? 1 : 0) | (iz == 0 ? 2 : 0) | (ix == 0 ? 4 : 0) | (ix == nx - 1 ? 8 : 0));
+            role.second.push_back((iz == nz - 1 ? 1 : 0) | (iz == 0 ? 2 : 0) | (ix == 0 ? 4 : 0) |
+                                  (ix == nx - 1 ? 8 : 0));
             normal.second.push_back(iz == 0 ? 10.0 * (ix + 1) + t : nan);
         }
         if (!counts_.empty()) {
@@ -205,7 +209,10 @@ protected:
         // every cell has its exact gradient.
         const double a = 1e-3 * (k + 1), b = 2e-4 * k, l = body_.spacing;
         e.cell_strain = {{"strain_xx", a / l}, {"strain_zz", -b * nx / l}, {"strain_xz", 0.5 * (a * nx / l - b / l)}};
-        e.numbers = {{"TIME", t}, {"TimeValue", t}, {"STEP", double(e.step)}, {"stage_index", stage_.index},
+        e.numbers = {{"TIME", t},
+                     {"TimeValue", t},
+                     {"STEP", double(e.step)},
+                     {"stage_index", stage_.index},
                      {"driving_force", 1.5 + t}};
         return e;
     }
@@ -216,11 +223,12 @@ protected:
         const std::string plugins = "observer_vtk_series 0.1.0, friction_test 1.2";
         out << fmt::format("{{\"collection\": \"lattice.pvd\", \"points\": {}, \"cells\": {}, \"cell_type\": {},\n",
                            body_.size(), cells, cell_type);
-        out << fmt::format("\"strings\": {{\"framework\": [\"frictionlab\"], \"version\": {}, \"scene_hash\": {}, \"seed\": {}, \"plugins\": {}, "
-                           "\"stage\": {}}},\n",
-                           json_strings({info_.framework_version}), json_strings({info_.scene_hash}),
-                           json_strings({std::to_string(info_.seed)}), json_strings({plugins}),
-                           json_strings({stage_.name}));
+        out << fmt::format(
+            "\"strings\": {{\"framework\": [\"frictionlab\"], \"version\": {}, \"scene_hash\": {}, \"seed\": {}, "
+            "\"plugins\": {}, "
+            "\"stage\": {}}},\n",
+            json_strings({info_.framework_version}), json_strings({info_.scene_hash}),
+            json_strings({std::to_string(info_.seed)}), json_strings({plugins}), json_strings({stage_.name}));
         out << "\"snapshots\": [\n";
         for (std::size_t s = 0; s < expected_.size(); ++s) {
             const Expected& e = expected_[s];
@@ -257,7 +265,8 @@ protected:
 VtkSeries make_observer(VtkSeries::Cells cells = VtkSeries::Cells::quads, bool compress = true,
                         spdlog::logger* log = nullptr) {
     static spdlog::logger quiet("test");
-    return VtkSeries({"lattice", cells, compress}, Context{log ? *log : quiet, 0, nullptr, nullptr, nullptr, "observer"});
+    return VtkSeries({"lattice", cells, compress},
+                     Context{log ? *log : quiet, 0, nullptr, nullptr, nullptr, "observer"});
 }
 
 struct CollectionEntry {
@@ -289,8 +298,10 @@ void expect_values(const std::string& what, const std::vector<double>& expected,
     for (std::size_t i = 0; i < expected.size(); ++i) {
         const double v = actual->GetComponent(static_cast<vtkIdType>(i) / actual->GetNumberOfComponents(),
                                               static_cast<int>(i % actual->GetNumberOfComponents()));
-        if (std::isnan(expected[i])) EXPECT_TRUE(std::isnan(v)) << what << "[" << i << "] = " << v << ", expected NaN";
-        else EXPECT_DOUBLE_EQ(v, expected[i]) << what << "[" << i << "]";
+        if (std::isnan(expected[i]))
+            EXPECT_TRUE(std::isnan(v)) << what << "[" << i << "] = " << v << ", expected NaN";
+        else
+            EXPECT_DOUBLE_EQ(v, expected[i]) << what << "[" << i << "]";
     }
 }
 
@@ -340,7 +351,8 @@ void expect_snapshot(const fs::path& file, const Expected& e, vtkIdType cells, i
         for (const auto& [name, value] : e.cell_strain) {
             vtkDataArray* array = grid->GetCellData()->GetArray(name.c_str());
             ASSERT_NE(array, nullptr) << name;
-            for (vtkIdType c = 0; c < cells; ++c) EXPECT_NEAR(array->GetComponent(c, 0), value, 1e-12) << name << " cell " << c;
+            for (vtkIdType c = 0; c < cells; ++c)
+                EXPECT_NEAR(array->GetComponent(c, 0), value, 1e-12) << name << " cell " << c;
         }
     } else {
         EXPECT_EQ(grid->GetCellData()->GetNumberOfArrays(), 0) << "strain only for quads";
@@ -376,7 +388,8 @@ std::vector<fs::path> temporary_files(const fs::path& dir) {
 /// read_series.py with a Python that has VTK (Debian: python3-vtk9); its exit code is the verdict.
 void expect_python_reads(const fs::path& dir) {
     if (std::string(FRICTIONLAB_VTK_PYTHON).empty()) GTEST_SKIP() << "no Python with VTK's bindings configured";
-    const std::string command = fmt::format("\"{}\" \"{}\" \"{}\"", FRICTIONLAB_VTK_PYTHON, READ_SERIES_SCRIPT, dir.string());
+    const std::string command =
+        fmt::format("\"{}\" \"{}\" \"{}\"", FRICTIONLAB_VTK_PYTHON, READ_SERIES_SCRIPT, dir.string());
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
 }
 

@@ -147,7 +147,8 @@ WorkBalance work_balance(double dt, double t_end) {
     Integrator integrator({dt}, rig.services.context());
     run_until(integrator, rig.system, t_end);
     const double v = rig.system.y()(2);
-    return {rig.system.work().at(0), 0.5 * rig.osc.m * v * v, potential0 - rig.spring->potential_energy(rig.system.state())};
+    return {rig.system.work().at(0), 0.5 * rig.osc.m * v * v,
+            potential0 - rig.spring->potential_energy(rig.system.state())};
 }
 
 /// Error of psi(t_end) for psi' = -psi, psi(0) = 1, the only aux variable of a one-node system.

@@ -24,7 +24,11 @@ struct Services {
 class Rk4 {
 public:
     explicit Rk4(System& system)
-        : system_(system), k1_(system.y().size()), k2_(k1_.size()), k3_(k1_.size()), k4_(k1_.size()),
+        : system_(system),
+          k1_(system.y().size()),
+          k2_(k1_.size()),
+          k3_(k1_.size()),
+          k4_(k1_.size()),
           stage_(k1_.size()) {}
 
     void step(double dt) {

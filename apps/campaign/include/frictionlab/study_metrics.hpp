@@ -15,14 +15,14 @@ namespace frictionlab {
 /// What one case's outputs say about the quantities a study compares.
 struct CaseOutcome {
     static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> x_over_length;    // of each interface block, ordered along x
+    std::vector<double> x_over_length;  // of each interface block, ordered along x
     /// Normal and friction force of each block at the end of the settling stage, over the mean
     /// normal force per block (so that profiles at different resolutions compare).
     std::vector<double> settled_normal, settled_friction;
-    double first_precursor_time = nan;   // start of the first non-global event, since loading began (s)
-    double first_precursor_force = nan;  // F_S at its start (N)
+    double first_precursor_time = nan;       // start of the first non-global event, since loading began (s)
+    double first_precursor_force = nan;      // F_S at its start (N)
     double global_static_coefficient = nan;  // F_S/F_N at the first global slip (theory.md B.20)
-    std::vector<double> event_slip;      // slip of each block over the first event (m)
+    std::vector<double> event_slip;          // slip of each block over the first event (m)
     bool any_event = false, global_slip = false;
 };
 

@@ -19,7 +19,7 @@ namespace frictionlab {
 
 struct StudyRow {
     std::string name, family;
-    std::string scene_hash;  // of the case's resolved scene (seed included), as its run.yaml records it
+    std::string scene_hash;          // of the case's resolved scene (seed included), as its run.yaml records it
     std::vector<std::string> knobs;  // one value per StudyResult::knob_columns ("" where it does not apply)
     RunSummary summary;
     CaseOutcome outcome;
@@ -34,8 +34,8 @@ struct StudyResult {
 };
 
 /// The study's output directory is created (replaced with `options.overwrite`); each case runs
-/// into a new directory below it, above the estimated stable step with `options.allow_unstable_step`. A case that fails is a row of NaN errors with the reason in
-/// its note; a failing reference throws RunError.
+/// into a new directory below it, above the estimated stable step with `options.allow_unstable_step`. A case that fails
+/// is a row of NaN errors with the reason in its note; a failing reference throws RunError.
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
                       const Registry& registry, spdlog::logger& log, const RunOptions& options);
 

@@ -35,8 +35,8 @@ struct Sweep {
     SourceLocation scene_where;
     std::vector<std::int64_t> seeds;  // empty: the base scene's seed
     SourceLocation seeds_where;
-    std::vector<SweepAxis> grid;      // in file order
-    std::vector<SweepCase> cases;     // empty: the base scene as one case
+    std::vector<SweepAxis> grid;   // in file order
+    std::vector<SweepCase> cases;  // empty: the base scene as one case
 };
 
 /// The sweep's own keys, with file:line:column errors; the base scene is not read yet.
@@ -45,7 +45,7 @@ Sweep read_sweep(const std::filesystem::path& file, Diagnostics& diagnostics);
 /// Every case: its name (from its values unless the listed case names it), its values and its
 /// scene, checked like any scene (errors in an override point at the sweep file), writing into
 /// `output/cases/<name>`.
-std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem::path& output,
-                                      const Registry& registry, Diagnostics& diagnostics);
+std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem::path& output, const Registry& registry,
+                                      Diagnostics& diagnostics);
 
 }  // namespace frictionlab

@@ -33,8 +33,7 @@ namespace frictionlab {
 
 enum class ValueType { boolean, integer, real, string, real_list, string_list };
 
-using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>,
-                                std::vector<std::string>>;
+using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>, std::vector<std::string>>;
 
 /// The values of one component, key -> value, as read from a scene (defaults filled in).
 using ParamValues = std::map<std::string, ParamValue, std::less<>>;
@@ -54,7 +53,7 @@ struct ParamInfo {
 
 /// A rule between several keys, checked after every key is individually valid.
 struct ParamRule {
-    std::string key;  // the key an error is reported at
+    std::string key;                                       // the key an error is reported at
     std::function<std::string(const ParamValues&)> check;  // empty string = fine
 };
 
@@ -64,14 +63,43 @@ std::string to_string(const ParamValue&);
 std::string violated_constraint(const ParamInfo& info, const ParamValue& value);
 
 namespace detail {
-template <class T> struct value_type_of;
-template <> struct value_type_of<bool> { static constexpr auto type = ValueType::boolean; using stored = bool; };
-template <> struct value_type_of<int> { static constexpr auto type = ValueType::integer; using stored = std::int64_t; };
-template <> struct value_type_of<std::int64_t> { static constexpr auto type = ValueType::integer; using stored = std::int64_t; };
-template <> struct value_type_of<double> { static constexpr auto type = ValueType::real; using stored = double; };
-template <> struct value_type_of<std::string> { static constexpr auto type = ValueType::string; using stored = std::string; };
-template <> struct value_type_of<std::vector<double>> { static constexpr auto type = ValueType::real_list; using stored = std::vector<double>; };
-template <> struct value_type_of<std::vector<std::string>> { static constexpr auto type = ValueType::string_list; using stored = std::vector<std::string>; };
+template <class T>
+struct value_type_of;
+template <>
+struct value_type_of<bool> {
+    static constexpr auto type = ValueType::boolean;
+    using stored = bool;
+};
+template <>
+struct value_type_of<int> {
+    static constexpr auto type = ValueType::integer;
+    using stored = std::int64_t;
+};
+template <>
+struct value_type_of<std::int64_t> {
+    static constexpr auto type = ValueType::integer;
+    using stored = std::int64_t;
+};
+template <>
+struct value_type_of<double> {
+    static constexpr auto type = ValueType::real;
+    using stored = double;
+};
+template <>
+struct value_type_of<std::string> {
+    static constexpr auto type = ValueType::string;
+    using stored = std::string;
+};
+template <>
+struct value_type_of<std::vector<double>> {
+    static constexpr auto type = ValueType::real_list;
+    using stored = std::vector<double>;
+};
+template <>
+struct value_type_of<std::vector<std::string>> {
+    static constexpr auto type = ValueType::string_list;
+    using stored = std::vector<std::string>;
+};
 }  // namespace detail
 
 template <class P>
@@ -81,17 +109,41 @@ public:
     class Field {
     public:
         Field(ParamSpec& spec, std::size_t index) : spec_(&spec), index_(index) {}
-        Field& unit(std::string u) { info().unit = std::move(u); return *this; }
-        Field& greater_than(double v) { info().greater_than = v; return *this; }
-        Field& at_least(double v) { info().at_least = v; return *this; }
-        Field& less_than(double v) { info().less_than = v; return *this; }
-        Field& at_most(double v) { info().at_most = v; return *this; }
+        Field& unit(std::string u) {
+            info().unit = std::move(u);
+            return *this;
+        }
+        Field& greater_than(double v) {
+            info().greater_than = v;
+            return *this;
+        }
+        Field& at_least(double v) {
+            info().at_least = v;
+            return *this;
+        }
+        Field& less_than(double v) {
+            info().less_than = v;
+            return *this;
+        }
+        Field& at_most(double v) {
+            info().at_most = v;
+            return *this;
+        }
         /// The names each item of a string list may take (a single enumerated value is choice()).
-        Field& items_one_of(std::vector<std::string> c) { info().choices = std::move(c); return *this; }
+        Field& items_one_of(std::vector<std::string> c) {
+            info().choices = std::move(c);
+            return *this;
+        }
         /// The value names a stage of the scene (or is empty); the scene check refuses any other.
-        Field& names_a_stage() { info().names_stage = true; return *this; }
+        Field& names_a_stage() {
+            info().names_stage = true;
+            return *this;
+        }
         /// The key must be given in the scene; the member initialiser is then only an example value.
-        Field& required() { info().required = true; return *this; }
+        Field& required() {
+            info().required = true;
+            return *this;
+        }
 
     private:
         ParamInfo& info() { return spec_->infos_[index_]; }

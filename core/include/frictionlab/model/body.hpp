@@ -19,8 +19,8 @@ namespace frictionlab {
 using NodeSet = std::vector<Index>;
 
 struct Body {
-    Eigen::ArrayXd x0, z0;  // reference (undeformed) positions [nnode], m
-    Eigen::ArrayXd mass;    // [nnode], kg
+    Eigen::ArrayXd x0, z0;                     // reference (undeformed) positions [nnode], m
+    Eigen::ArrayXd mass;                       // [nnode], kg
     double length = 0, height = 0, width = 0;  // L (x), H (z), B (y), m
     double spacing = 0;                        // rest spacing of neighbouring nodes l_s, m
     /// Stiffness K of the bulk's nearest-neighbour springs (N/m): boundary effects that the model

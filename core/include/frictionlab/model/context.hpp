@@ -23,11 +23,11 @@ struct AuxAllocator {
 
 struct Context {
     spdlog::logger& log;
-    std::uint64_t seed = 0;          // the scene seed; draws are keyed on it (random.hpp)
-    const Body* body = nullptr;      // null only while the bulk model itself is being built
+    std::uint64_t seed = 0;      // the scene seed; draws are keyed on it (random.hpp)
+    const Body* body = nullptr;  // null only while the bulk model itself is being built
     Quantities* quantities = nullptr;
     AuxAllocator* aux = nullptr;
-    std::string name;                // where the component stands in the scene, e.g. "loaders[1]"
+    std::string name;  // where the component stands in the scene, e.g. "loaders[1]"
 };
 
 }  // namespace frictionlab

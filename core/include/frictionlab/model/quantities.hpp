@@ -35,8 +35,8 @@ public:
 
     /// Publishes (or, if already declared with the same node set and size, returns) a field that
     /// the caller computes.
-    Eigen::ArrayXd& field(const std::string& name, const std::string& node_set, Eigen::Index size,
-                          std::string unit, std::string doc);
+    Eigen::ArrayXd& field(const std::string& name, const std::string& node_set, Eigen::Index size, std::string unit,
+                          std::string doc);
     /// A field `reader` (its place in the scene, e.g. "friction") reads and another effect must
     /// publish; the storage is the publisher's, whichever declares it first.
     const Eigen::ArrayXd& needed_field(const std::string& name, const std::string& node_set, Eigen::Index size,

@@ -17,40 +17,39 @@ inline constexpr std::uint32_t plugin_header_version = 1;
 
 struct AbiFingerprint {
     std::uint32_t framework_abi;
-    std::uint32_t compiler;        // 1 GCC, 2 Clang, 0 other
+    std::uint32_t compiler;  // 1 GCC, 2 Clang, 0 other
     std::uint32_t compiler_major;
-    std::uint32_t stdlib;          // 1 libstdc++, 2 libc++, 0 other
-    std::uint32_t cxx11_abi;       // _GLIBCXX_USE_CXX11_ABI
-    std::uint32_t cxx_standard;    // __cplusplus / 100
-    std::uint32_t eigen_version;   // world * 10000 + major * 100 + minor
-    std::uint32_t eigen_max_align; // EIGEN_MAX_ALIGN_BYTES
+    std::uint32_t stdlib;           // 1 libstdc++, 2 libc++, 0 other
+    std::uint32_t cxx11_abi;        // _GLIBCXX_USE_CXX11_ABI
+    std::uint32_t cxx_standard;     // __cplusplus / 100
+    std::uint32_t eigen_version;    // world * 10000 + major * 100 + minor
+    std::uint32_t eigen_max_align;  // EIGEN_MAX_ALIGN_BYTES
 };
 
 constexpr AbiFingerprint current_abi() {
-    return AbiFingerprint{
+    return AbiFingerprint {
         framework_abi_version,
 #if defined(__clang__)
-        2, __clang_major__,
+            2, __clang_major__,
 #elif defined(__GNUC__)
-        1, __GNUC__,
+            1, __GNUC__,
 #else
-        0, 0,
+            0, 0,
 #endif
 #if defined(__GLIBCXX__)
-        1,
+            1,
 #elif defined(_LIBCPP_VERSION)
-        2,
+            2,
 #else
-        0,
+            0,
 #endif
 #if defined(_GLIBCXX_USE_CXX11_ABI)
-        _GLIBCXX_USE_CXX11_ABI,
+            _GLIBCXX_USE_CXX11_ABI,
 #else
-        0,
+            0,
 #endif
-        static_cast<std::uint32_t>(__cplusplus / 100),
-        EIGEN_WORLD_VERSION * 10000 + EIGEN_MAJOR_VERSION * 100 + EIGEN_MINOR_VERSION,
-        EIGEN_MAX_ALIGN_BYTES,
+            static_cast<std::uint32_t>(__cplusplus / 100),
+            EIGEN_WORLD_VERSION * 10000 + EIGEN_MAJOR_VERSION * 100 + EIGEN_MINOR_VERSION, EIGEN_MAX_ALIGN_BYTES,
     };
 }
 
@@ -71,12 +70,13 @@ struct PluginHeader {
 
 /// The single macro of the plugin API: defines the C entry point of a plugin library.
 ///     FRICTIONLAB_PLUGIN("friction_coulomb", "1.0.0", register_types)
-#define FRICTIONLAB_PLUGIN(NAME, VERSION, REGISTER_FUNCTION)                                              \
-    extern "C" __attribute__((visibility("default"))) const ::frictionlab::PluginHeader*                  \
-    frictionlab_plugin_entry() {                                                                          \
-        static const ::frictionlab::PluginHeader header{::frictionlab::plugin_header_version,             \
-                                                        sizeof(::frictionlab::PluginHeader),              \
-                                                        ::frictionlab::current_abi(), NAME, VERSION,      \
-                                                        &REGISTER_FUNCTION};                              \
-        return &header;                                                                                   \
+#define FRICTIONLAB_PLUGIN(NAME, VERSION, REGISTER_FUNCTION)                                                          \
+    extern "C" __attribute__((visibility("default"))) const ::frictionlab::PluginHeader* frictionlab_plugin_entry() { \
+        static const ::frictionlab::PluginHeader header{::frictionlab::plugin_header_version,                         \
+                                                        sizeof(::frictionlab::PluginHeader),                          \
+                                                        ::frictionlab::current_abi(),                                 \
+                                                        NAME,                                                         \
+                                                        VERSION,                                                      \
+                                                        &REGISTER_FUNCTION};                                          \
+        return &header;                                                                                               \
     }

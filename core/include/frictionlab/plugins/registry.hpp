@@ -30,10 +30,14 @@ struct TypeInfo {
 
 template <class T>
 constexpr Kind kind_of() {
-    if constexpr (std::is_base_of_v<BulkModel, T>) return Kind::bulk_model;
-    else if constexpr (std::is_base_of_v<FrictionLaw, T>) return Kind::friction_law;
-    else if constexpr (std::is_base_of_v<Loader, T>) return Kind::loader;
-    else if constexpr (std::is_base_of_v<Observer, T>) return Kind::observer;
+    if constexpr (std::is_base_of_v<BulkModel, T>)
+        return Kind::bulk_model;
+    else if constexpr (std::is_base_of_v<FrictionLaw, T>)
+        return Kind::friction_law;
+    else if constexpr (std::is_base_of_v<Loader, T>)
+        return Kind::loader;
+    else if constexpr (std::is_base_of_v<Observer, T>)
+        return Kind::observer;
     else {
         static_assert(std::is_base_of_v<Integrator, T>, "T must derive from one of the plugin kinds");
         return Kind::integrator;

@@ -25,10 +25,10 @@ class Registry;
 
 /// One component of the scene, its parameters checked against its type's ParamSpec.
 struct ComponentSpec {
-    std::string path;       // key path in the scene: "bulk", "friction", "loaders[1]", ...
-    SourceLocation where;   // of the component's mapping
+    std::string path;      // key path in the scene: "bulk", "friction", "loaders[1]", ...
+    SourceLocation where;  // of the component's mapping
     std::string type;
-    ParamValues values;     // every declared key of the type, defaults filled in
+    ParamValues values;  // every declared key of the type, defaults filled in
     /// Where each key given in the scene was written (a default has no entry), so that a check made
     /// after validation (the stable step, at `integrator.dt`) points at the value.
     std::map<std::string, SourceLocation> value_where;
@@ -41,8 +41,8 @@ struct ComponentSpec {
 struct StageSpec {
     std::string name;
     SourceLocation where;
-    double duration = 0;         // s, > 0
-    bool friction_events = true; // false while settling (theory.md B.18)
+    double duration = 0;          // s, > 0
+    bool friction_events = true;  // false while settling (theory.md B.18)
     /// Checked at the end of the stage: max node speed must be below this (m/s); inf = no check.
     double max_speed_at_end = std::numeric_limits<double>::infinity();
 };
@@ -52,7 +52,7 @@ struct Scene {
     std::string hash;  // of the resolved scene text (defaults filled in) without `output:`, hex
     std::string title;
     std::uint64_t seed = 0;
-    std::filesystem::path output_directory;        // relative paths: to the working directory
+    std::filesystem::path output_directory;           // relative paths: to the working directory
     std::vector<std::filesystem::path> plugin_paths;  // relative paths: to the scene file
     ComponentSpec bulk;
     std::optional<ComponentSpec> friction;

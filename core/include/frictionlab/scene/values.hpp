@@ -33,7 +33,7 @@ struct SectionKeys {
 
 /// One mapping read against its keys.
 struct Section {
-    ParamValues values;                             // typed keys given with a valid value
+    ParamValues values;                               // typed keys given with a valid value
     std::map<std::string, Entry, std::less<>> given;  // every known key given (first occurrence)
     bool valid = true;  // a mapping, every given key known and valid, every required key present
 };
@@ -43,8 +43,8 @@ Section read_section(const Entry& map, const std::string& path, const SectionKey
 /// "a number in s", "an integer", "true or false", ...: what a key takes, for messages.
 std::string expectation(const ParamInfo& info);
 
-void report_missing(const YAML::Node& map, const std::string& path, const std::string& expected,
-                    const std::string& doc, const Reporter& reporter);
+void report_missing(const YAML::Node& map, const std::string& path, const std::string& expected, const std::string& doc,
+                    const Reporter& reporter);
 
 /// Writes a value as a scene spells it, so that reading it back gives the same value.
 void emit_value(YAML::Emitter& out, const ParamValue& value);

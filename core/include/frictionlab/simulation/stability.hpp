@@ -12,7 +12,7 @@ class Integrator;
 class System;
 
 struct StabilityEstimate {
-    double lambda_max = 0;  // 1/s, largest |eigenvalue| of the linearised system
+    double lambda_max = 0;                                      // 1/s, largest |eigenvalue| of the linearised system
     double dt_limit = std::numeric_limits<double>::infinity();  // stability radius / lambda_max, s
     std::string limiting_effect;  // describe() of the effect with the largest |eigenvalue| alone
     double limiting_lambda = 0;   // that effect's own largest |eigenvalue|, 1/s

@@ -77,7 +77,9 @@ public:
     /// The forces [fx | fz | aux rates] at (t, y), as add_forces() gives them into zeros, without
     /// counting an evaluation or adding work: for solvers that evaluate the pipeline outside a time
     /// step (a quiet phase).
-    void static_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f) { compute_forces(t, y, f, 0); }
+    void static_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f) {
+        compute_forces(t, y, f, 0);
+    }
     /// Adds work to each active effect as the trapezoid rule over a straight path from the accepted
     /// state to y1 (positions q0 -> q1 in time h at the constant velocity (q1 - q0)/h), with the
     /// frozen discrete state: how a quiet phase keeps the energy balance (work accounting only).
@@ -133,14 +135,14 @@ private:
     StateLayout layout_;
     Eigen::ArrayXd inverse_mass_;
     std::vector<Slot> slots_;
-    std::vector<Effect*> parts_;  // every slot's parts (the effect itself if it has none), slot order
-    std::vector<std::string> labels_;           // per part
-    std::vector<const Slot*> active_;           // the current stage's pipeline, evaluation order
-    std::vector<std::size_t> active_parts_;     // indices into parts_ of the active slots' parts
+    std::vector<Effect*> parts_;             // every slot's parts (the effect itself if it has none), slot order
+    std::vector<std::string> labels_;        // per part
+    std::vector<const Slot*> active_;        // the current stage's pipeline, evaluation order
+    std::vector<std::size_t> active_parts_;  // indices into parts_ of the active slots' parts
     Eigen::VectorXd y_, scratch_, net_force_;
-    std::vector<double> work_, pending_work_;  // per part; pending = this step's, until accepted
-    Eigen::VectorXd effect_force_;              // one part's [fx | fz | aux rate], accounting only
-    Eigen::VectorXd local_scratch_;             // forces of the effects local in velocity
+    std::vector<double> work_, pending_work_;       // per part; pending = this step's, until accepted
+    Eigen::VectorXd effect_force_;                  // one part's [fx | fz | aux rate], accounting only
+    Eigen::VectorXd local_scratch_;                 // forces of the effects local in velocity
     std::vector<Eigen::Triplet<double>> triplets_;  // stiffness assembly scratch
     Eigen::VectorXd path_state_;                    // straight-path work scratch
     double t_ = 0;
