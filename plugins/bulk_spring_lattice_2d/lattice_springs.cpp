@@ -1,5 +1,6 @@
 #include "lattice_springs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -182,6 +183,37 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
         if (beyond) exact_beyond_bound(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, k, px, pz);
     }
     pair_.add_to(f.fx.data(), f.fz.data());
+}
+
+void LatticeSprings::add_cell_virial(const StageView& s, Eigen::Ref<Eigen::ArrayX3d> virial) const {
+    const Index nx = grid_.nx, cells_x = grid_.nx - 1, cells_z = grid_.nz - 1;
+    auto add = [&](Index cx, Index cz, double weight, double fx, double fz, double dx, double dz) {
+        if (cx < 0 || cx >= cells_x || cz < 0 || cz >= cells_z) return;
+        auto row = virial.row(cx + cells_x * cz);
+        row(0) += weight * fx * dx, row(1) += weight * fz * dz, row(2) += weight * fx * dz;
+    };
+    for (const BondFamily& b : families_) {
+        const double k = stiffness_ * b.relative_stiffness, l = b.rest_length;
+        for (Index i = 0; i < b.count; ++i) {
+            if (b.mask[static_cast<std::size_t>(i)] == 0) continue;
+            const Index j = i + b.offset, ix = i % nx, iz = i / nx;
+            double dx = s.x[j] - s.x[i], dz = s.z[j] - s.z[i], fx = 0, fz = 0;
+            if (law_ == Law::small_strain) {
+                const double tension = k * ((dx - b.ref_x) * b.ex + (dz - b.ref_z) * b.ez);
+                fx = tension * b.ex, fz = tension * b.ez, dx = b.ref_x, dz = b.ref_z;
+            } else {
+                const double factor = k * (1 - l / std::hypot(dx, dz));
+                fx = factor * dx, fz = factor * dz;
+            }
+            if (b.dz == 0) {  // horizontal: the cells below and above
+                add(ix, iz - 1, 0.5, fx, fz, dx, dz), add(ix, iz, 0.5, fx, fz, dx, dz);
+            } else if (b.dx == 0) {  // vertical: the cells left and right
+                add(ix - 1, iz, 0.5, fx, fz, dx, dz), add(ix, iz, 0.5, fx, fz, dx, dz);
+            } else {  // a diagonal, inside the cell whose lower-left corner is min(ix, ix + dx), iz
+                add(std::min(ix, ix + b.dx), iz, 1.0, fx, fz, dx, dz);
+            }
+        }
+    }
 }
 
 void LatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {

@@ -40,6 +40,13 @@ public:
     /// the nonlinearity), and they have no discrete state.
     bool quasi_static_regime(const StageView&) const override { return true; }
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
+    /// The springs' virial per cell (cells row by row from the bottom, as the lattice lists them):
+    /// a diagonal lies in one cell; a straight bond is shared half and half by the two cells it
+    /// bounds, half also on the boundary, so that a uniform strain gives every cell, boundary cells
+    /// included, the continuum stress C : epsilon of the lattice (C11 = 9E/8, C12 = C44 = 3E/8).
+    /// Geometric law: F = k (1 - l/r) Delta at the current Delta; small strain: F = k (Delta_u . e) e
+    /// at the rest vector.
+    void add_cell_virial(const StageView& s, Eigen::Ref<Eigen::ArrayX3d> virial) const override;
 
     /// Whether add_forces_with_dashpots() can take `damping` into its pass: geometric springs and
     /// full-vector dashpots on the same lattice.

@@ -178,12 +178,33 @@ void VtkSeries::add_strain(const Body& body) {
         for (int k = 0; k < 4; ++k)
             g[k] = {(j22 * dxi[k] - j12 * deta[k]) / det, (-j21 * dxi[k] + j11 * deta[k]) / det};  // d/dx, d/dz
         corner_gradients_.push_back(g);
+        cell_volumes_.push_back(4 * std::abs(det) * body.width);  // exact for parallelograms (the lattice's squares)
     }
     const auto cells = static_cast<vtkIdType>(body.cells.size());
     strain_xx_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "strain_xx", 1, cells);
     strain_zz_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "strain_zz", 1, cells);
     strain_xz_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "strain_xz", 1, cells);
     units_.insert(units_.end(), {"strain_xx: 1", "strain_zz: 1", "strain_xz: 1"});
+    if (!(body.width > 0)) return;  // no thickness: no stress
+    virial_.setZero(cells, 3);
+    stress_xx_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "stress_xx", 1, cells);
+    stress_zz_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "stress_zz", 1, cells);
+    stress_xz_ = add_array<vtkDoubleArray>(grid_->GetCellData(), "stress_xz", 1, cells);
+    units_.insert(units_.end(), {"stress_xx: Pa", "stress_zz: Pa", "stress_xz: Pa"});
+}
+
+void VtkSeries::update_stress(const RunView& view) {
+    if (!stress_xx_) return;
+    virial_.setZero();
+    view.system.for_each_effect([&](const Effect& e) { e.add_cell_virial(view.state, virial_); });
+    for (Index c = 0; c < virial_.rows(); ++c) {
+        const double volume = cell_volumes_[static_cast<std::size_t>(c)];
+        const auto i = static_cast<vtkIdType>(c);
+        stress_xx_->SetValue(i, virial_(c, 0) / volume);
+        stress_zz_->SetValue(i, virial_(c, 1) / volume);
+        stress_xz_->SetValue(i, virial_(c, 2) / volume);
+    }
+    for (auto* a : {stress_xx_, stress_zz_, stress_xz_}) a->Modified();
 }
 
 void VtkSeries::update_strain(const StageView& s, const Body& body) {
@@ -287,6 +308,7 @@ void VtkSeries::update(const RunView& view) {
         grid_->GetPoints()->Modified();
     }
     update_strain(s, body);
+    update_stress(view);
     set_plane_vectors(displacement_, s.x - body.x0, s.z - body.z0);
     set_plane_vectors(velocity_, s.vx, s.vz);
     set_plane_vectors(net_force_, f.head(body.size()), f.tail(body.size()));

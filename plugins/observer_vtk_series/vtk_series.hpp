@@ -54,7 +54,9 @@ namespace frictionlab {
 ///
 /// Cell data, quads only: strain_xx, strain_zz, strain_xz (1), the small-strain tensor of each cell
 /// from its corners' displacements (bilinear quad, displacement gradient at its centre; exact for a
-/// cell deformed affinely), what one looks at around a rupture tip.
+/// cell deformed affinely), and stress_xx, stress_zz, stress_xz (Pa), the stress the bulk's springs
+/// carry through the cell (their virial over its volume, Effect::add_cell_virial; the dashpots'
+/// viscous part is not included): what one looks at around a rupture tip.
 ///
 /// The .pvd lists each snapshot at its simulated time rounded to a hundredth of the mean step so far
 /// (0.408, not the 0.40800000000967207 a sum of two million steps gives); TIME in the file is exact.
@@ -118,6 +120,8 @@ private:
     void build_cells(const Body& body);
     void add_strain(const Body& body);
     void update_strain(const StageView& s, const Body& body);
+    /// Each cell's stress: the effects' virial (Effect::add_cell_virial) over the cell's volume.
+    void update_stress(const RunView& view);
     vtkDoubleArray* add_point_array(const std::string& name, int components, const std::string& unit);
     void add_role(const Body& body);
     void add_fields(const RunView& view);
@@ -138,6 +142,9 @@ private:
     /// geometry once; the strain arrays (none without quads).
     std::vector<std::array<std::array<double, 2>, 4>> corner_gradients_;
     vtkDoubleArray *strain_xx_ = nullptr, *strain_zz_ = nullptr, *strain_xz_ = nullptr;
+    std::vector<double> cell_volumes_;  // m^3: reference area times the body's width
+    Eigen::ArrayX3d virial_;            // scratch, per cell: xx, zz, xz (N m)
+    vtkDoubleArray *stress_xx_ = nullptr, *stress_zz_ = nullptr, *stress_xz_ = nullptr;
     JunctionCounts junctions_;
     When when_;
     std::vector<std::pair<const double*, vtkDoubleArray*>> scalars_;

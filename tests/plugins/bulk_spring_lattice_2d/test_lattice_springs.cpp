@@ -198,3 +198,49 @@ TEST(LatticeSprings, OnePassOnlyForGeometricSpringsWithFullVectorDampingOfTheSam
 
 }  // namespace
 }  // namespace frictionlab
+
+namespace frictionlab {
+namespace {
+
+/// Every cell's stress (the springs' virial over l_s^2 B) under a uniform strain, against the
+/// lattice's plane-stress constants C11 = 9E/8, C12 = C44 = 3E/8: boundary cells included, as each
+/// straight bond is shared half and half.
+void expect_cell_stress_is_c_epsilon(const std::string& law, double tolerance) {
+    LatticeFixture f(with_springs(law));
+    const double E = 3e9, c11 = 9 * E / 8, c12 = 3 * E / 8, c44 = 3 * E / 8;
+    const double exx = 2e-4, ezz = -1e-4, exz = 0.5e-4;  // tensor shear: u_x,z + u_z,x = 2 exz
+    const Eigen::VectorXd y = f.displaced([&](double x, double z) {
+        return std::pair{exx * x + exz * z, exz * x + ezz * z};
+    });
+    const Body& body = f.body();
+    Eigen::ArrayX3d virial = Eigen::ArrayX3d::Zero(static_cast<Index>(body.cells.size()), 3);
+    f.springs().add_cell_virial(view_of(y, f.layout(), 0.0), virial);
+    const double volume = body.spacing * body.spacing * body.width;
+    const double sxx = c11 * exx + c12 * ezz, szz = c12 * exx + c11 * ezz, sxz = 2 * c44 * exz;
+    for (Index c = 0; c < virial.rows(); ++c) {
+        EXPECT_NEAR(virial(c, 0) / volume, sxx, tolerance * std::abs(sxx)) << law << " cell " << c;
+        EXPECT_NEAR(virial(c, 1) / volume, szz, tolerance * std::abs(sxx)) << law << " cell " << c;
+        EXPECT_NEAR(virial(c, 2) / volume, sxz, tolerance * std::abs(sxx)) << law << " cell " << c;
+    }
+}
+
+TEST(LatticeSprings, CellStressOfAUniformStrainIsTheLatticesCEpsilonInEveryCell) {
+    expect_cell_stress_is_c_epsilon("small_strain", 1e-9);
+    // Geometric springs: the same to first order in the strain (second-order terms ~ 2e-4).
+    expect_cell_stress_is_c_epsilon("geometric", 1e-3);
+}
+
+TEST(LatticeSprings, CellStressVanishesAtRestAndUnderARigidRotation) {
+    LatticeFixture f(with_springs("geometric"));
+    const double phi = 0.3;
+    const Eigen::VectorXd y = f.displaced([&](double x, double z) {
+        return std::pair{x * (std::cos(phi) - 1) - z * std::sin(phi), x * std::sin(phi) + z * (std::cos(phi) - 1)};
+    });
+    Eigen::ArrayX3d virial = Eigen::ArrayX3d::Zero(static_cast<Index>(f.body().cells.size()), 3);
+    f.springs().add_cell_virial(view_of(y, f.layout(), 0.0), virial);
+    const double scale = 1e-9 * f.body().bond_stiffness * f.body().spacing;  // a bond stretched by 1 nm
+    EXPECT_LT(virial.abs().maxCoeff(), scale);
+}
+
+}  // namespace
+}  // namespace frictionlab

@@ -78,6 +78,10 @@ public:
         for (Index i = 0; i < nx; ++i) normal_(i) = 10.0 * (i + 1) + s.t;
         driving_ = 1.5 + s.t;
     }
+    /// The same virial in every cell: (V, 2 V, -V), V = 1 + t (N m).
+    void add_cell_virial(const StageView& s, Eigen::Ref<Eigen::ArrayX3d> virial) const override {
+        virial.col(0) += 1 + s.t, virial.col(1) += 2 * (1 + s.t), virial.col(2) -= 1 + s.t;
+    }
 
 private:
     Eigen::ArrayXd x0_;
@@ -93,7 +97,7 @@ struct Expected {
     std::vector<double> points;
     std::map<std::string, std::pair<int, std::vector<double>>> arrays;  // name -> components, values
     std::map<std::string, double> numbers;                              // field data, one value each
-    std::map<std::string, double> cell_strain;  // quads: the same in every cell (affine displacement)
+    std::map<std::string, double> cell_values;  // quads: strain and stress, the same in every cell
 };
 
 std::string json_number(double v) { return std::isnan(v) ? "NaN" : fmt::format("{}", v); }
@@ -208,7 +212,10 @@ protected:
         // u = a (ix + nx iz + 1), w = -b (ix + nx iz) with x = ix l, z = iz l: an affine field, so
         // every cell has its exact gradient.
         const double a = 1e-3 * (k + 1), b = 2e-4 * k, l = body_.spacing;
-        e.cell_strain = {{"strain_xx", a / l}, {"strain_zz", -b * nx / l}, {"strain_xz", 0.5 * (a * nx / l - b / l)}};
+        // The test effect's virial (V, 2 V, -V) over the cell's volume l^2 B.
+        const double stress = (1 + t) / (l * l * body_.width);
+        e.cell_values = {{"strain_xx", a / l},  {"strain_zz", -b * nx / l}, {"strain_xz", 0.5 * (a * nx / l - b / l)},
+                         {"stress_xx", stress}, {"stress_zz", 2 * stress},  {"stress_xz", -stress}};
         e.numbers = {{"TIME", t},
                      {"TimeValue", t},
                      {"STEP", double(e.step)},
@@ -348,14 +355,15 @@ void expect_snapshot(const fs::path& file, const Expected& e, vtkIdType cells, i
         EXPECT_DOUBLE_EQ(array->GetComponent(0, 0), v) << name;
     }
     if (cell_type == VTK_QUAD) {
-        for (const auto& [name, value] : e.cell_strain) {
+        for (const auto& [name, value] : e.cell_values) {
             vtkDataArray* array = grid->GetCellData()->GetArray(name.c_str());
             ASSERT_NE(array, nullptr) << name;
             for (vtkIdType c = 0; c < cells; ++c)
-                EXPECT_NEAR(array->GetComponent(c, 0), value, 1e-12) << name << " cell " << c;
+                EXPECT_NEAR(array->GetComponent(c, 0), value, 1e-12 * std::max(1.0, std::abs(value)))
+                    << name << " cell " << c;
         }
     } else {
-        EXPECT_EQ(grid->GetCellData()->GetNumberOfArrays(), 0) << "strain only for quads";
+        EXPECT_EQ(grid->GetCellData()->GetNumberOfArrays(), 0) << "strain and stress only for quads";
     }
     EXPECT_DOUBLE_EQ(header_range_max(file, "TIME"), e.time) << "the header's range is this snapshot's";
     EXPECT_EQ(field_string(grid, "framework"), "frictionlab");

@@ -35,6 +35,13 @@ public:
     /// the sum of the parts' up to rounding. Empty (the default): the effect is its own single part.
     virtual std::vector<Effect*> parts() { return {}; }
 
+    /// Adds the virial of the forces this effect carries between nodes to each cell of the body
+    /// (Body::cells): for every bond, F (x) Delta, F its tension force on the first node and Delta
+    /// the bond vector, shared equally by the cells the bond bounds; rows are cells, columns xx,
+    /// zz, xz (N m). Over a cell's volume it is the cell's stress. Default: none (forces on nodes
+    /// alone, such as loads and friction, carry no stress between nodes).
+    virtual void add_cell_virial(const StageView&, Eigen::Ref<Eigen::ArrayX3d> /*virial*/) const {}
+
     /// Called at the start of every stage of the run, before any step of it.
     virtual void begin_stage(const StageInfo&, const StageView&) {}
     /// Called before each integrator step with the accepted state the step starts from.
