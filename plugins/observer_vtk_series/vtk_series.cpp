@@ -12,6 +12,7 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkInformation.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -338,6 +339,15 @@ void VtkSeries::update_pinned_fraction() {
 }
 
 void VtkSeries::write_snapshot(const RunView& view) {
+    // VTK caches the ranges it computed for an array in the array's information, and the writer
+    // writes them: a snapshot would depend on what earlier ones computed (and a resumed run's on
+    // where it resumed). Each snapshot is written from its values alone.
+    for (vtkFieldData* data :
+         {static_cast<vtkFieldData*>(grid_->GetPointData()), static_cast<vtkFieldData*>(grid_->GetCellData())})
+        for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+            if (auto* array = data->GetAbstractArray(a); array && array->HasInformation())
+                array->GetInformation()->Clear();
+    if (points_->HasInformation()) points_->GetInformation()->Clear();
     const std::string name = fmt::format("{0}/{0}_{1:06d}.vtu", params_.prefix, snapshots_);
     replace_file_atomically(view.output_directory / name, [&](const std::filesystem::path& tmp) {
         writer_->SetFileName(tmp.c_str());
