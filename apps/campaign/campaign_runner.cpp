@@ -44,8 +44,13 @@ using Clock = std::chrono::steady_clock;
     record.scene_hash = c.scene.hash;
     int code = exit_code::ok;
     try {
-        // The directory may hold an interrupted or failed attempt: FrictionLab's own, so replaceable.
-        record.summary = run_scene(c.scene, registry, *log, {true, allow_unstable_step, false});
+        // The directory may hold an interrupted or failed attempt: FrictionLab's own, so replaceable;
+        // one of this very scene stopped with a checkpoint goes on from it.
+        RunOptions options{true, allow_unstable_step, false};
+        const auto previous = read_recorded_run(c.scene.output_directory);
+        options.resume = previous && previous->resumable() && previous->scene_hash == c.scene.hash;
+        if (options.resume) log->info("resuming the interrupted case from its checkpoint");
+        record.summary = run_scene(c.scene, registry, *log, options);
         record.status = "done";
     } catch (const std::exception& e) {
         log->error("run failed: {}", e.what());

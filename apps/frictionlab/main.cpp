@@ -324,8 +324,14 @@ int main(int argc, char** argv) {
     std::string selector, format = "text";
 
     auto* run = app.add_subcommand("run", "Run a scene");
-    run->add_option("scene", scene_file, "Scene file (YAML)")->required();
-    run->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)");
+    std::filesystem::path resume_dir;
+    run->add_option("scene", scene_file, "Scene file (YAML); with --resume, the one run.yaml records if not given");
+    run->add_option("--resume", resume_dir,
+                    "Continue the stopped run in this output directory from its last checkpoint (its scene and --set "
+                    "list as run.yaml records them)");
+    // One value per --set, so that `run --set k=v scene.yaml` leaves the scene to the positional
+    // argument (optional now that --resume can name the run instead).
+    run->add_option("--set", overrides, "Override a scene value: key.path=value (repeatable)")->allow_extra_args(false);
     auto* run_output = run->add_option("-o,--output", output, "Output directory (overrides the scene's `output:`)");
     attach_run_flags(*run, options, removed_force);
     common.attach(*run);
@@ -419,6 +425,20 @@ int main(int argc, char** argv) {
         if (*check && fl::campaign_file_kind(scene_file) == fl::CampaignFileKind::sweep)
             return sweep(scene_file, output, 0, options, true, common, registry, *log);
         if (*sweep_cmd) return sweep(sweep_file, output, jobs, options, check_only, common, registry, *log);
+        if (*run && !resume_dir.empty()) {
+            const auto recorded = fl::read_recorded_run(resume_dir);
+            if (!recorded)
+                throw fl::InputError(
+                    fmt::format("--resume: '{}' holds no run of FrictionLab (no run.yaml)", resume_dir.string()));
+            if (recorded->status == "completed")
+                throw fl::InputError(
+                    fmt::format("--resume: the run in '{}' is complete; nothing to resume", resume_dir.string()));
+            if (scene_file.empty()) scene_file = recorded->scene_file;
+            if (overrides.empty()) overrides = recorded->overrides;
+            output = resume_dir.string();
+            options.resume = true;
+        }
+        if (*run && scene_file.empty()) throw fl::InputError("run: give a scene file, or --resume DIR");
         if (*run || *check) {
             options.command_line.assign(argv, argv + argc);
             options.overrides = overrides;  // as given: -o is recorded with the command line

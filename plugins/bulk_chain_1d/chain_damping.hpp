@@ -14,6 +14,7 @@ namespace frictionlab {
 /// doi:10.1007/s11249-011-9894-3.
 class ChainDamping final : public Effect {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     ChainDamping(Index nodes, double eta);
 
     std::string describe() const override;

@@ -15,6 +15,7 @@ namespace frictionlab {
 /// doi:10.1007/s11249-011-9894-3.
 class ChainSprings final : public Effect {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     ChainSprings(Index nodes, double spacing, double stiffness);
 
     std::string describe() const override;

@@ -12,6 +12,7 @@ namespace frictionlab {
 /// acts in z only: the sliding motion (x) never feels it.
 class VerticalDamping final : public Effect {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     explicit VerticalDamping(double eta);
 
     std::string describe() const override;

@@ -19,6 +19,7 @@ namespace frictionlab {
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class BondDamping final : public Effect {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     enum class Mode { full_vector, bond_projected };
 
     BondDamping(const LatticeGrid& grid, double eta, Mode mode);

@@ -16,6 +16,7 @@ namespace frictionlab {
 /// energy bookkeeping and the stable-step estimate (Effect::parts()).
 class LatticeBonds final : public Effect {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     LatticeBonds(std::unique_ptr<LatticeSprings> springs, std::unique_ptr<BondDamping> dashpots);
 
     std::string describe() const override;

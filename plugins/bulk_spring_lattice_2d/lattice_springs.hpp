@@ -28,6 +28,7 @@ class BondDamping;
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class LatticeSprings final : public Effect {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     enum class Law { geometric, small_strain };
 
     LatticeSprings(const LatticeGrid& grid, double bond_stiffness, Law law);

@@ -35,6 +35,7 @@ namespace frictionlab {
 /// The law is smooth: no discrete state, no events, nothing to commit; it stores no energy.
 class RateState final : public FrictionLaw {
 public:
+    bool checkpointable() const override { return true; }  // its state variable is in the state vector
     enum class Law { aging, slip };
     struct Params {
         double a = 0.008;

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 #include "frictionlab/model/quantities.hpp"
@@ -33,6 +34,10 @@ struct Block {
     double direction = 0;                 // s = +-1, slipping: the direction it broke in
     bool reached_stick_velocity = false;  // slipping: |v| has exceeded stick_velocity
     double x_start = 0, v_start = 0;      // m, m/s: at the start of the current step
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(mode, stiffness, anchor, slip, direction, reached_stick_velocity, x_start, v_start);
+    }
 };
 
 /// c of k_t = sqrt(c f_N), the value of re-implementations of Trømborg 2011, N/m^2.
@@ -118,6 +123,13 @@ Settings settings_of(const P& p) {
 template <class Strength>
 class StickSlipLaw final : public FrictionLaw {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(blocks_, events_);
+    }
     using Params = typename Strength::Params;
     using Settings = stick_slip::Settings;
     using Mode = stick_slip::Mode;

@@ -38,6 +38,10 @@ struct Junction {
     std::uint64_t sliding_draws = 0, dislocated_draws = 0;  // keyed-random counters (random.hpp)
 
     double deadline() const { return entry + lifetime; }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(id, sign, f0, anchor, tan_phi, entry, lifetime, sliding_draws, dislocated_draws);
+    }
 };
 
 /// Eq. 11 split as f^d = f^t + f^n for one dislocated junction at angle phi.
@@ -52,9 +56,19 @@ public:
         double p = 0;    // normal load of one junction, N
         double k_s = 0;  // tangential stiffness of one junction, N/m
         double mu_d = 0;
+        template <class Archive>
+        void serialize(Archive& ar) {
+            ar(p, k_s, mu_d);
+        }
     };
 
     BlockJunctions(const Constants& c, Index capacity, double x);
+    /// Every member, the caches and sums with their rounding history included (checkpoints).
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(c_, junctions_, b_, base_, lo_, hi_, off_, deadline_, state_, pinned_, sliding_, next_id_, x_ref_, b_sum_,
+           b_max_, b_min_, off_sum_, next_deadline_, pinned_dirty_);
+    }
 
     Index size() const { return static_cast<Index>(junctions_.size()); }
     Index pinned() const { return pinned_; }

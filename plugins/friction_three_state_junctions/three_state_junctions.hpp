@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
@@ -81,6 +82,13 @@ namespace frictionlab {
 /// New junctions enter unloaded (f0 = 0) and store nothing.
 class ThreeStateJunctions final : public FrictionLaw {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(fixed_length(blocks_), x_start_, removal_draws_, events_, next_event_);
+    }
     enum class Removal { random, most_loaded_pinned, non_pinned_first };
     /// What a pinned junction does above mu_s p while friction events are off (settling, B.18).
     enum class SettleOverload { hold, slip_and_repin };

@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
@@ -50,6 +51,13 @@ namespace frictionlab {
 /// without work (dissipation by definition).
 class TwoStateJunctions final : public FrictionLaw {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(blocks_, events_, next_event_);
+    }
     struct Params {
         int junctions_per_block = 100;
         double mu_s = 0.4;
@@ -99,6 +107,11 @@ private:
         double load_sum = 0, load_max = 0, load_min = 0, sign_sum = 0;
         double next_deadline;
         double k, f_s = 0, f_d = 0, c = 0, x_c;
+        template <class Archive>
+        void serialize(Archive& ar) {
+            ar(load, sign, deadline, draws, slipping, pinned, load_sum, load_max, load_min, sign_sum, next_deadline, k,
+               f_s, f_d, c, x_c);
+        }
     };
 
     const Block& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }

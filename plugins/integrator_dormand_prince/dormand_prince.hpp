@@ -1,6 +1,7 @@
 #pragma once
 #include <optional>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
@@ -39,6 +40,13 @@ namespace frictionlab {
 /// step is initial_step, capped by dt_max.
 class DormandPrince final : public Integrator {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(controller_, h_, accepted_, rejected_);
+    }
     struct Params {
         double rtol = 1e-6;
         double atol_position = 1e-12;

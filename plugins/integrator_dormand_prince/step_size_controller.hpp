@@ -28,6 +28,11 @@ public:
     /// The retry after step h was rejected with error norm err > 1 (or not finite): always shorter.
     double rejected(double err, double h);
 
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(previous_err_, after_rejection_);
+    }
+
 private:
     double exponent() const;  // of err in the I part
     double factor(double err) const;

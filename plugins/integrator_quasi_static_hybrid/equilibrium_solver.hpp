@@ -22,6 +22,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
@@ -52,6 +53,32 @@ public:
     bool steady_velocity(System& system, double t, Eigen::VectorXd& y);
 
     const Counts& counts() const { return counts_; }
+
+    /// Checkpoints: the stiffness the factorisation in use was made from (restoring factorises it
+    /// again: the same factors, bit for bit), whether it is current, and the counts.
+    template <class Archive>
+    void save(Archive& ar) const {
+        ar(counts_.solves, counts_.iterations, counts_.factorisations, factorised_, stale_, pattern_size_);
+        using Indices = std::vector<Eigen::SparseMatrix<double>::StorageIndex>;
+        const auto outer = stiffness_.outerIndexPtr(), inner = stiffness_.innerIndexPtr();
+        const auto nonzeros = static_cast<std::size_t>(stiffness_.nonZeros());
+        ar(static_cast<std::int64_t>(stiffness_.rows()), static_cast<std::int64_t>(stiffness_.cols()),
+           Indices(outer, outer + stiffness_.outerSize() + 1), Indices(inner, inner + nonzeros),
+           std::vector<double>(stiffness_.valuePtr(), stiffness_.valuePtr() + nonzeros));
+    }
+    template <class Archive>
+    void load(Archive& ar) {
+        ar(counts_.solves, counts_.iterations, counts_.factorisations, factorised_, stale_, pattern_size_);
+        std::int64_t rows = 0, cols = 0;
+        std::vector<Eigen::SparseMatrix<double>::StorageIndex> outer, inner;
+        std::vector<double> values;
+        ar(rows, cols, outer, inner, values);
+        if (rows < 0 || cols < 0 || outer.size() != static_cast<std::size_t>(cols) + 1 || inner.size() != values.size())
+            throw cereal::Exception("the checkpoint's stiffness matrix is malformed");
+        stiffness_ = Eigen::Map<const Eigen::SparseMatrix<double>>(rows, cols, static_cast<Index>(values.size()),
+                                                                   outer.data(), inner.data(), values.data());
+        if (factorised_) ldlt_.analyzePattern(stiffness_), ldlt_.factorize(stiffness_);
+    }
 
 private:
     /// Assembles K at (t, y) and factorises it; false if it is singular or indefinite.

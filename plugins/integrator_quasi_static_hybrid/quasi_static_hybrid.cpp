@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <spdlog/logger.h>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/simulation/system.hpp"
 #include "rk4.hpp"
@@ -109,6 +110,16 @@ std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() cons
             {"switches_to_dynamic", static_cast<double>(to_dynamic_)},
             {"static_solves", static_cast<double>(solver_.counts().solves)},
             {"factorisations", static_cast<double>(solver_.counts().factorisations)}};
+}
+
+void QuasiStaticHybrid::save_state(StateOut& out) const {
+    out(*this);
+    dynamic_->save_state(out);
+}
+
+void QuasiStaticHybrid::restore_state(StateIn& in) {
+    in(*this);
+    dynamic_->restore_state(in);
 }
 
 double QuasiStaticHybrid::step(System& system, double max_dt) {

@@ -52,6 +52,18 @@ public:
     ~QuasiStaticHybrid() override;
 
     double step(System& system, double max_dt) override;
+    // Checkpoints: the phase and its clocks, the solver's factorisation, the dynamic scheme's state.
+    bool checkpointable() const override { return dynamic_->checkpointable(); }
+    void save_state(StateOut& out) const override;
+    void restore_state(StateIn& in) override;
+    template <class Archive>
+    void serialize(Archive& ar) {
+        auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count();
+        ar(solver_, y_, quiet_, projected_, next_check_, calm_since_, to_quiet_, to_dynamic_, quiet_steps_,
+           dynamic_steps_, quiet_time_, dynamic_time_, quiet_wall, dynamic_wall);
+        quiet_wall_ = std::chrono::steady_clock::duration(quiet_wall);
+        dynamic_wall_ = std::chrono::steady_clock::duration(dynamic_wall);
+    }
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
     /// The dynamic scheme's order: a quiet step is an equilibrium solve, exact for the linear

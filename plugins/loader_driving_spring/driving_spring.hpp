@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
@@ -30,6 +31,13 @@ namespace frictionlab {
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class DrivingSpring final : public Loader {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(t0_, x_h0_, next_reversal_, started_);
+    }
     /// How the driving point at height h meets the node set: at a node, or interpolated between two.
     enum class Attach { node, interpolated };
     struct Params {

@@ -2,6 +2,7 @@
 #include <string>
 #include <string_view>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
@@ -19,6 +20,13 @@ namespace frictionlab {
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class NormalLoad final : public Loader {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(ramp_start_, started_);
+    }
     enum class Formula { normalised, paper_literal };
     struct Params {
         double total_force = 400;  // F_N, N

@@ -2,6 +2,7 @@
 #include <string>
 #include <string_view>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
@@ -28,6 +29,13 @@ namespace frictionlab {
 /// the plate puts in W + dE = int V sum_j F_j dt.
 class PlateSprings final : public Loader {
 public:
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(x_origin_, t0_, started_);
+    }
     struct Params {
         double stiffness = 3e6;  // k_p per node, N/m
         double velocity = 1e-4;  // V, m/s

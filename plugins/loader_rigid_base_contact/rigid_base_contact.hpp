@@ -21,6 +21,7 @@ namespace frictionlab {
 /// Li, Zhao, Xiong, Liu, Acta Mech. Sin. 36 (2020), doi:10.1007/s10409-020-00955-2.
 class RigidBaseContact final : public Loader {
 public:
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
     struct Params {
         double stiffness_ratio = 0.5;  // K_b / K
         std::string node_set = "interface";

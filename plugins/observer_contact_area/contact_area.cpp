@@ -110,14 +110,14 @@ void ContactArea::begin(const RunView& view) {
         if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
         if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
         b.table = open_table(view.output_directory / fmt::format("{}_block_{}.csv", params_.prefix, i), block_columns,
-                             view.info, params_.format);
+                             view.info, params_.format, view.resuming);
         blocks_.push_back(std::move(b));
     }
     std::vector<std::string> columns{"time",   "step",    "stage",      "junctions",
                                      "pinned", "sliding", "dislocated", "pinned_fraction"};
     if (junction_area_) columns.push_back("contact_area");
-    interface_table_ =
-        open_table(view.output_directory / (params_.prefix + ".csv"), columns, view.info, params_.format);
+    interface_table_ = open_table(view.output_directory / (params_.prefix + ".csv"), columns, view.info, params_.format,
+                                  view.resuming);
     row_.reserve(block_columns.size());
 }
 

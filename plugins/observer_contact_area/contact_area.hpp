@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/table_writer.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
@@ -45,6 +46,14 @@ namespace frictionlab {
 /// nothing runs between observations.
 class ContactArea final : public Observer {
 public:
+    // Checkpoints: what changes as it observes (its tables are cut back and appended to by the run).
+    bool checkpointable() const override { return params_.format == TableFormat::csv; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(fixed_length(blocks_), last_step_);
+    }
     struct Params {
         std::vector<double> blocks{5};  // whole numbers; real_list is the scene's list type
         std::string prefix = "contact_area";
@@ -75,6 +84,10 @@ private:
         double pinned_reference = std::numeric_limits<double>::quiet_NaN();
         double x_at_loading = std::numeric_limits<double>::quiet_NaN();
         std::unique_ptr<TableWriter> table;
+        template <class Archive>
+        void serialize(Archive& ar) {
+            ar(pinned_reference, x_at_loading);
+        }
     };
 
     Bond bond_between(const Body& body, Index node, Index neighbour) const;

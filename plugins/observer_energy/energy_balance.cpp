@@ -42,7 +42,7 @@ void EnergyBalance::begin(const RunView& view) {
     for (const char* total : {"stored_energy", "input", "dissipated_damping", "dissipated_friction", "residual",
                               "relative_residual", "balance_error"})
         names.push_back(total);
-    table_ = std::make_unique<CsvTable>(view.output_directory / params_.file, names, view.info);
+    table_ = open_table(view.output_directory / params_.file, names, view.info, TableFormat::csv, view.resuming);
     row_.reserve(names.size());
     stored_.resize(effects_.size());
 }

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/csv_table.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
@@ -53,6 +54,14 @@ namespace frictionlab {
 /// force evaluation (one pass over the forces per effect and stage).
 class EnergyBalance final : public Observer {
 public:
+    // Checkpoints: what changes as it observes (its tables are cut back and appended to by the run).
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(reference_);
+    }
     struct Params {
         std::string file = "energy.csv";
     };
@@ -69,6 +78,10 @@ private:
     struct Reference {
         double kinetic = 0;
         std::vector<double> stored, work;  // E_e and W_e per effect
+        template <class Archive>
+        void serialize(Archive& ar) {
+            ar(kinetic, stored, work);
+        }
     };
     static double kinetic_energy(const RunView& view);
 
@@ -76,7 +89,7 @@ private:
     std::vector<const Effect*> effects_;  // System::for_each_effect() order, like labels() and work()
     std::vector<Group> groups_;
     std::optional<Reference> reference_;  // the first observation
-    std::unique_ptr<CsvTable> table_;
+    std::unique_ptr<TableWriter> table_;
     std::vector<double> row_, stored_;
 };
 

@@ -26,8 +26,8 @@ void InterfaceHistory::begin(const RunView& view) {
     for (std::size_t b = 0; b < nodes_.size(); ++b) columns.push_back(fmt::format("block_{}", b));
 
     const auto add = [&](const char* file, std::function<double(const RunView&, Index)> value) {
-        tables_.push_back(
-            {open_table(view.output_directory / file, columns, view.info, params_.format), std::move(value)});
+        tables_.push_back({open_table(view.output_directory / file, columns, view.info, params_.format, view.resuming),
+                           std::move(value)});
     };
     add("interface_velocity.csv", [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
     add("interface_slip.csv",

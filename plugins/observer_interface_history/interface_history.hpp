@@ -23,6 +23,8 @@ namespace frictionlab {
 /// between.
 class InterfaceHistory final : public Observer {
 public:
+    // Checkpoints: it keeps nothing but its tables, which the run cuts back and appends to.
+    bool checkpointable() const override { return params_.format == TableFormat::csv; }
     struct Params {
         std::string node_set = "interface";
         TableFormat format = TableFormat::csv;

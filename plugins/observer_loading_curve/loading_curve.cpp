@@ -37,7 +37,7 @@ void LoadingCurve::begin(const RunView& view) {
     std::vector<std::string> names{"time", "step", "stage"};
     for (const auto& c : columns_) names.push_back(c.name);
     if (normal_load_ && driving_force_) names.push_back("driving_force_over_normal_load");
-    table_ = std::make_unique<CsvTable>(view.output_directory / params_.file, names, view.info);
+    table_ = open_table(view.output_directory / params_.file, names, view.info, TableFormat::csv, view.resuming);
     row_.reserve(names.size());
 }
 

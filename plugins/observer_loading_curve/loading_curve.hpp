@@ -13,6 +13,8 @@ namespace frictionlab {
 /// publishes are left out (a scene without friction has no friction column).
 class LoadingCurve final : public Observer {
 public:
+    // Checkpoints: it keeps nothing but its tables, which the run cuts back and appends to.
+    bool checkpointable() const override { return true; }
     struct Params {
         std::string file = "loading_curve.csv";
     };
@@ -33,7 +35,7 @@ private:
     std::vector<Column> columns_;
     const double* normal_load_ = nullptr;
     const double* driving_force_ = nullptr;
-    std::unique_ptr<CsvTable> table_;
+    std::unique_ptr<TableWriter> table_;
     std::vector<double> row_;
 };
 

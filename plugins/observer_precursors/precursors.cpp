@@ -112,10 +112,10 @@ void Precursors::begin(const RunView& view) {
     slip_.resize(n);
     ruptured_.resize(n);
     const TableFormat format = params_.format;
-    events_ = open_table(view.output_directory / params_.events_file, event_columns, view.info, format);
-    fronts_ = open_table(view.output_directory / params_.fronts_file, front_columns, view.info, format);
+    events_ = open_table(view.output_directory / params_.events_file, event_columns, view.info, format, view.resuming);
+    fronts_ = open_table(view.output_directory / params_.fronts_file, front_columns, view.info, format, view.resuming);
     row_.reserve(event_columns.size());
-    write_summary(view, false);
+    if (!view.resuming) write_summary(view, false);
 }
 
 void Precursors::observe(const RunView& view) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/table_writer.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
@@ -45,6 +46,14 @@ namespace frictionlab {
 /// junctions are still being created, is not taken for a rupture.
 class Precursors final : public Observer {
 public:
+    // Checkpoints: what changes as it observes (its tables are cut back and appended to by the run).
+    bool checkpointable() const override { return params_.format == TableFormat::csv; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(as_built(detector_), as_built(slip_criterion_), ruptured_);
+    }
     enum class Criterion { pinned_fraction, slip };
     struct Params {
         Criterion criterion = Criterion::pinned_fraction;
@@ -65,6 +74,7 @@ public:
     Precursors(const Params& p, const Context&);
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
+    void resumed(const RunView& view) override { write_summary(view, false); }
     void end(const RunView& view) override;
 
     /// The summary file's text: what the detector found so far and the run's record.

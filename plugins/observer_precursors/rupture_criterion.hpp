@@ -24,6 +24,11 @@ public:
     SlipRuptureCriterion(double threshold, double window) : threshold_(threshold), window_(window) {}
     void apply(double t, const Eigen::ArrayXd& slip, RuptureMask& out);
 
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(reference_, since_);
+    }
+
 private:
     double threshold_, window_;
     Eigen::ArrayXd reference_, since_;  // per block: slip and time at the last re-arm

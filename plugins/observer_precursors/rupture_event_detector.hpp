@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/state.hpp"
 #include "rupture_criterion.hpp"
 
@@ -35,6 +36,13 @@ struct RuptureEvent {
     double front_speed = 0;         // m/s, see RuptureEventDetector; NaN if unresolved
     double crossing_speed = 0;      // m/s, over the far half of the front's path; NaN if unresolved
 
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, max_slip,
+           ruptured_blocks, global, nucleation_x, min_x, max_x, extent, extent_over_length, front_speed,
+           crossing_speed);
+    }
+
     double duration() const { return t_end - t_start; }
     double force_ratio() const { return normal_load != 0 ? driving_force / normal_load : std::nan(""); }
 };
@@ -55,6 +63,12 @@ struct RuptureSummary {
     double global_time = std::nan("");           // its start, s
     double peak_driving_force = std::nan("");    // largest F_S observed, N
     double peak_time = std::nan("");             // when, s
+
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(events, global_seen, precursors_before_global, global_driving_force, global_normal_load, global_time,
+           peak_driving_force, peak_time);
+    }
 
     double global_static_coefficient() const { return global_driving_force / global_normal_load; }
 };
@@ -110,6 +124,13 @@ public:
     const RuptureEvent* open_event() const { return open_ ? &*open_ : nullptr; }
     const RuptureSummary& summary() const { return summary_; }
     const Interface& interface() const { return interface_; }
+
+    /// What changes as it observes (checkpoints); the geometry and options come from the scene.
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(open_, held_, held_base_slip_, open_slip_since_held_, reported_, reported_count_, last_t_, last_ruptured_t_,
+           previous_slip_, base_slip_, next_index_, summary_);
+    }
 
 private:
     void start(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip, double driving_force,

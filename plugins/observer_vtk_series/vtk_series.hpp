@@ -6,6 +6,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 #include "frictionlab/simulation/run.hpp"
@@ -70,6 +71,14 @@ namespace frictionlab {
 /// the snapshots at their simulated times. In Python: vtk.vtkXMLUnstructuredGridReader per file.
 class VtkSeries final : public Observer {
 public:
+    // Checkpoints: what changes as it observes (its tables are cut back and appended to by the run).
+    bool checkpointable() const override { return true; }
+    void save_state(StateOut& out) const override { out(*this); }
+    void restore_state(StateIn& in) override { in(*this); }
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(datasets_, snapshots_, last_step_);
+    }
     enum class Cells { quads, bonds };
     enum class Points { reference, deformed };
     struct Params {
@@ -90,6 +99,8 @@ public:
     ~VtkSeries() override;
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
+    /// The collection as it was at the checkpoint (the run cut it back to its length then).
+    void resumed(const RunView& view) override { write_collection(view.output_directory); }
     void end(const RunView& view) override;
 
     /// The time a snapshot is listed at in the .pvd: `t` after `steps` steps, rounded to a hundredth

@@ -184,6 +184,39 @@ TEST(Sweep, KilledSweepRerunCompletesOnlyTheMissingCases) {
     for (const auto& [name, row] : sweep_rows(dir / "out" / "sweep.csv")) EXPECT_EQ(row.at("status"), "done") << name;
 }
 
+TEST(Sweep, AKilledCaseResumesFromItsCheckpointWhenTheSweepRunsAgain) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const auto reference = frictionlab("sweep -q " SWEEP_FILES "/resumable_sweep.yaml -o reference", dir);
+    ASSERT_EQ(reference.code, 0) << reference.output;
+    const pid_t sweep = fork();
+    ASSERT_GE(sweep, 0);
+    if (sweep == 0) {
+        fs::current_path(dir);
+        const int null = ::open("/dev/null", O_WRONLY);
+        dup2(null, STDERR_FILENO);
+        execl(FRICTIONLAB_CLI, FRICTIONLAB_CLI, "sweep", "-q", SWEEP_FILES "/resumable_sweep.yaml", "-o", "out", "-j",
+              "1", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    const fs::path case_dir = dir / "out" / "cases" / "seed-3";
+    for (int i = 0; i < 6000 && !fs::exists(case_dir / "checkpoint.previous.bin"); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(fs::exists(case_dir / "checkpoint.previous.bin"));
+    kill(sweep, SIGKILL);  // the case dies with it
+    int status = 0;
+    waitpid(sweep, &status, 0);
+    ASSERT_FALSE(fs::exists(case_dir / "case.yaml"));
+
+    const auto rerun = frictionlab("sweep " SWEEP_FILES "/resumable_sweep.yaml -o out -j 1", dir);
+    ASSERT_EQ(rerun.code, 0) << rerun.output;
+    EXPECT_NE(read_text(dir / "out" / "logs" / "seed-3.log").find("resuming the interrupted case from its checkpoint"),
+              std::string::npos);
+    // Resumed, the case's outputs are those of the sweep never killed.
+    for (const char* file : {"ruptures.csv", "precursors_summary.yaml"})
+        EXPECT_EQ(read_text(case_dir / file), read_text(dir / "reference" / "cases" / "seed-3" / file)) << file;
+    EXPECT_EQ(sweep_rows(dir / "out" / "sweep.csv").at("seed-3").at("status"), "done");
+}
+
 TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     const fs::path dir = frictionlab::testing::work_directory();
     {

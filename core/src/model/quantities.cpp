@@ -1,5 +1,7 @@
 #include "frictionlab/model/quantities.hpp"
 
+#include "frictionlab/base/state_archive.hpp"
+
 #include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
@@ -57,6 +59,40 @@ const Quantities::Field* Quantities::find_field(std::string_view name) const {
 const Quantities::Scalar* Quantities::find_scalar(std::string_view name) const {
     auto it = scalars_.find(name);
     return it == scalars_.end() ? nullptr : &it->second;
+}
+
+void Quantities::save_state(StateOut& out) const {
+    out(static_cast<std::uint64_t>(fields_.size()));
+    for (const auto& [name, f] : fields_) out(name, f.values);
+    out(static_cast<std::uint64_t>(scalars_.size()));
+    for (const auto& [name, s] : scalars_) out(name, s.value);
+}
+
+void Quantities::restore_state(StateIn& in) {
+    const auto mismatch = [](const std::string& name) {
+        return cereal::Exception("the checkpoint's quantity '" + name + "' is not one this run publishes");
+    };
+    std::uint64_t count = 0;
+    in(count);
+    if (count != fields_.size()) throw cereal::Exception("the checkpoint has another set of published fields");
+    for (std::uint64_t k = 0; k < count; ++k) {
+        std::string name;
+        Eigen::ArrayXd values;
+        in(name, values);
+        const auto f = fields_.find(name);
+        if (f == fields_.end() || f->second.values.size() != values.size()) throw mismatch(name);
+        f->second.values = values;  // same size: the storage the effects hold stays put
+    }
+    in(count);
+    if (count != scalars_.size()) throw cereal::Exception("the checkpoint has another set of published scalars");
+    for (std::uint64_t k = 0; k < count; ++k) {
+        std::string name;
+        double value = 0;
+        in(name, value);
+        const auto s = scalars_.find(name);
+        if (s == scalars_.end()) throw mismatch(name);
+        s->second.value = value;
+    }
 }
 
 }  // namespace frictionlab

@@ -28,6 +28,13 @@ CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::str
     append(fmt::format("{}\n", fmt::join(columns, ",")));
 }
 
+CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, Resume)
+    : TableWriter(file), columns_(columns.size()) {
+    fd_ = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd_ < 0) throw RunError(fmt::format("cannot reopen '{}' to resume: {}", file.string(), os_error(errno)));
+    committed_ = static_cast<long long>(::lseek(fd_, 0, SEEK_END));
+}
+
 CsvTable::~CsvTable() {
     if (fd_ >= 0) ::close(fd_);
 }

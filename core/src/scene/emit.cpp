@@ -87,6 +87,12 @@ std::string scene_yaml(const Scene& scene, const Registry& registry, bool with_o
     for (const auto& stage : scene.stages) emit_stage(out, stage);
     out << YAML::EndSeq;
     emit_components(out, "observers", Kind::observer, scene.observers, registry);
+    if (with_output) {  // when to checkpoint, like where to write, is not physics
+        out << YAML::Key << "checkpoint" << YAML::Value << YAML::BeginMap;
+        emit_key(out, "every", scene.checkpoint.every);
+        emit_key(out, "wall_every", scene.checkpoint.wall_every);
+        out << YAML::EndMap;
+    }
     out << YAML::EndMap;
     return std::string(out.c_str()) + "\n";
 }

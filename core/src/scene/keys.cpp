@@ -26,6 +26,11 @@ struct Stage {
     double max_speed_at_end = std::numeric_limits<double>::infinity();
 };
 
+struct CheckpointKeys {
+    double every = 0;
+    double wall_every = 600;
+};
+
 struct LoaderKeys {
     std::vector<std::string> stages;
 };
@@ -49,8 +54,8 @@ const std::vector<ParamInfo>& top_level_params() {
 }
 
 const std::vector<std::string>& top_level_sections() {
-    static const std::vector<std::string> keys = {"plugin_paths", "bulk",   "friction", "loaders",
-                                                  "integrator",   "stages", "observers"};
+    static const std::vector<std::string> keys = {"plugin_paths", "bulk",   "friction",  "loaders",
+                                                  "integrator",   "stages", "observers", "checkpoint"};
     return keys;
 }
 
@@ -62,6 +67,23 @@ const ParamInfo& plugin_paths_param() {
         return s;
     }();
     return spec.params().front();
+}
+
+const std::vector<ParamInfo>& checkpoint_params() {
+    static const ParamSpec<CheckpointKeys> spec = [] {
+        ParamSpec<CheckpointKeys> s;
+        s.add("every", &CheckpointKeys::every,
+              "Simulated time between checkpoints (run --resume continues from the last); 0: none on this clock.")
+            .unit("s")
+            .at_least(0);
+        s.add("wall_every", &CheckpointKeys::wall_every,
+              "Wall-clock time between checkpoints, so that a long run is protected without asking; 0: none on "
+              "this clock. A run interrupted by SIGINT or SIGTERM writes one in any case.")
+            .unit("s")
+            .at_least(0);
+        return s;
+    }();
+    return spec.params();
 }
 
 const std::vector<ParamInfo>& stage_params() {

@@ -80,6 +80,7 @@ public:
             scene.integrator = read_component(Kind::integrator, *integrator, "integrator").spec;
         scene.stages = read_stages(entry(top, "stages"));
         const auto observers = read_components(Kind::observer, entry(top, "observers"), "observers");
+        if (auto checkpoint = entry(top, "checkpoint")) scene.checkpoint = read_checkpoint(*checkpoint);
         check_loader_stages(loaders);
         check_stage_parameters(observers, scene.stages);
         for (const auto& l : loaders) scene.loaders.push_back(l.spec);
@@ -223,6 +224,16 @@ private:
         for (std::size_t i = 0; i < list->value.size(); ++i)
             out.push_back(read_component(kind, unkeyed(list->value[i]), index_path(key, i)));
         return out;
+    }
+
+    CheckpointSpec read_checkpoint(const Entry& given) {
+        const Section s =
+            read_section(given, "checkpoint", {"the checkpoint settings", checkpoint_params(), {}, true}, reporter_);
+        CheckpointSpec checkpoint;
+        checkpoint.every = value_or(s.values, "every", checkpoint.every);
+        checkpoint.wall_every = value_or(s.values, "wall_every", checkpoint.wall_every);
+        checkpoint.given = true;
+        return checkpoint;
     }
 
     std::vector<StageSpec> read_stages(const std::optional<Entry>& list) {

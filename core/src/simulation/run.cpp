@@ -12,6 +12,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <spdlog/details/null_mutex.h>
@@ -19,11 +20,15 @@
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/output/checkpoint_file.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/output_directory.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/simulation.hpp"
 #include "frictionlab/simulation/system.hpp"
+#include "observer_slot.hpp"
+#include "run_checkpoint.hpp"
 #include "scene/emit.hpp"
 
 namespace frictionlab {
@@ -32,34 +37,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// One observer with its cadence: an observer costs in proportion to its cadence.
-struct ObserverSlot {
-    std::unique_ptr<Observer> observer;
-    std::string path;
-    double every = 0;
-    long long every_steps = 0;
-    double next_time = 0;
-    long long last_step = -1;  // an observer sees each step at most once (stage ends, run end)
-
-    bool due(double t, long long step, double tolerance) const {
-        if (every_steps > 0) return step % every_steps == 0;
-        return t >= next_time - tolerance;
-    }
-    /// Schedules the next observation after one at t; `tolerance` must be the one due() used, or an
-    /// observation taken early by up to it would be repeated one step later.
-    void advance(double t, double tolerance) {
-        if (!(every > 0)) return;
-        // Far behind (a cadence much finer than the step): jump, rather than add `every` millions
-        // of times a step; the scene check refuses a cadence too fine to move the sum at all.
-        if (next_time + 1024 * every <= t + tolerance)
-            next_time += std::floor((t + tolerance - next_time) / every) * every;
-        while (next_time <= t + tolerance) {
-            const double next = next_time + every;
-            next_time = next > next_time ? next : std::nextafter(next_time, INFINITY);
-        }
-    }
-};
-
 /// The run's record: what, with what, how far. Rewritten at start and end (and on failure).
 struct RunRecord {
     const RunInfo& info;
@@ -67,6 +44,7 @@ struct RunRecord {
     std::string status = "running";
     std::string error;  // why it failed, or what interrupted it
     RunSummary summary;
+    long long resumed_from_step = -1;  // run --resume: the checkpoint's step
 
     /// Atomically; when the disk is too full even for that (the usual reason a run fails late), in
     /// place, within the room set aside after the previous write, so the record never stays `running`.
@@ -97,6 +75,7 @@ struct RunRecord {
         y << YAML::Key << "overrides" << YAML::Value << YAML::Flow << options.overrides;
         y << YAML::Key << "scene_hash" << YAML::Value << info.scene_hash;
         y << YAML::Key << "seed" << YAML::Value << info.seed;
+        if (resumed_from_step >= 0) y << YAML::Key << "resumed_from_step" << YAML::Value << resumed_from_step;
         y << YAML::Key << "steps" << YAML::Value << summary.steps;
         y << YAML::Key << "evaluations" << YAML::Value << summary.evaluations;
         y << YAML::Key << "simulated_time" << YAML::Value << summary.simulated_time;
@@ -180,14 +159,30 @@ private:
     double stage_wall_ = 0;
 };
 
+/// The components of a run that cannot be checkpointed, by their place in the scene. A scene that
+/// asks for checkpoints (a `checkpoint:` section) with any is an InputError naming them; one that
+/// does not runs without checkpoints.
+std::vector<std::string> not_checkpointable(const Scene& scene, const Simulation& sim,
+                                            const std::vector<const Observer*>& observers) {
+    std::vector<std::string> refusing = sim.system().not_checkpointable();
+    if (!sim.integrator().checkpointable()) refusing.push_back("integrator '" + scene.integrator.type + "'");
+    for (std::size_t i = 0; i < observers.size(); ++i)
+        if (!observers[i]->checkpointable())
+            refusing.push_back(fmt::format("{} '{}'", scene.observers[i].path, scene.observers[i].type));
+    if (!refusing.empty() && scene.checkpoint.given && scene.checkpoint.wanted())
+        throw InputError(
+            fmt::format("checkpoint: these components cannot be checkpointed: {}; leave `checkpoint:` out "
+                        "of the scene (or set every and wall_every to 0) to run without checkpoints",
+                        fmt::join(refusing, ", ")));
+    return refusing;
+}
+
 /// Drives a Simulation through the scene's stages with its observers and records the run.
 class SceneRun {
 public:
     SceneRun(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options)
         : scene_(scene), log_(log), options_(options), sim_(scene, registry, log) {
         sim_.refuse_unstable_steps(!options.allow_unstable_step);
-        // After the components accepted their parameters, so a refusal leaves no directory behind.
-        prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
         output_ = scene.output_directory;
         for (const auto& o : scene.observers) {
             auto observer =
@@ -197,10 +192,21 @@ public:
         if (std::any_of(observers_.begin(), observers_.end(),
                         [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
             sim_.system().enable_work_accounting();
+        check_checkpoints();
+        // After the components accepted their parameters, so a refusal leaves no directory behind.
+        if (!options.resume)
+            prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
+        else if (!created_by_frictionlab(output_))
+            throw InputError(fmt::format("'{}' holds no run of FrictionLab to resume", output_.string()));
     }
 
     RunSummary execute() {
         RunRecord record{sim_.info(), options_, "running", "", {}};
+        std::size_t first_stage = 0;
+        if (options_.resume) {
+            first_stage = resume();
+            record.resumed_from_step = sim_.system().step_index();
+        }
         record.write(output_);
         const auto start = Clock::now();
         const std::clock_t cpu_start = std::clock();
@@ -213,15 +219,17 @@ public:
                               sim_.integrator().statistics()};
         };
         try {
-            run_stages();
+            run_stages(first_stage);
         } catch (const Interrupted& e) {
+            const std::string resumable = checkpoint_at_interruption();
             finish_observers();
             record.status = "interrupted";
             record.error = e.what();
             record.summary = summary();
             record.write(output_);
-            throw Interrupted(fmt::format("{}; the outputs are closed and valid in {}", e.what(), output_.string()),
-                              e.signal);
+            throw Interrupted(
+                fmt::format("{}; the outputs are closed and valid in {}{}", e.what(), output_.string(), resumable),
+                e.signal);
         } catch (const std::exception& e) {
             finish_observers();
             record.status = "failed";
@@ -243,7 +251,7 @@ private:
     RunView view(const StageInfo& stage) {
         const System& sys = sim_.system();
         return RunView{sys,     sys.body(),  sys.state(), sim_.quantities(), stage, sys.step_index(),
-                       output_, sim_.info(), log_};
+                       output_, sim_.info(), log_,        resuming_};
     }
 
     void observe_due(const StageInfo& stage, bool all) {
@@ -262,14 +270,17 @@ private:
         }
     }
 
-    void run_stages() {
+    /// From stage `first`; a resumed run is within it already (its observers begun).
+    void run_stages(std::size_t first) {
         Progress progress(log_, options_.live_progress);
-        for (std::size_t i = 0; i < scene_.stages.size(); ++i) {
-            if (i > 0) stop_if_asked(last_stage_);
-            last_stage_ = sim_.begin_stage(i);
-            if (i == 0)
-                for (auto& o : observers_) o.observer->begin(view(last_stage_));
-            observe_due(last_stage_, i == 0);
+        for (std::size_t i = first; i < scene_.stages.size(); ++i) {
+            if (i > first || !options_.resume) {
+                if (i > 0) stop_if_asked(last_stage_);
+                last_stage_ = sim_.begin_stage(i);
+                if (i == 0)
+                    for (auto& o : observers_) o.observer->begin(view(last_stage_));
+                observe_due(last_stage_, i == 0);
+            }
             progress.stage_started();
             run_stage(last_stage_, progress);
             check_end_of_stage(scene_.stages[i]);
@@ -291,6 +302,7 @@ private:
                 throw RunError(fmt::format("stage '{}', {}", stage.name, e.what()));
             }
             if (!observers_.empty()) observe_due(stage, false);
+            if (checkpoint_due()) write_checkpoint();
             progress.update(stage, sys.time(), sys.step_index());
             stop_if_asked(stage);
         }
@@ -331,6 +343,94 @@ private:
                   spec.max_speed_at_end);
     }
 
+    /// Which components cannot be checkpointed; a scene that asks for checkpoints then is refused,
+    /// one that does not (the default cadence) runs without them, saying so.
+    void check_checkpoints() {
+        std::vector<const Observer*> observers;
+        for (const auto& o : observers_) observers.push_back(o.observer.get());
+        const auto refusing = not_checkpointable(scene_, sim_, observers);
+        if (refusing.empty()) {
+            checkpoints_possible_ = true;
+            schedule_next_checkpoint();
+            return;
+        }
+        const std::string who = fmt::format("{}", fmt::join(refusing, ", "));
+        if (options_.resume) throw InputError(fmt::format("cannot resume: {} cannot be checkpointed", who));
+        log_.info("no checkpoints in this run: {} cannot be checkpointed", who);
+    }
+
+    bool checkpoint_due() const {
+        if (!checkpoints_possible_) return false;
+        const CheckpointSpec& c = scene_.checkpoint;
+        if (c.every > 0 && sim_.system().time() >= next_checkpoint_time_) return true;
+        return c.wall_every > 0 &&
+               std::chrono::duration<double>(Clock::now() - last_checkpoint_wall_).count() >= c.wall_every;
+    }
+
+    /// The first multiple of `every` after the current time, and a wall-clock period from now.
+    void schedule_next_checkpoint() {
+        const double every = scene_.checkpoint.every;
+        if (every > 0) next_checkpoint_time_ = (std::floor(sim_.system().time() / every) + 1) * every;
+        last_checkpoint_wall_ = Clock::now();
+    }
+
+    void write_checkpoint() {
+        const System& sys = sim_.system();
+        RunCheckpoint c = RunCheckpoint::identity_of(sim_.info());
+        c.stage = static_cast<std::uint64_t>(last_stage_.index);
+        c.stage_start = last_stage_.t_start;
+        c.system = archived([&](StateOut& out) { sys.save_state(out); });
+        c.quantities = archived([&](StateOut& out) { sim_.quantities().save_state(out); });
+        c.integrator = archived_state(sim_.integrator());
+        for (const auto& o : observers_) c.observers.push_back({o.next_time, o.last_step, archived_state(*o.observer)});
+        c.outputs = output_lengths(output_);
+        write_checkpoint_file(output_, c.payload());
+        schedule_next_checkpoint();
+        log_.debug("checkpoint at step {}, t = {:.9g} s", sys.step_index(), sys.time());
+    }
+
+    /// After SIGINT or SIGTERM: a checkpoint of the state reached, and how to go on from it.
+    std::string checkpoint_at_interruption() {
+        if (!checkpoints_possible_)
+            return "; this run cannot be resumed (it has components that cannot be checkpointed)";
+        try {
+            write_checkpoint();
+        } catch (const std::exception& e) {
+            return fmt::format("; no checkpoint could be written ({})", e.what());
+        }
+        return fmt::format("; continue it with: frictionlab run --resume {}", output_.string());
+    }
+
+    /// Puts the run back where its last intact checkpoint left it; returns the stage to go on in.
+    std::size_t resume() {
+        const RunCheckpoint c = RunCheckpoint::from_payload(
+            read_checkpoint_file(output_, [&](const std::string& w) { log_.warn("{}", w); }));
+        c.check_same_run(RunCheckpoint::identity_of(sim_.info()));
+        if (c.stage >= scene_.stages.size() || c.observers.size() != observers_.size())
+            throw RunError("the checkpoint does not fit this scene's stages or observers");
+        restore_output_lengths(output_, c.outputs);
+        last_stage_ = sim_.resume_stage(c.stage, c.stage_start);
+        restore_archived(c.system, "the system", [&](StateIn& in) { sim_.system().restore_state(in); });
+        restore_archived(c.quantities, "the published quantities",
+                         [&](StateIn& in) { sim_.quantities().restore_state(in); });
+        restore_archived_state(sim_.integrator(), c.integrator, "integrator '" + scene_.integrator.type + "'");
+        resuming_ = true;
+        for (std::size_t i = 0; i < observers_.size(); ++i) {
+            auto& o = observers_[i];
+            o.observer->begin(view(last_stage_));
+            o.next_time = c.observers[i].next_time;
+            o.last_step = c.observers[i].last_step;
+            restore_archived_state(*o.observer, c.observers[i].state, o.path);
+            o.observer->resumed(view(last_stage_));
+        }
+        resuming_ = false;
+        const System& sys = sim_.system();
+        schedule_next_checkpoint();
+        log_.info("resumed from the checkpoint at step {}, t = {:.9g} s, in stage '{}'", sys.step_index(), sys.time(),
+                  last_stage_.name);
+        return c.stage;
+    }
+
     void finish_observers() {
         for (auto& o : observers_) {
             try {
@@ -348,14 +448,43 @@ private:
     std::filesystem::path output_;
     std::vector<ObserverSlot> observers_;  // after sim_: destroyed first
     StageInfo last_stage_;
+    bool resuming_ = false;  // observers are being begun again on a resumed run
+    bool checkpoints_possible_ = false;
+    double next_checkpoint_time_ = 0;
+    Clock::time_point last_checkpoint_wall_ = Clock::now();
 };
 
 }  // namespace
 
 void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
     Simulation sim(scene, registry, log);
+    std::vector<std::unique_ptr<Observer>> observers;
     for (const auto& o : scene.observers)
-        located_in_scene(o, [&] { return registry.create<Observer>(o.type, o.values, sim.context(o.path)); });
+        observers.push_back(
+            located_in_scene(o, [&] { return registry.create<Observer>(o.type, o.values, sim.context(o.path)); }));
+    std::vector<const Observer*> built;
+    for (const auto& o : observers) built.push_back(o.get());
+    not_checkpointable(scene, sim, built);
+}
+
+std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
+    YAML::Node record;
+    try {
+        record = YAML::LoadFile((dir / "run.yaml").string());
+    } catch (const YAML::Exception&) {
+        return std::nullopt;
+    }
+    if (!record.IsMap() || !record["framework"] || record["framework"].as<std::string>("") != "frictionlab")
+        return std::nullopt;
+    RecordedRun run;
+    run.scene_file = record["scene_file"].as<std::string>("");
+    if (const auto overrides = record["overrides"]; overrides && overrides.IsSequence())
+        for (const auto& o : overrides) run.overrides.push_back(o.as<std::string>(""));
+    run.status = record["status"].as<std::string>("");
+    run.scene_hash = record["scene_hash"].as<std::string>("");
+    for (const char* name : {checkpoint_file_name, "checkpoint.next.bin", previous_checkpoint_file_name})
+        run.has_checkpoint = run.has_checkpoint || std::filesystem::exists(dir / name);
+    return run;
 }
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {

@@ -136,6 +136,14 @@ StageInfo Simulation::begin_stage(std::size_t index) {
     return stage;
 }
 
+StageInfo Simulation::resume_stage(std::size_t index, double t_start) {
+    const StageSpec& spec = scene_.stages.at(index);
+    StageInfo stage{spec.name, static_cast<int>(index), t_start, spec.duration, spec.friction_events};
+    system_->resume_stage(stage);
+    log_.info("stage {} '{}' resumed (begun at t = {:.6g} s)", stage.index + 1, stage.name, stage.t_start);
+    return stage;
+}
+
 void Simulation::check_stability(const StageInfo& stage) {
     const double radius = integrator_->stability_radius(), dt = integrator_->nominal_dt();
     if (!std::isfinite(radius)) return;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "frictionlab/base/hot_kernel.hpp"
+#include "frictionlab/base/state_archive.hpp"
 
 namespace frictionlab {
 
@@ -211,6 +212,28 @@ void System::begin_stage(const StageInfo& stage) {
     activate(&stage);
     const StageView s = state();
     for (const Slot* slot : active_) slot->effect->begin_stage(stage, s);
+}
+
+void System::save_state(StateOut& out) const {
+    out(t_, steps_, evaluations_, y_, work_, pending_work_);
+    for (const Slot& slot : slots_) slot.effect->save_state(out);
+}
+
+void System::restore_state(StateIn& in) {
+    Eigen::VectorXd y;
+    std::vector<double> work, pending;
+    in(t_, steps_, evaluations_, y, work, pending);
+    if (y.size() != y_.size() || work.size() != work_.size() || pending.size() != pending_work_.size())
+        throw cereal::Exception("the checkpoint's state vector or work accounting does not fit this scene");
+    y_ = std::move(y), work_ = std::move(work), pending_work_ = std::move(pending);
+    for (Slot& slot : slots_) slot.effect->restore_state(in);
+}
+
+std::vector<std::string> System::not_checkpointable() const {
+    std::vector<std::string> names;
+    for (const Slot& slot : slots_)
+        if (!slot.effect->checkpointable()) names.push_back(slot.effect->describe());
+    return names;
 }
 
 void System::refresh() {

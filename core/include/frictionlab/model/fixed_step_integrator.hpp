@@ -13,6 +13,7 @@ struct FixedStepParams {
 
 class FixedStepIntegrator : public Integrator {
 public:
+    bool checkpointable() const override { return true; }  // its scratch arrays are refilled every step
     using Params = FixedStepParams;
     double nominal_dt() const override { return dt_; }
 

@@ -44,6 +44,9 @@ public:
     ~Observer() override;
     virtual void begin(const RunView&) {}
     virtual void observe(const RunView&) = 0;
+    /// On a run resumed from a checkpoint, after begin() (with RunView::resuming) and restore_state():
+    /// rewrite any file this observer writes whole (a summary, a collection) from the restored state.
+    virtual void resumed(const RunView&) {}
     /// Called once at the end, also when the run fails, so outputs stay valid.
     virtual void end(const RunView&) {}
     /// Whether this observer reads System::work(): the run then switches work accounting on before

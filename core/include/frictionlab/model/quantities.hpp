@@ -18,6 +18,8 @@
 
 #include <Eigen/Core>
 
+#include "frictionlab/model/component.hpp"
+
 namespace frictionlab {
 
 class Quantities {
@@ -51,6 +53,10 @@ public:
     const Field* find_field(std::string_view name) const;
     const Scalar* find_scalar(std::string_view name) const;
     const std::map<std::string, Field, std::less<>>& fields() const { return fields_; }
+    /// Checkpoints: every value as the last evaluation or commit left it (junction counts, say,
+    /// change only at commits), by name.
+    void save_state(StateOut& out) const;
+    void restore_state(StateIn& in);
     const std::map<std::string, Scalar, std::less<>>& scalars() const { return scalars_; }
 
 private:

@@ -18,6 +18,9 @@ public:
     /// Creates the file; refuses (InputError) one that exists already, which in a run's fresh
     /// output directory means another observer writes it.
     CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info);
+    /// Appends to the table a resumed run left (run --resume; its header and sidecar are there).
+    struct Resume {};
+    CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, Resume);
     ~CsvTable() override;
     CsvTable(const CsvTable&) = delete;
     CsvTable& operator=(const CsvTable&) = delete;

@@ -27,8 +27,9 @@ protected:
 enum class TableFormat { csv, hdf5 };
 
 /// Opens a table at `file` (e.g. out/interface_velocity.csv); in HDF5 its extension becomes .h5.
+/// `resume` (RunView::resuming): append to the table a resumed run left, as it was at the checkpoint.
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
-                                        const RunInfo& info, TableFormat format);
+                                        const RunInfo& info, TableFormat format, bool resume = false);
 
 /// Declares an observer's `format` parameter (csv or hdf5), the same for every observer with tables.
 template <class P>

@@ -16,6 +16,8 @@ const std::vector<std::string>& top_level_sections();
 const ParamInfo& plugin_paths_param();
 /// name, duration, friction_events, max_speed_at_end.
 const std::vector<ParamInfo>& stage_params();
+/// The `checkpoint:` section's keys (every, wall_every).
+const std::vector<ParamInfo>& checkpoint_params();
 /// Keys beside `type` that the scene, not the plugin, reads: a loader's `stages`, an observer's cadence.
 const std::vector<ParamInfo>& scene_level_params(Kind kind);
 

@@ -47,6 +47,14 @@ struct StageSpec {
     double max_speed_at_end = std::numeric_limits<double>::infinity();
 };
 
+/// When a run writes checkpoints (share/docs/checkpoints.md); not physics: outside the scene hash.
+struct CheckpointSpec {
+    double every = 0;         // simulated s between checkpoints; 0: none on this clock
+    double wall_every = 600;  // wall-clock s between checkpoints; 0: none on this clock
+    bool given = false;       // the scene asked for them (a component that cannot is then an error)
+    bool wanted() const { return every > 0 || wall_every > 0; }
+};
+
 struct Scene {
     std::filesystem::path file;
     std::string hash;  // of the resolved scene text (defaults filled in) without `output:`, hex
@@ -60,6 +68,7 @@ struct Scene {
     ComponentSpec integrator;
     std::vector<StageSpec> stages;
     std::vector<ComponentSpec> observers;
+    CheckpointSpec checkpoint;
     /// The scene with every default written out, as YAML: what run.yaml records.
     std::string resolved_yaml;
 };

@@ -42,6 +42,7 @@ public:
     System& system() { return *system_; }
     const System& system() const { return *system_; }
     Integrator& integrator() { return *integrator_; }
+    const Integrator& integrator() const { return *integrator_; }
     Quantities& quantities() { return quantities_; }
     /// Version, scene hash, seed and the plugins that provide the scene's components.
     const RunInfo& info() const { return info_; }
@@ -53,6 +54,9 @@ public:
     /// stable step of the stage's pipeline (stability.hpp) and throws InputError, naming the limit
     /// and the effect that sets it, if the integrator's step is above it, unless told not to.
     StageInfo begin_stage(std::size_t index);
+    /// Makes stage `index`, begun at `t_start`, the current one again, for a run resumed within it
+    /// (its effects and the system then restore their state from the checkpoint).
+    StageInfo resume_stage(std::size_t index, double t_start);
     /// Whether begin_stage refuses a step above the estimated stable step (default) or only warns.
     void refuse_unstable_steps(bool refuse) { refuse_unstable_ = refuse; }
     /// One integrator step, no longer than max_dt. Throws RunError, naming the step, time, block

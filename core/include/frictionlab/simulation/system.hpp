@@ -86,6 +86,9 @@ public:
     void add_straight_path_work(double t1, const Eigen::VectorXd& y1);
 
     void begin_stage(const StageInfo& stage);
+    /// Makes `stage` the current one without beginning it: for a run resumed within it, whose
+    /// effects then restore the state they had (restore_state).
+    void resume_stage(const StageInfo& stage) { activate(&stage); }
     /// Evaluates every active effect at the accepted state, so published quantities and net_force()
     /// describe it (observers call this; its cost is proportional to their cadence).
     void refresh();
@@ -107,6 +110,13 @@ public:
     /// Work (J) each part of the pipeline has done on the nodes since accounting began, in the
     /// order of for_each_effect(); empty without accounting.
     const std::vector<double>& work() const { return work_; }
+    /// Checkpoints: the accepted state, its time and counters, the work so far and every effect's
+    /// own state (Component::save_state), in the order the effects were added.
+    void save_state(StateOut& out) const;
+    /// Reads what save_state() wrote into a system built from the same scene, its stage begun.
+    void restore_state(StateIn& in);
+    /// describe() of every effect that cannot be checkpointed (Component::checkpointable).
+    std::vector<std::string> not_checkpointable() const;
     /// Number of derivative evaluations the integrator asked for so far: the cost of the time
     /// stepping (refresh() for observers is not counted).
     long long evaluations() const { return evaluations_; }

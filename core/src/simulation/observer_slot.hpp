@@ -1,0 +1,38 @@
+#pragma once
+// One observer of a run with its cadence: an observer costs in proportion to its cadence.
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "frictionlab/model/kinds.hpp"
+
+namespace frictionlab {
+
+struct ObserverSlot {
+    std::unique_ptr<Observer> observer;
+    std::string path;
+    double every = 0;
+    long long every_steps = 0;
+    double next_time = 0;
+    long long last_step = -1;  // an observer sees each step at most once (stage ends, run end)
+
+    bool due(double t, long long step, double tolerance) const {
+        if (every_steps > 0) return step % every_steps == 0;
+        return t >= next_time - tolerance;
+    }
+    /// Schedules the next observation after one at t; `tolerance` must be the one due() used, or an
+    /// observation taken early by up to it would be repeated one step later.
+    void advance(double t, double tolerance) {
+        if (!(every > 0)) return;
+        // Far behind (a cadence much finer than the step): jump, rather than add `every` millions
+        // of times a step; the scene check refuses a cadence too fine to move the sum at all.
+        if (next_time + 1024 * every <= t + tolerance)
+            next_time += std::floor((t + tolerance - next_time) / every) * every;
+        while (next_time <= t + tolerance) {
+            const double next = next_time + every;
+            next_time = next > next_time ? next : std::nextafter(next_time, INFINITY);
+        }
+    }
+};
+
+}  // namespace frictionlab
