@@ -10,8 +10,7 @@
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/simulation/system.hpp"
-#include "rk4.hpp"
-#include "velocity_verlet.hpp"
+#include "frictionlab/plugins/registry.hpp"
 
 namespace frictionlab {
 
@@ -22,9 +21,13 @@ constexpr int max_attempts = 4;
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<Integrator> dynamic_scheme(const Params& p, const Context& ctx) {
-    if (p.dynamic == QuasiStaticHybrid::Dynamic::velocity_verlet)
-        return std::make_unique<VelocityVerlet>(VelocityVerlet::Params{p.dt}, ctx);
-    return std::make_unique<Rk4>(Rk4::Params{p.dt}, ctx);
+    const char* type = p.dynamic == QuasiStaticHybrid::Dynamic::velocity_verlet ? "velocity_verlet" : "rk4";
+    if (!ctx.registry)
+        throw InputError(
+            fmt::format("quasi_static_hybrid builds its dynamic scheme ({}) through the run's registry, "
+                        "which its context lacks",
+                        type));
+    return ctx.registry->create<Integrator>(type, ParamValues{{"dt", p.dt}}, ctx);
 }
 
 std::string hold_rule(const Params& p) {

@@ -47,7 +47,9 @@ protected:
         ParamValues values;
         for (const auto& p : t->params) values[p.key] = p.default_value;
         if (values.count("dt")) values["dt"] = dt;
-        return shipped().create<Integrator>(GetParam(), values, rig.services.context());
+        Context ctx = rig.services.context();
+        ctx.registry = &shipped();  // the quasi-static stepper builds its dynamic scheme through it
+        return shipped().create<Integrator>(GetParam(), values, ctx);
     }
 
     /// Phase-space error at t = 2 s (0.64 of a period: at whole periods some first-order errors

@@ -113,7 +113,7 @@ void Simulation::check_needed_fields() const {
 Simulation::~Simulation() = default;
 
 Context Simulation::context(const std::string& name) {
-    return Context{log_, scene_.seed, bulk_ ? &bulk_->body() : nullptr, &quantities_, &aux_, name};
+    return Context{log_, scene_.seed, bulk_ ? &bulk_->body() : nullptr, &quantities_, &aux_, name, &registry_};
 }
 
 void Simulation::record_plugin(const ComponentSpec& component, Kind kind) {

@@ -8,9 +8,12 @@
 #include <spdlog/logger.h>
 
 #include "frictionlab/model/effect.hpp"
+#include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/system.hpp"
 #include "oscillator.hpp"
 #include "quasi_static_hybrid.hpp"
+#include "rk4.hpp"
+#include "velocity_verlet.hpp"
 
 namespace frictionlab {
 namespace {
@@ -47,12 +50,20 @@ private:
 
 Body one_node() { return test_support::one_node(m); }
 
+/// The explicit schemes the hybrid builds its dynamic phase from, as a run's registry holds them.
+const Registry& dynamic_schemes() {
+    static Registry registry;
+    static const bool filled = (registry.add<Rk4>(), registry.add<VelocityVerlet>(), true);
+    (void)filled;
+    return registry;
+}
+
 /// The hybrid with a dynamic step fit for this slow oscillator (omega dt = 1e-2).
 QuasiStaticHybrid make_hybrid(spdlog::logger& log, QuasiStaticHybrid::Params p = {}) {
     p.dt = 1e-4;
     p.check_interval = 1e-3;
     p.quiet_hold = 1e-2;
-    return QuasiStaticHybrid(p, Context{log, 0, nullptr, nullptr, nullptr, "integrator"});
+    return QuasiStaticHybrid(p, Context{log, 0, nullptr, nullptr, nullptr, "integrator", &dynamic_schemes()});
 }
 
 TEST(QuasiStaticHybrid, QuietPhaseGivesTheExactSteadyResponseWithItsViscousLag) {

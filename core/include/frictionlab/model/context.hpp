@@ -11,6 +11,8 @@
 
 namespace frictionlab {
 
+class Registry;
+
 /// Slices of the aux part of the state vector, handed out to effects at construction.
 struct AuxAllocator {
     Index count = 0;
@@ -28,6 +30,9 @@ struct Context {
     Quantities* quantities = nullptr;
     AuxAllocator* aux = nullptr;
     std::string name;  // where the component stands in the scene, e.g. "loaders[1]"
+    /// The run's types, for a component that builds another by its type name as a scene would
+    /// (the quasi-static stepper's dynamic scheme) instead of linking another plugin's code.
+    const Registry* registry = nullptr;
 };
 
 }  // namespace frictionlab
