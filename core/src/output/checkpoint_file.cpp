@@ -123,7 +123,8 @@ std::string read_checkpoint_file(const fs::path& dir, const std::function<void(c
     if (problems.empty())
         throw RunError(
             fmt::format("'{}' holds no checkpoint to resume from (a run writes one at its `checkpoint:` "
-                        "cadence and when SIGINT or SIGTERM stops it)",
+                        "cadence and when SIGINT or SIGTERM stops it); run the scene again with --overwrite to "
+                        "start afresh",
                         dir.string()));
     throw RunError(fmt::format("no intact checkpoint in '{}': {}", dir.string(), fmt::join(problems, "; ")));
 }
