@@ -155,6 +155,29 @@ def test_ctrl_c_stops_a_run_from_python_cleanly(tmp_path):
     assert rows == pytest.approx(meta["simulated_time"] / 2e-5, abs=2)
 
 
+def test_a_run_stopped_by_ctrl_c_resumes_from_python_to_the_same_outputs(tmp_path):
+    """SIGINT writes a checkpoint; Scene.run(resume=True) goes on from it, and the tables come out as
+    an uninterrupted run writes them."""
+    overrides = ["stages[1].duration=0.04", "checkpoint={every: 0.001, wall_every: 0}"]
+    whole = frictionlab.Scene.load(SCENE, set=overrides).run(output=str(tmp_path / "whole"))
+    out = tmp_path / "out"
+    script = (f"import frictionlab\n"
+              f"frictionlab.Scene.load({SCENE!r}, set={overrides!r}).run(output={str(out)!r})\n")
+    child = subprocess.Popen([sys.executable, "-c", script], stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and child.poll() is None and not (out / "checkpoint.bin").exists():
+        time.sleep(0.05)
+    assert child.poll() is None, child.stderr.read()
+    child.send_signal(signal.SIGINT)
+    child.communicate(timeout=60)
+    assert yaml.safe_load(open(out / "run.yaml"))["status"] == "interrupted"
+    resumed = frictionlab.Scene.load(SCENE, set=overrides).run(output=str(out), resume=True)
+    assert yaml.safe_load(open(out / "run.yaml"))["status"] == "completed"
+    for name in ("loading_curve.csv", "precursors.csv", "interface_velocity.csv"):
+        assert open(os.path.join(resumed.directory, name)).read() == \
+            open(os.path.join(whole.directory, name)).read(), name
+
+
 def test_the_plot_script_reads_hdf5_runs(hdf5_run, source_dir):
     script = os.path.join(source_dir, "share", "scripts", "frictionlab_plot.py")
     out = os.path.join(hdf5_run.directory, "plots")

@@ -87,7 +87,7 @@ class Scene:
         return self._core.resolved_yaml
 
     def run(self, output: Optional[str] = None, progress: bool = False, overwrite: bool = False,
-            allow_unstable_step: bool = False, log_level: str = "warn") -> Run:
+            allow_unstable_step: bool = False, resume: bool = False, log_level: str = "warn") -> Run:
         """Runs the scene in this process and returns its Run.
 
         output               output directory; as `frictionlab run -o` (an override of `output:`, so
@@ -95,14 +95,17 @@ class Scene:
         progress             one live progress line on stderr
         overwrite            replace an output directory FrictionLab created (`--overwrite`)
         allow_unstable_step  run a time step above the estimated stable one
+        resume               go on from the last checkpoint of the stopped run in the output directory
+                             (`frictionlab run --resume`; share/docs/checkpoints.md)
         log_level            trace, debug, info, warn, error or off (log lines go to stderr)
 
         The GIL is released while stepping. Ctrl-C (SIGINT) stops the run between two steps: its
         tables are closed, run.yaml records status "interrupted" with the step and time reached, and
-        KeyboardInterrupt is raised. A run that fails raises RunError; bad input InputError.
+        KeyboardInterrupt is raised; a checkpoint is written, so run(..., resume=True) goes on from
+        there. A run that fails raises RunError; bad input InputError.
         """
         summary = self._core.run(None if output is None else os.fspath(output), progress, overwrite,
-                                 allow_unstable_step, log_level)
+                                 allow_unstable_step, resume, log_level)
         return open_run(str(summary["output"]))
 
     def __repr__(self) -> str:
