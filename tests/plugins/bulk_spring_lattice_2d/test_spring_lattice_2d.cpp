@@ -92,11 +92,12 @@ TEST(SpringLattice2d, SpecDeclaresEveryKeyWithDocAndDefaults) {
         EXPECT_FALSE(spec.params()[i].doc.empty()) << keys[i];
     }
     EXPECT_EQ(spec.params()[9].choices, (std::vector<std::string>{"geometric", "small_strain"}));
-    ASSERT_EQ(spec.erased_rules().size(), 2u);
-    EXPECT_FALSE(spec.erased_rules()[0].check({{"nz", std::int64_t{10}}}).empty());
-    EXPECT_TRUE(spec.erased_rules()[0].check({}).empty());
+    const auto rules = spec.erased_rules();  // by value: a reference into the temporary would dangle
+    ASSERT_EQ(rules.size(), 2u);
+    EXPECT_FALSE(rules[0].check({{"nz", std::int64_t{10}}}).empty());
+    EXPECT_TRUE(rules[0].check({}).empty());
     // The size rule: 2048 x 2048 nodes is the limit; one column more is refused with its memory.
-    const auto& size = spec.erased_rules()[1];
+    const auto& size = rules[1];
     EXPECT_EQ(size.key, "nx");
     EXPECT_TRUE(size.check({{"nx", std::int64_t{2048}}, {"nz", std::int64_t{2048}}}).empty());
     EXPECT_EQ(size.check({{"nx", std::int64_t{2049}}, {"nz", std::int64_t{2048}}}),
