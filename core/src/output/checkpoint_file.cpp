@@ -98,7 +98,7 @@ bool is_run_record(const fs::path& relative) {
 
 void write_checkpoint_file(const fs::path& dir, std::string_view payload) {
     const WholeWrite whole;
-    const fs::path current = dir / checkpoint_file_name, next = dir / "checkpoint.next.bin";
+    const fs::path current = dir / checkpoint_file_name, next = dir / next_checkpoint_file_name;
     write_durably(next, header(payload) + std::string(payload));
     std::error_code ec;
     if (fs::exists(current)) fs::rename(current, dir / previous_checkpoint_file_name, ec);
@@ -110,8 +110,7 @@ void write_checkpoint_file(const fs::path& dir, std::string_view payload) {
 
 std::string read_checkpoint_file(const fs::path& dir, const std::function<void(const std::string&)>& warn) {
     std::vector<std::string> problems;
-    // A write stopped between its two renames leaves only checkpoint.next.bin, complete and synced.
-    for (const char* name : {checkpoint_file_name, "checkpoint.next.bin", previous_checkpoint_file_name}) {
+    for (const char* name : checkpoint_files) {
         const fs::path file = dir / name;
         if (!fs::exists(file)) continue;
         std::string problem;

@@ -9,6 +9,7 @@
 // rewrite whole, small ones from their state), so cutting every file back to the length it had
 // when the checkpoint was written, and removing the files created after it, puts the directory
 // back where the checkpoint left it.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -21,6 +22,12 @@ namespace frictionlab {
 
 inline constexpr const char* checkpoint_file_name = "checkpoint.bin";
 inline constexpr const char* previous_checkpoint_file_name = "checkpoint.previous.bin";
+/// The new checkpoint before it is renamed into place: a write stopped between its two renames
+/// leaves it complete and synced.
+inline constexpr const char* next_checkpoint_file_name = "checkpoint.next.bin";
+/// Every checkpoint file, in the order a resume tries them.
+inline constexpr std::array<const char*, 3> checkpoint_files = {checkpoint_file_name, next_checkpoint_file_name,
+                                                                previous_checkpoint_file_name};
 
 /// Writes `payload` as the newest checkpoint of `dir`, the current one becoming the previous one.
 /// Throws RunError naming the file and the system's reason.
