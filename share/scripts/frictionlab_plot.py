@@ -12,7 +12,8 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
                   the lattice's shear and Rayleigh wave speeds c_S and c_R for reference
   energy          the energy balance: input, stored, kinetic, dissipated, residual
   lattice         the lattice around the first global slip (its VTU snapshot), coloured by slip
-                  velocity, displacement magnified
+                  velocity, displacement magnified: rendered by VTK offscreen (under a private Xvfb
+                  without an X display), so PNG only
 and, over all the runs given (into -o, default the first run's plots/): precursor_lengths, l/L
 against F_S/F_N (Li2020 Figs. 7, 8), and with several runs loading_curves, F_S/F_N overlaid.
 
@@ -34,16 +35,27 @@ log-log, one curve per family of cases.
 Each figure is a short function below: adapt them freely.
 """
 import argparse
+import contextlib
 import csv
+import ctypes
+import ctypes.util
 import glob
 import os
 import re
+import select
+import shutil
+import signal
+import subprocess
 import sys
+import tempfile
+import xml.etree.ElementTree as ElementTree
 
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.font_manager  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 
@@ -379,42 +391,312 @@ def energy(run, out_dir):
     save(fig, out_dir, "energy")
 
 
-def lattice(run, out_dir, magnify=200.0):
-    """The VTU snapshot nearest after the first global slip started (or the last one), read with
-    VTK's reader: cells at their reference positions plus the displacement magnified, coloured by
-    the x slip velocity of their nodes."""
+class RenderUnavailable(Exception):
+    """VTK cannot render here; the message says why and what to install."""
+
+
+def display_answers(name):
+    """True if the X display `name` accepts a connection and offers GLX, as VTK's X render window
+    needs: asked through Xlib first, since VTK aborts the whole process on a display it cannot open."""
+    try:
+        xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
+    except OSError:
+        return False
+    xlib.XOpenDisplay.restype = ctypes.c_void_p
+    xlib.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    xlib.XQueryExtension.argtypes = [ctypes.c_void_p, ctypes.c_char_p] + [ctypes.POINTER(ctypes.c_int)] * 3
+    xlib.XCloseDisplay.argtypes = [ctypes.c_void_p]
+    display = xlib.XOpenDisplay(name.encode())
+    if not display:
+        return False
+    codes = [ctypes.c_int() for _ in range(3)]
+    glx = xlib.XQueryExtension(display, b"GLX", *(ctypes.byref(c) for c in codes))
+    xlib.XCloseDisplay(display)
+    return bool(glx)
+
+
+def stop_with_parent():
+    """In a child before it starts: SIGTERM for it when this process ends, even killed (Linux's
+    PR_SET_PDEATHSIG), so that no Xvfb outlives a plot stopped by a batch system."""
+    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM)
+
+
+@contextlib.contextmanager
+def x_display():
+    """An X display for the block: $DISPLAY if it answers, else a private Xvfb (Debian's VTK renders
+    only through an X server, which batch nodes and CI lack), always stopped afterwards."""
+    if os.environ.get("DISPLAY") and display_answers(os.environ["DISPLAY"]):
+        yield
+        return
+    if not shutil.which("Xvfb"):
+        raise RenderUnavailable("no X display, and no Xvfb to start one (Debian: xvfb)")
+    # -displayfd: Xvfb takes a free display number itself (no collision with another run) and writes
+    # it to the pipe once it accepts clients.
+    ready, number_fd = os.pipe()
+    with tempfile.TemporaryFile() as log:
+        server = subprocess.Popen(["Xvfb", "-displayfd", str(number_fd), "-screen", "0", "1600x1200x24",
+                                   "-nolisten", "tcp"], pass_fds=(number_fd,), stdout=log, stderr=log,
+                                  preexec_fn=stop_with_parent)
+        os.close(number_fd)
+        saved = os.environ.get("DISPLAY")
+        try:
+            with os.fdopen(ready) as f:  # Xvfb closes it, unwritten, if it fails
+                number = f.readline().strip() if select.select([f], [], [], 30)[0] else ""
+            if not number:
+                log.seek(0)
+                last = (log.read().decode(errors="replace").strip().splitlines() or ["no message"])[-1]
+                raise RenderUnavailable(f"Xvfb did not start ({last})")
+            os.environ["DISPLAY"] = ":" + number
+            yield
+        finally:
+            if saved is None:
+                os.environ.pop("DISPLAY", None)
+            else:
+                os.environ["DISPLAY"] = saved
+            server.terminate()
+            server.wait()
+
+
+def lattice_snapshot(run):
+    """The path and time of the VTU snapshot nearest after the first global slip started (or of the
+    last one); None without a lattice series."""
     pvd = os.path.join(run, "lattice.pvd")
     if not os.path.exists(pvd):
-        return
-    try:
-        import xml.etree.ElementTree as ElementTree
-        import vtk
-        from vtk.util.numpy_support import vtk_to_numpy
-    except ImportError:
-        print("frictionlab plot: no VTK for Python (Debian: python3-vtk9); lattice figure skipped", file=sys.stderr)
-        return
+        return None
     snapshots = [(float(d.get("timestep")), d.get("file")) for d in ElementTree.parse(pvd).getroot().iter("DataSet")]
     if not snapshots:
-        return
+        return None
     events = table(run, "precursors.csv")
     chosen = snapshots[-1]
     if events is not None and (events["global"] > 0.5).any():
         t_global = events["t_start"][events["global"] > 0.5][0]
         later = [s for s in snapshots if s[0] >= t_global]
         chosen = later[0] if later else chosen
+    return os.path.join(run, chosen[1]), chosen[0]
+
+
+def lattice(run, out_dir, magnify=200.0):
+    """The lattice around the first global slip: its VTU snapshot (points at their reference
+    positions) warped by the displacement less its mean, magnified, coloured by the nodes' x
+    velocity. Rendered by VTK offscreen, PNG only (a render is a raster); drawn with matplotlib
+    where VTK cannot render."""
+    snapshot = lattice_snapshot(run)
+    if snapshot is None:
+        return
+    try:
+        import vtk
+        from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    except ImportError:
+        print("frictionlab plot: no VTK for Python (Debian: python3-vtk9); lattice figure skipped", file=sys.stderr)
+        return
     reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(run, chosen[1]))
+    reader.SetFileName(snapshot[0])
     reader.Update()
     grid = reader.GetOutput()
-    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
     data = grid.GetPointData()
-    if grid.GetNumberOfCells() == 0 or data.GetArray("displacement") is None:
+    if grid.GetNumberOfCells() == 0 or data.GetArray("displacement") is None or data.GetArray("velocity") is None:
         return
-    displacement = vtk_to_numpy(data.GetArray("displacement"))[:, :2]
+    displacement = vtk_to_numpy(data.GetArray("displacement"))
     # The slider's rigid slip would hide its deformation: magnify the displacement less its mean.
-    deformed = points + magnify * (displacement - displacement.mean(axis=0))
-    velocity = vtk_to_numpy(data.GetArray("velocity"))[:, 0]
+    mean = displacement.mean(axis=0)
+    deformation = numpy_to_vtk(displacement - mean, deep=True)
+    deformation.SetName("deformation")
+    data.AddArray(deformation)
+    title = (f"{run_label(run)}\nlattice at {(snapshot[1] - loading_start(run)) * 1e3:.3f} ms since loading "
+             f"started, deformation (displacement less its mean {mean[0] * 1e6:.1f} µm in x) ×{magnify:g}")
+    try:
+        with x_display():
+            render_lattice(grid, title, magnify, out_dir)
+    except RenderUnavailable as why:
+        print(f"frictionlab plot: VTK cannot render the lattice: {why}; drawn with matplotlib instead", file=sys.stderr)
+        draw_lattice(grid, title, magnify, out_dir)
+
+
+def round_ticks(lo, hi):
+    """matplotlib's round tick values between lo and hi, and a printf format showing them alike."""
+    slack = 1e-9 * (hi - lo)
+    ticks = [t for t in matplotlib.ticker.MaxNLocator(nbins=5).tick_values(lo, hi) if lo - slack <= t <= hi + slack]
+    step = ticks[1] - ticks[0] if len(ticks) > 1 else abs(lo) or 1.0
+    decimals = max(0, -int(np.floor(np.log10(step))))
+    if abs(step * 10 ** decimals - round(step * 10 ** decimals)) > 1e-6:  # a step of 2.5 or 0.25
+        decimals += 1
+    return ticks, f"%.{decimals}f"
+
+
+def vtk_text(string, position, size, world=False, **settings):
+    """A VTK text actor in the other figures' font at `position` (display pixels, or world
+    coordinates); `settings` name vtkTextProperty setters, e.g. Justification=1."""
+    import vtk
+
+    actor = vtk.vtkTextActor()
+    actor.SetInput(string)
+    prop = actor.GetTextProperty()
+    prop.SetFontFamily(vtk.VTK_FONT_FILE)
+    prop.SetFontFile(matplotlib.font_manager.findfont("DejaVu Sans"))
+    prop.SetFontSize(size)
+    prop.SetColor(0, 0, 0)
+    for key, value in settings.items():
+        getattr(prop, "Set" + key)(value)
+    if world:
+        actor.GetPositionCoordinate().SetCoordinateSystemToWorld()
+    actor.GetPositionCoordinate().SetValue(*position)
+    return actor
+
+
+def lattice_axes(reference, frame, px, size):
+    """x and z axes in mm as actors in the lattice's plane, `px` metres a pixel: a little off the
+    `frame` (x0, x1, z0, z1) round the lattice, spanning round values of its reference extent (the
+    deformation is magnified, the size is not). Lines and texts, not vtkAxisActor2D, which places
+    every label by the widest one, off its tick."""
+    import vtk
+
+    points, segments, actors = vtk.vtkPoints(), vtk.vtkCellArray(), []
+    for name, (lo, hi), base in (("x", reference[0:2], frame[2] - 14 * px), ("z", reference[2:4], frame[0] - 14 * px)):
+        ticks, number = round_ticks(lo * 1e3, hi * 1e3)
+        labels = [number % t for t in ticks]
+        ticks = [t / 1e3 for t in ticks]
+
+        def at(along, across):  # a point of the plane by its place along and across the axis
+            return (along, across, 0) if name == "x" else (across, along, 0)
+
+        ends = [(at(ticks[0], base), at(ticks[-1], base))] + [(at(t, base), at(t, base - 10 * px)) for t in ticks]
+        for a, b in ends:
+            segments.InsertNextCell(2, [points.InsertNextPoint(a), points.InsertNextPoint(b)])
+        # Labels centred below the x ticks, and left of the z ticks, ending there.
+        placement = dict(Justification=1, VerticalJustification=2) if name == "x" else \
+            dict(Justification=2, VerticalJustification=1)
+        for t, label in zip(ticks, labels):
+            actors.append(vtk_text(label, at(t, base - 15 * px), size, world=True, **placement))
+        # The axis title clears the labels: below them for x, left of the widest for z (turned).
+        clearance = 2.4 * size if name == "x" else 16 + 0.62 * size * max(map(len, labels)) + 0.8 * size
+        actors.append(vtk_text(f"{name} (mm)", at(0.5 * (ticks[0] + ticks[-1]), base - clearance * px), size,
+                               world=True, Justification=1, VerticalJustification=1,
+                               Orientation=0 if name == "x" else 90))
+    lines = vtk.vtkPolyData()
+    lines.SetPoints(points)
+    lines.SetLines(segments)
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputData(lines)
+    actors.append(vtk.vtkActor())
+    actors[-1].SetMapper(mapper)
+    actors[-1].GetProperty().SetColor(0, 0, 0)
+    actors[-1].GetProperty().SetLineWidth(2)
+    return actors
+
+
+def render_lattice(grid, title, magnify, out_dir):
+    """lattice.png rendered by VTK offscreen: the lattice warped by its 'deformation' array, axes,
+    a colour bar with its unit; the PNG says so in its Software text."""
+    import vtk
+
+    warp = vtk.vtkWarpVector()
+    warp.SetInputData(grid)
+    warp.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, "deformation")
+    warp.SetScaleFactor(magnify)
+    warp.Update()
+    # Slip velocity rather than the shear/normal ratio: the ratio lives on the interface row only,
+    # while a slip sets the whole slider above it moving, so the velocity shows in every cell which
+    # part has slipped and which is still stuck.
+    lut = vtk.vtkLookupTable()
+    lut.SetNumberOfTableValues(256)
+    for k, rgba in enumerate(plt.get_cmap("magma")(np.linspace(0, 1, 256))):  # as the spacetime figure
+        lut.SetTableValue(k, *rgba)
+    lut.SetVectorModeToComponent()
+    lut.SetVectorComponent(0)
+    lut.SetRange(grid.GetPointData().GetArray("velocity").GetRange(0))
+    mapper = vtk.vtkDataSetMapper()
+    mapper.SetInputConnection(warp.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("velocity")
+    mapper.SetLookupTable(lut)
+    mapper.UseLookupTableScalarRangeOn()
+    mapper.InterpolateScalarsBeforeMappingOn()
+    cells = vtk.vtkActor()
+    cells.SetMapper(mapper)
+    cells.GetProperty().LightingOff()  # colours exactly as on the colour bar
+    cells.GetProperty().EdgeVisibilityOn()
+    cells.GetProperty().SetEdgeColor(0.5, 0.5, 0.5)
+
+    # Pixels: the lattice as large as fits a 1600 x 1200 window (the Xvfb screen) beside the z axis
+    # (left), the colour bar (right), the title (top) and the x axis (bottom); the window at least
+    # 1400 wide, for the title.
+    size = 28  # of the labels' font
+    left, right, bottom = 130, 270, 125
+    top = 55 + round(1.3 * size * (title.count("\n") + 1))
+    # The frame holds the deformed lattice and the axes, which span its reference extent.
+    reference, deformed = grid.GetBounds(), warp.GetOutput().GetBounds()
+    x0, x1, z0, z1 = ((min if k % 2 == 0 else max)(reference[k], deformed[k]) for k in range(4))
+    scale = min((1600 - left - right) / (x1 - x0), (1200 - top - bottom) / (z1 - z0))  # pixels a metre
+    pad = max(0, 1400 - left - right - scale * (x1 - x0)) / 2
+    left, right = left + pad, right + pad
+    width, height = round(left + right + scale * (x1 - x0)), round(top + bottom + scale * (z1 - z0))
+
+    renderer = vtk.vtkRenderer()
+    renderer.SetBackground(1, 1, 1)
+    renderer.AddActor(cells)
+    for actor in lattice_axes(reference, (x0, x1, z0, z1), 1 / scale, size):
+        renderer.AddActor(actor)
+    camera = renderer.GetActiveCamera()
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(height / (2 * scale))
+    centre = (0.5 * (x0 + x1) - (left + 0.5 * scale * (x1 - x0) - 0.5 * width) / scale,
+              0.5 * (z0 + z1) - (bottom + 0.5 * scale * (z1 - z0) - 0.5 * height) / scale)
+    camera.SetFocalPoint(*centre, 0)
+    camera.SetPosition(*centre, 1)
+    camera.SetViewUp(0, 1, 0)
+    renderer.ResetCameraClippingRange()
+
+    bar = vtk.vtkScalarBarActor()
+    bar.SetLookupTable(lut)
+    ticks, number = round_ticks(*lut.GetRange())
+    marks = vtk.vtkDoubleArray()
+    for t in ticks:
+        marks.InsertNextValue(t)
+    bar.UseCustomLabelsOn()
+    bar.SetCustomLabels(marks)
+    bar.SetLabelFormat(number)
+    bar.UnconstrainedFontSizeOn()
+    bar.SetLabelTextProperty(vtk_text("", (0, 0), size).GetTextProperty())
+    bar.SetPosition((width - right + 40) / width, bottom / height)
+    bar.SetPosition2(160 / width, (height - top - bottom) / height)
+    renderer.AddActor(bar)
+    renderer.AddActor(vtk_text("slip velocity vₓ (m/s)", (width - right + 240, bottom + (height - top - bottom) / 2),
+                               size, Orientation=90, Justification=1, VerticalJustification=1))
+    # VTK draws no mathtext: run_label's $F_N$ and $\theta$ as plain text.
+    renderer.AddActor(vtk_text(title.replace("\\theta", "θ").replace("$", ""), (width / 2, height - 25), size - 2,
+                               Justification=1, VerticalJustification=2, LineSpacing=1.15))
+
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    if not window.SupportsOpenGL():
+        raise RenderUnavailable("the X display offers no OpenGL 3.2 for VTK to render with")
+    window.SetSize(width, height)
+    window.SetMultiSamples(8)
+    window.AddRenderer(renderer)
+    try:
+        window.Render()
+        image = vtk.vtkWindowToImageFilter()
+        image.SetInput(window)
+        image.ReadFrontBufferOff()
+        os.makedirs(out_dir, exist_ok=True)
+        png = vtk.vtkPNGWriter()
+        png.SetInputConnection(image.GetOutputPort())
+        png.SetFileName(os.path.join(out_dir, "lattice.png"))
+        png.AddText("Software", f"VTK {vtk.vtkVersion.GetVTKVersion()} offscreen render")
+        png.Write()
+    finally:
+        window.Finalize()  # closes the X connection while its server, perhaps our Xvfb, still runs
+    print(os.path.join(out_dir, "lattice.png"))
+
+
+def draw_lattice(grid, title, magnify, out_dir):
+    """lattice.png and .svg drawn with matplotlib, for where VTK cannot render."""
     from matplotlib.collections import PolyCollection
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    data = grid.GetPointData()
+    deformed = (vtk_to_numpy(grid.GetPoints().GetData()) + magnify * vtk_to_numpy(data.GetArray("deformation")))[:, :2]
+    velocity = vtk_to_numpy(data.GetArray("velocity"))[:, 0]
     cells = [[grid.GetCell(c).GetPointId(k) for k in range(grid.GetCell(c).GetNumberOfPoints())]
              for c in range(grid.GetNumberOfCells())]
     fig, ax = plt.subplots(figsize=(9, 3.2))
@@ -424,12 +706,9 @@ def lattice(run, out_dir, magnify=200.0):
     ax.autoscale_view()
     ax.set_aspect("equal")
     fig.colorbar(polygons, ax=ax, label="slip velocity $v_x$ (m/s)", shrink=0.8)
-    t0 = loading_start(run)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("z (mm)")
-    ax.set_title(f"{run_label(run)}\nlattice at {(chosen[0] - t0) * 1e3:.3f} ms since loading started, "
-                 f"deformation (displacement less its mean {displacement.mean(axis=0)[0] * 1e6:.1f} um in x) x{magnify:g}",
-                 fontsize=8)
+    ax.set_title(title, fontsize=8)
     save(fig, out_dir, "lattice")
 
 
