@@ -71,6 +71,29 @@ double BlockJunctions::max_pinned_force(double x) const {
     return std::max(std::abs(b_max_ + kx), std::abs(b_min_ + kx));
 }
 
+Index BlockJunctions::elastic_active(double dx) const {
+    const double kdx = c_.k_s * dx;
+    Index n = 0;
+    for (std::size_t j = at(pinned_); j < junctions_.size(); ++j) {
+        const double f = base_[j] + kdx;
+        n += f > lo_[j] && f < hi_[j];
+    }
+    return n;
+}
+
+double BlockJunctions::time_to_separation(double dx, double v) const {
+    double next = infinity;
+    const double kdx = c_.k_s * dx;
+    for (std::size_t j = at(pinned_); j < junctions_.size(); ++j) {
+        const double s = junctions_[j].sign;
+        // Only a dislocated junction moved against its direction s unloads towards g = 0.
+        if (state_[j] != JunctionState::dislocated || s * v >= 0) continue;
+        const double g = s * clamp(base_[j] + kdx, lo_[j], hi_[j]);
+        next = std::min(next, std::max(0.0, g / (c_.k_s * std::abs(v))));
+    }
+    return next;
+}
+
 void BlockJunctions::advance(double dx) {
     const double kdx = c_.k_s * dx;
     for (std::size_t j = at(pinned_); j < junctions_.size(); ++j) base_[j] = clamp(base_[j] + kdx, lo_[j], hi_[j]);

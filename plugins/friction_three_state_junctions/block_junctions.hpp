@@ -103,6 +103,12 @@ public:
     double time_to_threshold(double x, double v, double threshold) const;
     /// Largest |f| over pinned junctions at x, from the aggregates; 0 if none.
     double max_pinned_force(double x) const;
+    /// Active junctions strictly between their bounds after the block moved by dx from x_start:
+    /// those whose force changes with x (at k_s), the others being held at mu_d p or cap(phi).
+    Index elastic_active(double dx) const;
+    /// How long until a dislocated junction's tangential part g reaches 0 (separation, C6) if the
+    /// block moves on at velocity v from x_start + dx: +infinity if none will, 0 if one is there.
+    double time_to_separation(double dx, double v) const;
 
     /// Commit step 1: advances every active force from x_start to x.
     void advance(double dx);

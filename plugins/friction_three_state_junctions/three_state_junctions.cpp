@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -28,6 +29,9 @@ constexpr Index initial_capacity = 256;
 // P_b / p within this of an integer counts as that integer: counts must not hinge on the last bit.
 constexpr double count_tolerance = 1e-9;
 constexpr std::uint64_t removal_slot = ~std::uint64_t{0};
+// Shortest time over which the rate of P_b is taken (it foresees count changes): Newton's tolerance
+// on positions leaves ~1e-6 N of round-off in P_b, so 1 us gives ~1 N/s of noise at worst.
+constexpr double rate_interval = 1e-6;
 
 std::string angle_rule(const Params& p) {
     const double m = p.mu_d * std::tan(p.initial_angle);
@@ -151,6 +155,9 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
         x_start_.push_back(ctx.body->x0[node]);
     }
     removal_draws_.assign(nodes_.size(), 0);
+    normal_.assign(nodes_.size(), 0.0);
+    normal_rate_.assign(nodes_.size(), 0.0);
+    rate_base_.assign(nodes_.size(), 0.0);
     for (Index i = 0; i < n; ++i) publish_counts(i);
 }
 
@@ -188,24 +195,27 @@ double ThreeStateJunctions::potential_energy(const StageView& s) const {
     return force_squared / (2 * k_s_);
 }
 
-bool ThreeStateJunctions::quasi_static_regime(const StageView&) const {
-    return std::all_of(blocks_.begin(), blocks_.end(), [](const BlockJunctions& b) { return b.pinned() == b.size(); });
-}
+bool ThreeStateJunctions::quasi_static_regime(const StageView&) const { return true; }
 
-void ThreeStateJunctions::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
-    for (std::size_t i = 0; i < nodes_.size(); ++i)
-        if (blocks_[i].pinned() > 0)
-            stiffness.emplace_back(nodes_[i], nodes_[i], static_cast<double>(blocks_[i].pinned()) * k_s_);
+void ThreeStateJunctions::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        const BlockJunctions& b = blocks_[i];
+        const Index elastic = b.pinned() + b.elastic_active(s.x[nodes_[i]] - x_start_[i]);
+        if (elastic > 0) stiffness.emplace_back(nodes_[i], nodes_[i], static_cast<double>(elastic) * k_s_);
+    }
 }
 
 double ThreeStateJunctions::foreseen_event_time(const StageView& s) const {
-    if (!events_) return infinity;
-    double next = infinity;
+    double counts = infinity, next = infinity;
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        const Index node = nodes_[i];
-        next = std::min(next, s.t + blocks_[i].time_to_threshold(s.x[node], s.vx[node], threshold_));
+        counts = std::min(counts, time_to_count_change(static_cast<Index>(i)));
+        if (!events_) continue;
+        const BlockJunctions& b = blocks_[i];
+        const double x = s.x[nodes_[i]], v = s.vx[nodes_[i]];
+        next = std::min(next, b.time_to_threshold(x, v, threshold_));
+        if (b.pinned() < b.size()) next = std::min(next, b.time_to_separation(x - x_start_[i], v));
     }
-    return next;
+    return std::min(normal_time_ + counts, s.t + next);
 }
 
 void ThreeStateJunctions::begin_stage(const StageInfo& stage, const StageView& s) {
@@ -224,6 +234,8 @@ void ThreeStateJunctions::commit(const StageView& end, double /*dt*/) {
         commit_block(static_cast<Index>(i), end.x[nodes_[i]], end.t);
         next_event_ = std::min(next_event_, blocks_[i].next_deadline());
     }
+    normal_time_ = end.t;
+    if (end.t - rate_base_time_ >= rate_interval) rate_base_time_ = end.t;
 }
 
 void ThreeStateJunctions::commit_block(Index i, double x, double t) {
@@ -237,6 +249,7 @@ void ThreeStateJunctions::commit_block(Index i, double x, double t) {
         repin_overloaded(b, x);
     update_active(b, i, x, t);
     follow_normal_force(b, i, x);
+    follow_normal_rate(i, t);
     b.refresh_active();
     b.refresh_pinned(x);
     publish_counts(i);
@@ -323,6 +336,27 @@ void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double
     const auto high = static_cast<Index>(std::ceil(ratio - count_tolerance));
     while (b.size() < low) b.add_pinned(x);
     while (b.size() > high) b.remove(removal_choice(b, i, x));
+}
+
+void ThreeStateJunctions::follow_normal_rate(Index i, double t) {
+    // The rate over at least rate_interval: over a very short step (a quiet step to an event) the
+    // difference of P_b is round-off.
+    const auto k = static_cast<std::size_t>(i);
+    normal_[k] = (*normal_force_)[i];
+    if (t - rate_base_time_ < rate_interval) return;
+    normal_rate_[k] = (normal_[k] - rate_base_[k]) / (t - rate_base_time_);
+    rate_base_[k] = normal_[k];
+}
+
+double ThreeStateJunctions::time_to_count_change(Index i) const {
+    // The count changes when P_b / p leaves (n - 1, n + 1) (follow_normal_force): when P_b, going
+    // on at its rate between the last two commits, reaches (n + 1) p or (n - 1) p.
+    const auto k = static_cast<std::size_t>(i);
+    const double rate = normal_rate_[k], n = static_cast<double>(blocks_[k].size());
+    const double time = rate > 0            ? ((n + 1) * p_ - normal_[k]) / rate
+                        : rate < 0 && n > 0 ? (normal_[k] - (n - 1) * p_) / -rate
+                                            : infinity;
+    return time > 0 ? time : infinity;  // not ahead: the commit has judged it
 }
 
 Index ThreeStateJunctions::removal_choice(const BlockJunctions& b, Index i, double x) {

@@ -87,7 +87,8 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(fixed_length(blocks_), x_start_, removal_draws_, events_, next_event_);
+        ar(fixed_length(blocks_), x_start_, normal_, normal_rate_, rate_base_, normal_time_, rate_base_time_,
+           removal_draws_, events_, next_event_);
     }
     enum class Removal { random, most_loaded_pinned, non_pinned_first };
     /// What a pinned junction does above mu_s p while friction events are off (settling, B.18).
@@ -125,10 +126,16 @@ public:
     void commit(const StageView& end, double dt) override;
     double next_event_time() const override { return next_event_; }
     double potential_energy(const StageView& s) const override;
-    /// Quasi-static regime: every junction pinned (the force is then B_p + N_p k_s x per block,
-    /// linear). Its stiffness is N_p k_s on the block's x; its foreseen event the first pinned
-    /// junction to reach mu_s p at the blocks' velocities (none while friction events are off).
-    /// Count changes (B.7) stay judged at commits, as in every step.
+    /// Quasi-static regime: always. Between discrete events every junction's force is piecewise
+    /// linear in its block's position: k_s for pinned junctions and for sliding or dislocated ones
+    /// off their bound, 0 for those held at mu_d p or cap(phi) (the stage law of B.17 is exact for
+    /// a monotone path, so a quiet step may cross a bound). Foreseen events: the first pinned
+    /// junction to reach mu_s p and the first dislocated one to separate (g = 0) at the blocks'
+    /// velocities (none while friction events are off); scheduled ones: the sliding and dislocated
+    /// clocks. Count changes (B.7) stay judged at commits, as in every step, and are foreseen too: when
+    /// P_b, going on at its rate between the last two commits, leaves the band of the count (in a
+    /// quiet phase P_b follows the drive linearly, so a quiet step ends where a fine dynamic run
+    /// forms or removes the junction). The angle decay stays at commits (B.17).
     bool quasi_static_regime(const StageView&) const override;
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
     double foreseen_event_time(const StageView& s) const override;
@@ -147,6 +154,10 @@ private:
     void end_dislocated(BlockJunctions& b, Index j, double x) const;
     void decay_angle(BlockJunctions& b, Index j, double t) const;
     void follow_normal_force(BlockJunctions& b, Index i, double x);
+    /// Records block i's P_b at the commit at t and its rate since the last one.
+    void follow_normal_rate(Index i, double t);
+    /// How long after the last commit block i's count changes if P_b goes on at its rate.
+    double time_to_count_change(Index i) const;
     Index removal_choice(const BlockJunctions& b, Index i, double x);
     Index random_index(Index i, Index first, Index end);
     void check_settled(const StageInfo&, const StageView&) const;
@@ -163,6 +174,9 @@ private:
     NodeSet nodes_;
     std::vector<BlockJunctions> blocks_;
     std::vector<double> x_start_;
+    std::vector<double> normal_, normal_rate_;     // each block's P_b at the last commit (N), and its rate (N/s)
+    std::vector<double> rate_base_;                // P_b where the rate was last taken
+    double normal_time_ = 0, rate_base_time_ = 0;  // the last commit's time; where the rate was last taken
     std::vector<std::uint64_t> removal_draws_;
     const Eigen::ArrayXd* normal_force_;
     Eigen::ArrayXd* friction_force_;

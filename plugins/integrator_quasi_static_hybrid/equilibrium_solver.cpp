@@ -8,6 +8,8 @@ namespace frictionlab {
 namespace {
 /// A Newton or refinement iteration whose correction shrinks by less than this is not converging.
 constexpr double contraction = 0.5;
+/// Fresh factorisations one equilibrium() may make where Newton stalls.
+constexpr int max_renewals = 3;
 }  // namespace
 
 bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::VectorXd& y) {
@@ -37,9 +39,13 @@ bool EquilibriumSolver::equilibrium(System& system, double t, Eigen::VectorXd& y
     // A kept K that made the last solve slow is renewed first.
     if (stale_ && !refactorise(system, t, y)) return false;
     if (factorised_ && newton(system, t, y)) return true;
-    // The kept K is too far from the current one: again from the guess, with K anew.
+    // Newton stalled where the kept K is too far from the current one, or where a contact or a
+    // junction's bound is crossed (the forces are piecewise smooth): K anew where it stalled, a few
+    // times (each renewal takes the branches of the iterate reached).
+    for (int renewal = 0; renewal < max_renewals; ++renewal)
+        if (refactorise(system, t, y) && newton(system, t, y)) return true;
     y.head(dof) = guess_;
-    return refactorise(system, t, y) && newton(system, t, y);
+    return false;
 }
 
 bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
@@ -62,10 +68,16 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
     return false;
 }
 
+bool EquilibriumSolver::in_equilibrium(System& system, double t, const Eigen::VectorXd& y) {
+    if (!factorised_) return false;
+    node_forces(system, t, y, forces_);
+    const auto scaled = forces_.array().abs() / stiffness_.diagonal().array();
+    return scaled.maxCoeff() <= s_.position_tolerance;
+}
+
 bool EquilibriumSolver::steady_velocity(System& system, double t, Eigen::VectorXd& y) {
     // The drive's rate dF/dt; the later evaluation first, so the quantities the effects publish
     // describe (t, y) after it.
-    const Index dof = 2 * system.layout().nodes;
     node_forces(system, t + s_.rate_step, y, later_);
     node_forces(system, t, y, forces_);
     rhs_ = (later_ - forces_) / s_.rate_step;

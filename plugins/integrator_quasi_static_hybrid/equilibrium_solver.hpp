@@ -51,6 +51,9 @@ public:
     /// The steady velocities K^{-1} dF/dt at (t, y), written into y's velocities (call after
     /// equilibrium(), whose factorisation it uses). False if the refinement does not converge.
     bool steady_velocity(System& system, double t, Eigen::VectorXd& y);
+    /// Whether y balances at t: every node's residual force, over its diagonal stiffness, within
+    /// position_tolerance. False without a factorisation (nothing to compare with).
+    bool in_equilibrium(System& system, double t, const Eigen::VectorXd& y);
 
     const Counts& counts() const { return counts_; }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <fmt/format.h>
 #include <spdlog/logger.h>
@@ -18,6 +19,18 @@ namespace {
 using Params = QuasiStaticHybrid::Params;
 /// Quiet steps redone to an earlier event their mean velocity foresees, before the dynamic scheme takes over.
 constexpr int max_attempts = 4;
+/// A quiet step may end this fraction of the dynamic step after an event its mean velocity foresees:
+/// the reference resolves events to its whole step, and the mean velocity of a very short step
+/// carries Newton's tolerance over its length.
+constexpr double event_slack = 0.1;
+/// Quiet steps in a row shorter than the dynamic step before the dynamic scheme takes over.
+constexpr int max_short_steps = 4;
+/// The secant velocity of a quiet step is taken when its round-off, position_tolerance / h, is below
+/// quiet_speed / secant_margin.
+constexpr double secant_margin = 10;
+/// A check that the velocities are far (10 quiet_speed) from the steady ones of the last full check
+/// needs no static solve; a full one is made at least every this many checks all the same.
+constexpr int full_check_every = 10;
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<Integrator> dynamic_scheme(const Params& p, const Context& ctx) {
@@ -50,6 +63,13 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
         "Effects that cannot describe their quasi-static regime keep the run dynamic.");
     s.choice("dynamic", &Params::dynamic, {{"rk4", Dynamic::rk4}, {"velocity_verlet", Dynamic::velocity_verlet}},
              "Explicit scheme of the dynamic phase.");
+    s.choice("scheduled_events", &Params::scheduled_events,
+             {{"dynamic", ScheduledEvents::dynamic}, {"quasi_static", ScheduledEvents::quasi_static}},
+             "Spans with a scheduled event pending (a junction sliding or dislocated, its clock running): "
+             "'dynamic' integrates them with the dynamic scheme, as the reference does (a junction breaking in a "
+             "quiet phase hands over to it); 'quasi_static' crosses them in static solves from event to event, "
+             "each broken junction's jump solved at once (faster; share/docs/quasi-static.md gives its measured "
+             "accuracy).");
     s.add("dt", &Params::dt, "Time step of the dynamic phase.").unit("s").greater_than(0);
     s.add("quiet_speed", &Params::quiet_speed,
           "The dynamic phase may turn quiet while every node's velocity is within this of the quasi-static "
@@ -111,6 +131,7 @@ std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() cons
             {"dynamic_steps", static_cast<double>(dynamic_steps_)},
             {"switches_to_quiet", static_cast<double>(to_quiet_)},
             {"switches_to_dynamic", static_cast<double>(to_dynamic_)},
+            {"quiet_jumps", static_cast<double>(jumps_)},
             {"static_solves", static_cast<double>(solver_.counts().solves)},
             {"factorisations", static_cast<double>(solver_.counts().factorisations)}};
 }
@@ -137,6 +158,7 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
         }
         quiet_ = false;
         ++to_dynamic_;
+        log_.debug("quasi_static_hybrid: dynamic from t = {:.9g} s: {}", system.time(), why_dynamic_);
         calm_since_ = std::numeric_limits<double>::quiet_NaN();
         next_check_ = system.time() + p_.check_interval;
     }
@@ -145,7 +167,10 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     dynamic_time_ += h;
     if (system.time() >= next_check_) {
         next_check_ = system.time() + p_.check_interval;
-        if (may_turn_quiet(system)) quiet_ = true, ++to_quiet_;
+        if (may_turn_quiet(system)) {
+            quiet_ = true, ++to_quiet_, short_steps_ = 0;
+            log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
+        }
     }
     dynamic_wall_ += Clock::now() - start;
     return h;
@@ -154,14 +179,26 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
 bool QuasiStaticHybrid::may_turn_quiet(System& system) {
     const double t = system.time();
     const Index n = system.layout().nodes;
-    bool calm = system.quasi_static_regime(system.state());
-    if (calm) {
+    // The run turns quiet only when no clock runs (however scheduled_events crosses them once quiet):
+    // the aftermath of a rupture, its junctions sliding and re-pinning by the thousand, is dynamic.
+    bool calm = system.quasi_static_regime(system.state()) && no_scheduled_event(system);
+    const auto velocities = system.y().segment(2 * n, 2 * n);
+    // While the lattice still rings far from the steady velocities of the last full check, the
+    // static solves of a full check would only confirm it.
+    if (calm && steady_.size() == velocities.size() && ++checks_since_full_ < full_check_every &&
+        (velocities - steady_).lpNorm<Eigen::Infinity>() > 10 * p_.quiet_speed)
+        calm = false;
+    else if (calm) {
         // The quasi-static state of this time: equilibrium with the current velocities held, and
         // the steady velocities there, which the current ones must be close to.
+        checks_since_full_ = 0;
         y_ = system.y();
-        calm =
-            solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_) &&
-            (system.y().segment(2 * n, 2 * n) - y_.segment(2 * n, 2 * n)).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
+        if (solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_)) {
+            steady_ = y_.segment(2 * n, 2 * n);
+            calm = (velocities - steady_).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
+        } else {
+            steady_.resize(0), calm = false;  // no quasi-static state to compare with
+        }
     }
     if (!calm) {
         calm_since_ = std::numeric_limits<double>::quiet_NaN();
@@ -171,40 +208,75 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system) {
     if (t - calm_since_ < p_.quiet_hold * (1 - 1e-9)) return false;
     // Turning quiet: the first quiet step starts from the quasi-static state of this time (the
     // projection), equilibrium with the steady velocities held.
-    projected_ = solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_);
+    projected_ = quasi_static_state(system, t);
     return projected_;
+}
+
+bool QuasiStaticHybrid::no_scheduled_event(const System& system) {
+    return system.next_event_time() == std::numeric_limits<double>::infinity();
+}
+
+bool QuasiStaticHybrid::quasi_static_state(System& system, double t) {
+    // The dashpots carry C v: with the steady velocities found, the balance is solved again with
+    // them held, else the next step would start with a shift K^-1 C (v_new - v_old) to make up.
+    return solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_) &&
+           solver_.equilibrium(system, t, y_);
 }
 
 bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // From the projected state just after turning quiet (y_ then holds it), else from the accepted one.
     if (!projected_) y_ = system.y();
-    projected_ = false;
-    const StageView s = view_of(y_, system.layout(), system.time());
-    if (!system.quasi_static_regime(s)) return false;
+    const bool projected = std::exchange(projected_, false);
+    const StateLayout& layout = system.layout();
     const double t = system.time();
+    if (!system.quasi_static_regime(view_of(y_, layout, t)))
+        return why_dynamic_ = "an effect left its quasi-static regime", false;
+    if (p_.scheduled_events == ScheduledEvents::dynamic && !no_scheduled_event(system))
+        return why_dynamic_ = "a scheduled event is pending", false;
+    // The last commit may have changed the forces at fixed positions (a junction broke, entered the
+    // dislocated state or was removed): the static response to that change, a jump, comes first.
+    // If its new loads bring another junction to its threshold, the next step is a short one to it.
+    bool jumped = false;
+    if (!projected && !solver_.in_equilibrium(system, t, y_)) {
+        jumped = true;
+        if (!quasi_static_state(system, t)) return why_dynamic_ = "no static solution", false;
+        ++jumps_;
+    }
     // Scheduled events at or before t have been judged by the last commit.
     const double scheduled = system.next_event_time();
-    double event =
-        std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(), system.foreseen_event_time(s));
-    const Index n = system.layout().nodes;
+    double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
+                            system.foreseen_event_time(view_of(y_, layout, t)));
+    const Index dof = 2 * layout.nodes;
     start_ = y_;
     system.begin_step();
     // The events are foreseen at the start's velocities; the step's own mean velocity (q1 - q0)/h
     // may foresee an earlier one (the drive changed at a stage start, junction counts changed the
     // response): then the step is redone to it. For a linear response the mean velocity is exact.
     for (int attempt = 0;; ++attempt) {
-        if (event - t < p_.dt || attempt == max_attempts) return false;  // integrate through it
+        if (attempt == max_attempts) return why_dynamic_ = "events foreseen ever earlier", false;
         h = std::min({max_dt, p_.max_quiet_step, event + p_.event_overshoot - t});
         const double t1 = t + h;
         y_ = start_;
-        y_.head(2 * n) += h * start_.segment(2 * n, 2 * n);  // the linear response as the first guess
-        if (!solver_.equilibrium(system, t1, y_) || !solver_.steady_velocity(system, t1, y_)) return false;
+        y_.head(dof) += h * start_.segment(dof, dof);  // the linear response as the first guess
+        if (!solver_.equilibrium(system, t1, y_)) return why_dynamic_ = "no static solution", false;
+        // From a balanced start the response to the drive is (near) linear: its secant over the
+        // step is the steady velocity (a jump or the turn to quiet solved for it at the start).
+        // Over a short step (to an event) the secant would carry Newton's tolerance divided by
+        // the step: the velocities then stay as they were.
+        if (h * p_.quiet_speed >= secant_margin * p_.position_tolerance)
+            y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
         mean_ = start_;
-        mean_.segment(2 * n, 2 * n) = (y_.head(2 * n) - start_.head(2 * n)) / h;
-        const double foreseen = system.foreseen_event_time(view_of(mean_, system.layout(), t));
-        if (foreseen + p_.event_overshoot >= t1) break;
+        mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
+        const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
+        if (foreseen + p_.event_overshoot + event_slack * p_.dt >= t1) break;
+        log_.trace("quasi_static_hybrid: step from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
+                   t, t1, foreseen, event, jumped);
         event = foreseen;
     }
+    // Events closer together than the dynamic step (a cascade of breaks spreading, the clocks of
+    // many junctions running out): the dynamic scheme takes them as the reference does, cheaper.
+    short_steps_ = h < p_.dt ? short_steps_ + 1 : 0;
+    if (short_steps_ > max_short_steps) return why_dynamic_ = "events closer together than the dynamic step", false;
     const double t1 = t + h;
     system.add_straight_path_work(t1, y_);
     system.accept(t1, y_);

@@ -13,32 +13,39 @@ namespace frictionlab {
 /// Quasi-static / dynamic hybrid stepper (share/docs/quasi-static.md): quiet phases crossed in a
 /// few static solves, ruptures integrated by an explicit scheme at its own step.
 ///
-/// Quiet phase: every active effect is in its quasi-static regime (Effect::quasi_static_regime:
-/// all junctions pinned, contact set known). Each quiet step jumps from t to the first of: the next
-/// scheduled event (Effect::next_event_time: a lifetime ending, a drive reversal), the earliest
-/// foreseen one (Effect::foreseen_event_time at the steady velocities: a pinned junction reaching
-/// mu_s p, a contact opening), the next observation or stage end (the run passes them within
-/// max_dt), and max_quiet_step. There it solves static equilibrium with the steady velocity field
-/// held (the viscous lag, EquilibriumSolver), sets the velocities to that field and commits. A step
-/// to a foreseen event overshoots it by event_overshoot so the strict threshold is crossed.
+/// Quiet phase: every active effect is in its quasi-static regime (Effect::quasi_static_regime) and,
+/// with scheduled_events dynamic, no scheduled event is pending (no junction clock runs). Each quiet
+/// step jumps from t to the first of: the next scheduled event (Effect::next_event_time: a lifetime
+/// ending, a drive reversal), the earliest foreseen one (Effect::foreseen_event_time: a pinned
+/// junction reaching mu_s p, a count change, a contact opening), the next observation or stage end
+/// (the run passes them within max_dt), and max_quiet_step. There it solves static equilibrium with
+/// the velocities held (the viscous lag, EquilibriumSolver), sets the velocities to the step's
+/// secant and commits. A step to a foreseen event overshoots it by event_overshoot so the strict
+/// threshold is crossed; a commit that changed forces at fixed positions is followed by the static
+/// response to it (a jump) before the next step.
 ///
 /// Dynamic phase: the scene's explicit scheme (rk4 or velocity_verlet) at its step dt. It starts
-/// when an effect leaves its regime (a junction broke at a commit) or an event is foreseen within
-/// one step dt. Every check_interval of simulated time the stepper checks whether it may return:
-/// every effect in its regime, and the state within quiet_speed of the quasi-static one (largest
-/// |v - v*| over the nodes, v* the steady velocities at the equilibrium of that time). It returns
-/// only when this has held at every check for quiet_hold: the hysteresis that keeps a marginal case
-/// (a ringing lattice, a junction close to its threshold) from switching at every check. On return
-/// the residual vibration (speeds below quiet_speed) is projected away; its kinetic energy shows
-/// in the energy observer's residual, bounded by 1/2 M quiet_speed^2.
+/// when an effect leaves its regime, a clock starts (scheduled_events dynamic), events come closer
+/// together than dt, or no static solution is found. Every check_interval of simulated time the
+/// stepper checks whether it may return: every effect in its regime, no clock running, and the
+/// state within quiet_speed of the quasi-static one (largest |v - v*| over the nodes, v* the
+/// steady velocities at the equilibrium of that time). It returns only when this has held at every
+/// check for quiet_hold: the hysteresis that keeps a marginal case (a ringing lattice, a junction
+/// close to its threshold) from switching at every check. On return the residual vibration (speeds
+/// below quiet_speed) is projected away; its kinetic energy shows in the energy observer's residual,
+/// bounded by 1/2 M quiet_speed^2.
 class QuasiStaticHybrid final : public Integrator {
 public:
     /// The explicit scheme of the dynamic phase.
     enum class Dynamic { rk4, velocity_verlet };
+    /// How spans with a scheduled event pending (a junction sliding or dislocated, its clock
+    /// running) are crossed: by the dynamic scheme, or quietly from event to event.
+    enum class ScheduledEvents { dynamic, quasi_static };
     struct Params {
         Dynamic dynamic = Dynamic::rk4;
+        ScheduledEvents scheduled_events = ScheduledEvents::dynamic;
         double dt = 2e-7;
-        double quiet_speed = 1e-5;
+        double quiet_speed = 1e-7;
         double quiet_hold = 1e-4;
         double check_interval = 1e-5;
         double max_quiet_step = 1e-4;
@@ -59,8 +66,9 @@ public:
     template <class Archive>
     void serialize(Archive& ar) {
         auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count();
-        ar(solver_, y_, quiet_, projected_, next_check_, calm_since_, to_quiet_, to_dynamic_, quiet_steps_,
-           dynamic_steps_, quiet_time_, dynamic_time_, quiet_wall, dynamic_wall);
+        ar(solver_, y_, quiet_, projected_, next_check_, calm_since_, steady_, checks_since_full_, to_quiet_,
+           to_dynamic_, quiet_steps_, dynamic_steps_, jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall,
+           dynamic_wall);
         quiet_wall_ = std::chrono::steady_clock::duration(quiet_wall);
         dynamic_wall_ = std::chrono::steady_clock::duration(dynamic_wall);
     }
@@ -86,6 +94,10 @@ private:
     bool quiet_step(System& system, double max_dt, double& h);
     /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis).
     bool may_turn_quiet(System& system);
+    /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
+    bool quasi_static_state(System& system, double t);
+    /// Whether no effect has a scheduled event pending (no junction clock runs).
+    static bool no_scheduled_event(const System& system);
 
     Params p_;
     spdlog::logger& log_;
@@ -94,10 +106,14 @@ private:
     Eigen::VectorXd y_;             // the quiet solution being formed
     Eigen::VectorXd start_, mean_;  // a quiet step's start, and its start with the step's mean velocity
     bool quiet_ = false;
-    bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
+    const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
+    bool projected_ = false;        // y_ holds the quasi-static state the first quiet step starts from
     double next_check_ = -std::numeric_limits<double>::infinity();
     double calm_since_ = std::numeric_limits<double>::quiet_NaN();  // start of the current calm spell
-    long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0;
+    Eigen::VectorXd steady_;     // the steady velocities of the last full check for calm
+    int checks_since_full_ = 0;  // checks since it
+    long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0, jumps_ = 0;
+    int short_steps_ = 0;                       // quiet steps in a row shorter than dt
     double quiet_time_ = 0, dynamic_time_ = 0;  // simulated, s
     std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{};
 };

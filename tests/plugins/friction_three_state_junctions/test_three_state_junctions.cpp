@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "frictionlab/base/errors.hpp"

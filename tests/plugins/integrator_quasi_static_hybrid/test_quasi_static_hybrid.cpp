@@ -74,6 +74,7 @@ TEST(QuasiStaticHybrid, QuietPhaseGivesTheExactSteadyResponseWithItsViscousLag) 
     system.add_effect(std::make_unique<DrivenNode>());
     QuasiStaticHybrid::Params p;
     p.max_quiet_step = 1e-2;
+    p.quiet_speed = V / 100;
     QuasiStaticHybrid hybrid = make_hybrid(log, p);
     // The transient's speed, V at first, decays as exp(-c t / 2m): below quiet_speed = V / 100 at 0.46 s.
     while (system.time() < 0.6) hybrid.step(system, 0.6 - system.time());

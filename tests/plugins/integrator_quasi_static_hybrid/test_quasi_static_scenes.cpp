@@ -37,10 +37,11 @@ TEST(QuasiStaticScenes, StuckLoadingCurveMatchesRk4WithinTheTarget) {
                      rk4 = run_loading(work, "--set 'integrator={type: rk4, dt: 2.0e-7}'");
     const auto& t = hybrid.curve.at("time");
     ASSERT_EQ(t.size(), rk4.curve.at("time").size()) << "the observer's samples land on the same times";
-    // The hybrid crossed the stuck loading in quiet steps, one per sample (every 10 us).
+    // The hybrid crossed the stuck loading (4.5 of the scene's 10 ms, from the drive's start to the
+    // first break) in quiet steps, one per sample (every 10 us); the settling rings until 1e-7 m/s.
     const YAML::Node stats = hybrid.record["integrator_statistics"];
     ASSERT_TRUE(stats) << "run.yaml records the phase statistics";
-    EXPECT_GT(stats["quiet_fraction_of_simulated_time"].as<double>(), 0.5);
+    EXPECT_GT(stats["quiet_fraction_of_simulated_time"].as<double>(), 0.4);
     EXPECT_GE(stats["switches_to_dynamic"].as<double>(), 1) << "the first precursor is integrated dynamically";
     // Stuck: loading starts at 4 ms; the first junction breaks at ~9.0 ms. The RK4 run starts with a
     // transient (the drive jumps from rest to 20 mm/s: 0.01 N at the first sample, 6e-4 N after

@@ -5,6 +5,7 @@
 // round-off eps |F| / (h |K|) ~ 1e-9 are far below the tolerance 1e-6; a wrong term (a missing
 // rotation term, a sign, a factor 1/2) misses it by orders of magnitude.
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -94,13 +95,19 @@ TEST(QuasiStaticStiffness, DrivingSpringStiffensItsDrivingPoint) {
     }
 }
 
-TEST(QuasiStaticStiffness, PinnedJunctionsStiffenTheirBlockAndForeseeTheirThreshold) {
+/// Three junctions on each block, pinned unloaded, friction events on.
+testing::Rig three_junctions_each() {
     testing::Rig r(testing::exact_params());
-    const double u = r.p / r.k;
     r.normal->setConstant(3 * r.p);
     r.stage(false);
     r.hold(1);
     r.stage(true);
+    return r;
+}
+
+TEST(QuasiStaticStiffness, JunctionsStiffenTheirBlockWhileElasticAndForeseeTheirEvents) {
+    testing::Rig r = three_junctions_each();
+    const double u = r.p / r.k;
     r.move(0, 0.25 * u);  // block 0's three junctions at 0.25 p: all pinned
     ASSERT_EQ(r.block(0).pinned(), 3);
     EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
@@ -114,11 +121,66 @@ TEST(QuasiStaticStiffness, PinnedJunctionsStiffenTheirBlockAndForeseeTheirThresh
     const double v = 1e-3;
     r.y(r.layout.nodes * 2) = v;
     EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + (0.7 - 0.25) * u / v, 1e-12 * u / v);
-    // Beyond the threshold it breaks at the commit, and the law leaves its quasi-static regime.
+    // Beyond the threshold they break at the commit and slide, held at mu_d p: the law stays in its
+    // regime, and the block's stiffness loses them while they are held at their bound.
     r.y(r.layout.nodes * 2) = 0;
     r.move(0, 0.71 * u);
-    EXPECT_EQ(r.block(0).sliding(), 3);
-    EXPECT_FALSE(r.law->quasi_static_regime(r.view()));
+    ASSERT_EQ(r.block(0).sliding(), 3);
+    EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
+    const auto block_0 = [&] {
+        k.clear();
+        r.law->add_stiffness(r.view(), k);
+        double sum = 0;
+        for (const auto& entry : k) sum += entry.row() == 0 ? entry.value() : 0.0;
+        return sum;
+    };
+    EXPECT_EQ(block_0(), 0.0);
+    // Moved back, they unload off their bound and are elastic again (k_s each), the stage law
+    // measuring from the last commit.
+    r.y(0) = 0.71 * u - 0.1 * u;
+    EXPECT_EQ(block_0(), 3 * r.k);
+    // A sliding junction has no position-dependent event (its end is a clock: next_event_time).
+    r.y(0) = 0.71 * u;
+    r.y(r.layout.nodes * 2) = -v;
+    EXPECT_EQ(r.law->foreseen_event_time(r.view()), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(r.law->next_event_time(), r.t + 0x1p-12);
+}
+
+TEST(QuasiStaticStiffness, JunctionCountsForeseeTheirChangeFromTheRateOfTheNormalForce) {
+    // P_b rising steadily by p/4 per 2^-16 s step (8 steps, over the 1 us the rate needs): the count
+    // n = 3 changes when P_b reaches (n + 1) p; falling, when it reaches (n - 1) p.
+    testing::Rig r(testing::exact_params(), 1);
+    r.stage(false);
+    r.normal->setConstant(3 * r.p);
+    r.hold(1);
+    for (int n = 1; n <= 3; ++n) {
+        r.normal->setConstant((3 + n / 16.0) * r.p);
+        r.hold(1);
+    }
+    ASSERT_EQ(r.block(0).size(), 3);
+    const double rate = r.p / 16 / testing::exact_dt;
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + (4 - 3 - 3.0 / 16) * r.p / rate, 1e-9 * testing::exact_dt);
+    for (int n = 1; n <= 16; ++n) {
+        r.normal->setConstant((3 + 3.0 / 16 - n / 16.0) * r.p);
+        r.hold(1);
+    }
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + (3 + 3.0 / 16 - 1 - 2) * r.p / rate,
+                1e-9 * testing::exact_dt);
+}
+
+TEST(QuasiStaticStiffness, DislocatedJunctionsForeseeTheirSeparation) {
+    testing::Rig r = three_junctions_each();
+    const double u = r.p / r.k;
+    r.move(0, 0.71 * u);                         // all three break, s = +1
+    while (r.block(0).sliding() > 0) r.hold(1);  // t_s later: dislocated, at their cap
+    ASSERT_EQ(r.block(0).dislocated(), 3);
+    const double g = r.block(0).tangential(0);  // s g = g, at cap(phi)
+    // Moving back at v, g falls at k_s v: separation (C6) after g / (k_s v).
+    const double v = 1e-3;
+    r.y(r.layout.nodes * 2) = -v;
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + g / (r.k * v), 1e-12 * g / (r.k * v));
+    r.y(r.layout.nodes * 2) = v;  // forwards they stay at their cap: nothing foreseen
+    EXPECT_EQ(r.law->foreseen_event_time(r.view()), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace
