@@ -19,6 +19,15 @@ void ChainSprings::add_forces(const StageView& s, ForceView& f) {
     f.fx.tail(bonds) -= tension;
 }
 
+void ChainSprings::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (Index i = 0; i + 1 < nodes_; ++i) {
+        stiffness.emplace_back(i, i, stiffness_);
+        stiffness.emplace_back(i + 1, i + 1, stiffness_);
+        stiffness.emplace_back(i, i + 1, -stiffness_);
+        stiffness.emplace_back(i + 1, i, -stiffness_);
+    }
+}
+
 double ChainSprings::potential_energy(const StageView& s) const {
     const Index bonds = nodes_ - 1;
     return 0.5 * stiffness_ * (s.x.tail(bonds) - s.x.head(bonds) - spacing_).square().sum();

@@ -23,6 +23,9 @@ public:
     void add_forces(const StageView& s, ForceView& f) override;
     /// 1/2 k sum_i (x_{i+1} - x_i - a)^2.
     double potential_energy(const StageView& s) const override;
+    /// Linear: always quasi-static, with the chain's tridiagonal stiffness in x.
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
 private:
     Index nodes_;

@@ -18,6 +18,8 @@ public:
     std::string describe() const override;
     std::string key() const override { return "vertical_damping"; }
     void add_forces(const StageView& s, ForceView& f) override;
+    /// Linear in the velocities and free of the positions: always quasi-static, no stiffness.
+    bool quasi_static_regime(const StageView&) const override { return true; }
 
 private:
     double eta_;

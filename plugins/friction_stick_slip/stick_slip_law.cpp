@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -90,6 +91,34 @@ void StickSlipLaw<Strength>::add_velocity_jacobian(const StageView& s, Eigen::Re
         const double c = std::cosh(s.vx[node] / v_r);  // inf far from 0: the slope is then 0
         dfx_dvx[node] -= strength_(normal, stage_slip(b, s.x[node])) / (v_r * c * c);
     }
+}
+
+template <class Strength>
+bool StickSlipLaw<Strength>::quasi_static_regime(const StageView&) const {
+    return std::none_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.mode == Mode::slipping; });
+}
+
+template <class Strength>
+void StickSlipLaw<Strength>::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (std::size_t k = 0; k < nodes_.size(); ++k)
+        if (blocks_[k].mode == Mode::stuck) stiffness.emplace_back(nodes_[k], nodes_[k], blocks_[k].stiffness);
+}
+
+template <class Strength>
+double StickSlipLaw<Strength>::foreseen_event_time(const StageView& s) const {
+    double next = std::numeric_limits<double>::infinity();
+    if (!events_) return next;
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Block& b = blocks_[k];
+        const double v = s.vx[nodes_[k]];
+        if (b.mode != Mode::stuck || v == 0 || b.stiffness <= 0) continue;
+        // The spring force k_t (x - anchor) moves at k_t v towards +-mu_s f_N.
+        const double strength = settings_.mu_s * std::max(0.0, (*normal_force_)[static_cast<Index>(k)]);
+        const double force = b.stiffness * (s.x[nodes_[k]] - b.anchor);
+        const double room = v > 0 ? strength - force : strength + force;
+        next = std::min(next, s.t + std::max(0.0, room / (b.stiffness * std::abs(v))));
+    }
+    return next;
 }
 
 template <class Strength>

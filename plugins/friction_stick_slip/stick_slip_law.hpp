@@ -153,6 +153,13 @@ public:
     /// implicitly (stuck and detached blocks: 0).
     bool has_velocity_jacobian() const override { return true; }
     void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
+    /// Quasi-static regime: no block slipping (a slipping block's force follows its velocity, and it
+    /// re-sticks on its velocity). A stuck block adds k_t to its x; the foreseen event is the first
+    /// stuck block whose spring reaches mu_s f_N at the blocks' velocities, f_N as last evaluated
+    /// (none while friction events are off).
+    bool quasi_static_regime(const StageView&) const override;
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
+    double foreseen_event_time(const StageView& s) const override;
 
     Index blocks() const { return static_cast<Index>(blocks_.size()); }
     const Block& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }

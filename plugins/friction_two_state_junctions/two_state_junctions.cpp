@@ -118,6 +118,27 @@ void TwoStateJunctions::add_forces(const StageView& s, ForceView& f) {
     }
 }
 
+void TwoStateJunctions::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (std::size_t k = 0; k < nodes_.size(); ++k)
+        if (blocks_[k].pinned > 0)
+            stiffness.emplace_back(nodes_[k], nodes_[k], static_cast<double>(blocks_[k].pinned) * blocks_[k].k);
+}
+
+double TwoStateJunctions::foreseen_event_time(const StageView& s) const {
+    if (!events_) return infinity;
+    double next = infinity;
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Block& b = blocks_[k];
+        const double v = s.vx[nodes_[k]];
+        if (b.pinned == 0 || v == 0) continue;
+        // Moving in +x the junction of largest load reaches +f_s first; in -x the smallest reaches -f_s.
+        const double shift = b.c + b.k * (s.x[nodes_[k]] - b.x_c);
+        const double room = v > 0 ? b.f_s - (b.load_max + shift) : -b.f_s - (b.load_min + shift);
+        next = std::min(next, std::max(0.0, room / (b.k * v)));
+    }
+    return s.t + next;
+}
+
 double TwoStateJunctions::potential_energy(const StageView& s) const {
     // Junction by junction (the aggregates give sum f_j, not sum f_j^2): observer cadence only.
     double energy = 0;

@@ -79,6 +79,13 @@ public:
     void commit(const StageView& end, double dt) override;
     double next_event_time() const override { return next_event_; }
     double potential_energy(const StageView& s) const override;
+    /// Quasi-static regime: always. Within a step a pinned junction is linear in its block's position
+    /// (k_i, frozen) and a slipping one carries the constant s f_d. Its stiffness is N_p k_i on the
+    /// block's x; its foreseen event the first pinned junction reaching f_s at the blocks' velocities
+    /// (none while friction events are off); the re-pinnings are scheduled (next_event_time).
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
+    double foreseen_event_time(const StageView& s) const override;
 
     Index blocks() const { return static_cast<Index>(blocks_.size()); }
     Index junctions_per_block() const { return n_s_; }

@@ -25,9 +25,13 @@ constexpr int max_attempts = 4;
 constexpr double event_slack = 0.1;
 /// Quiet steps in a row shorter than the dynamic step before the dynamic scheme takes over.
 constexpr int max_short_steps = 4;
-/// The secant velocity of a quiet step is taken when its round-off, position_tolerance / h, is below
-/// quiet_speed / secant_margin.
-constexpr double secant_margin = 10;
+/// The steady velocities may change at once by lag_floor quiet_speed plus lag_fraction of themselves:
+/// a junction formed or removed changes them by ~1/N of a block's junctions (1e-4 to 1e-3), the
+/// settled slider's secants wander by ~1e-7 m/s, a drive starting or a ramp ending changes them all.
+constexpr double lag_fraction = 1e-2, lag_floor = 10;
+/// Why a quiet step is refused when the steady velocities change at once by more than that.
+constexpr const char* lagging =
+    "the steady velocities changed at once (a drive started or changed): the masses lag, and ring";
 /// A check that the velocities are far (10 quiet_speed) from the steady ones of the last full check
 /// needs no static solve; a full one is made at least every this many checks all the same.
 constexpr int full_check_every = 10;
@@ -212,6 +216,12 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system) {
     return projected_;
 }
 
+bool QuasiStaticHybrid::keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, Index dof) const {
+    const auto v0 = before.segment(dof, dof), v1 = after.segment(dof, dof);
+    const double scale = std::max(v0.lpNorm<Eigen::Infinity>(), v1.lpNorm<Eigen::Infinity>());
+    return (v1 - v0).lpNorm<Eigen::Infinity>() <= lag_floor * p_.quiet_speed + lag_fraction * scale;
+}
+
 bool QuasiStaticHybrid::no_scheduled_event(const System& system) {
     return system.next_event_time() == std::numeric_limits<double>::infinity();
 }
@@ -236,6 +246,7 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // The last commit may have changed the forces at fixed positions (a junction broke, entered the
     // dislocated state or was removed): the static response to that change, a jump, comes first.
     // If its new loads bring another junction to its threshold, the next step is a short one to it.
+    const Index dof = 2 * layout.nodes;
     bool jumped = false;
     if (!projected && !solver_.in_equilibrium(system, t, y_)) {
         jumped = true;
@@ -246,7 +257,6 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     const double scheduled = system.next_event_time();
     double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
                             system.foreseen_event_time(view_of(y_, layout, t)));
-    const Index dof = 2 * layout.nodes;
     start_ = y_;
     system.begin_step();
     // The events are foreseen at the start's velocities; the step's own mean velocity (q1 - q0)/h
@@ -261,10 +271,12 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
         if (!solver_.equilibrium(system, t1, y_)) return why_dynamic_ = "no static solution", false;
         // From a balanced start the response to the drive is (near) linear: its secant over the
         // step is the steady velocity (a jump or the turn to quiet solved for it at the start).
-        // Over a short step (to an event) the secant would carry Newton's tolerance divided by
-        // the step: the velocities then stay as they were.
-        if (h * p_.quiet_speed >= secant_margin * p_.position_tolerance)
-            y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
+        // Over a step shorter than the dynamic one (to an event) the secant would carry Newton's
+        // tolerance divided by the step: the velocities then stay as they were.
+        if (h >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
+        // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
+        if (h * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(start_, y_, dof))
+            return why_dynamic_ = lagging, false;
         mean_ = start_;
         mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
         const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));

@@ -96,6 +96,10 @@ private:
     bool may_turn_quiet(System& system);
     /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
     bool quasi_static_state(System& system, double t);
+    /// Whether the velocities (the dof after the dof positions) of `after` are within quiet_speed
+    /// (and a percent of themselves) of those of `before`: a quasi-static state may follow a change
+    /// of the drive only as fast as inertia lets it.
+    bool keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, Index dof) const;
     /// Whether no effect has a scheduled event pending (no junction clock runs).
     static bool no_scheduled_event(const System& system);
 

@@ -68,6 +68,10 @@ void PlateSprings::add_forces(const StageView& s, ForceView& f) {
     displacement_ = moved / static_cast<double>(nodes_.size());
 }
 
+void PlateSprings::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (const Index node : nodes_) stiffness.emplace_back(node, node, params_.stiffness);
+}
+
 double PlateSprings::potential_energy(const StageView& s) const {
     if (!started_) return 0;  // not yet in the pipeline: no spring to store anything
     const double driver = params_.velocity * (s.t - t0_);

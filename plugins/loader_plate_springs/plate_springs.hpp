@@ -50,6 +50,9 @@ public:
     void add_forces(const StageView& s, ForceView& f) override;
     void begin_stage(const StageInfo& stage, const StageView& s) override;
     double potential_energy(const StageView& s) const override;
+    /// Linear in x and t: always quasi-static, k_p on the x of every node of its set.
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
 private:
     Params params_;
