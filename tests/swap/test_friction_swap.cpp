@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include "cli.hpp"
 #include "csv.hpp"
@@ -71,8 +72,9 @@ struct LawRun {
     std::vector<double> block(const Columns& table, int i) const { return table.at("block_" + std::to_string(i)); }
 };
 
-/// Writes the base scene with `law`'s friction block, checks that nothing else changed, and runs it.
-LawRun run_with(const std::string& law) {
+/// Writes the base scene with `law`'s friction block, checks that nothing else changed, and runs it
+/// (with `overrides`, e.g. another integrator, as --set options).
+LawRun run_with(const std::string& law, const std::string& overrides = "") {
     const std::string base = testing::read_text(scenes / "swap_base.yaml");
     const std::string block = testing::read_text(scenes / ("friction_" + law + ".yaml"));
     EXPECT_FALSE(base.empty() || block.empty());
@@ -82,7 +84,7 @@ LawRun run_with(const std::string& law) {
 
     const fs::path dir = testing::work_directory();
     std::ofstream(dir / "scene.yaml") << variant;
-    const auto r = testing::frictionlab("run -q scene.yaml", dir);
+    const auto r = testing::frictionlab("run -q scene.yaml" + overrides, dir);
     EXPECT_EQ(r.code, 0) << r.output;
     LawRun run;
     run.out = dir / "swap_out";
@@ -261,6 +263,29 @@ TEST(FrictionSwap, ThreeStateJunctionsShowGrowingPrecursorsBeforeTheFirstGlobalS
     EXPECT_EQ(extent[g - 1], longest) << "the last precursor is the longest";
     EXPECT_GT(longest, 0.5);
     EXPECT_GT(ratio[g - 1], ratio[0]);
+}
+
+/// The quasi-static hybrid with every law that describes its quasi-static regime: the stuck loading
+/// is crossed in quiet steps (after the transient of the drive's start, which it integrates), and the
+/// first rupture event comes as with RK4 at the hybrid's own dynamic step, within what RK4 itself
+/// changes when its step is halved: time (and one observation), F_S (and 1e-4 of it), length (and a
+/// block). Measured: the same time and F_S within 4e-6 for three laws; slip weakening, which breaks
+/// without a force drop, between RK4's two steps.
+TEST(FrictionSwap, EveryLawReachesItsFirstEventWithTheQuasiStaticHybridWithinRk4sStepHalving) {
+    const auto first_event = [](const LawRun& run, const char* column) { return run.events.at(column).at(0); };
+    for (const char* law : {"coulomb", "slip_weakening", "two_state_junctions", "three_state_junctions"}) {
+        const LawRun rk4 = run_with(law, " --set 'integrator={type: rk4, dt: 2.0e-7}'");
+        const LawRun halved = run_with(law, " --set 'integrator={type: rk4, dt: 1.0e-7}'");
+        const LawRun hybrid = run_with(law, " --set 'integrator={type: quasi_static_hybrid, dt: 2.0e-7}'");
+        const YAML::Node stats = YAML::LoadFile((hybrid.out / "run.yaml").string())["integrator_statistics"];
+        EXPECT_GE(stats["quiet_steps"].as<double>(), 100) << law << ": no stuck span crossed quietly";
+        for (const auto& [column, slack] : {std::pair{"t_start", 1.01e-5}, std::pair{"force_ratio", 1e-4 * 0.2},
+                                            std::pair{"extent_over_length", 1.01 / (blocks - 1)}}) {
+            const double a = first_event(rk4, column), b = first_event(halved, column);
+            EXPECT_GE(first_event(hybrid, column), std::min(a, b) - slack) << law << " " << column;
+            EXPECT_LE(first_event(hybrid, column), std::max(a, b) + slack) << law << " " << column;
+        }
+    }
 }
 
 /// Rate and state, velocity strengthening (a > b): the slider ends sliding steadily at the driving

@@ -2,6 +2,8 @@
 // exact forces: k_t = 1024 N/m and f_N = 8 N make thresholds and positions binary fractions.
 #include <cmath>
 
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "frictionlab/base/errors.hpp"
@@ -50,6 +52,22 @@ TEST(Coulomb, StartsDetachedAndSticksUnloadedOnContact) {
     EXPECT_EQ(r.block(0).anchor, 0x1p-12);
     EXPECT_EQ(r.force(0), 0);
     EXPECT_EQ(r.stage_force(0, 0x1p-12 + 0x1p-14, 0), -exact_stiffness * 0x1p-14);
+}
+
+TEST(Coulomb, QuasiStaticWhileStuckStiffnessKtAndItsBreakForeseen) {
+    // Quiet solving (share/docs/quasi-static.md): stuck blocks add k_t to their x; block 0 moving
+    // at v reaches mu_s f_N after (x_threshold - x) / v; once a block slips the law leaves its regime.
+    Rig r = pressed();
+    const double v = 1e-3, at = threshold_position();
+    EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
+    std::vector<Eigen::Triplet<double>> stiffness;
+    r.law->add_stiffness(r.view(), stiffness);
+    ASSERT_EQ(stiffness.size(), 2u);
+    EXPECT_EQ(stiffness[0].value(), exact_stiffness);
+    r.move(0, 0.25 * at, v);
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + 0.75 * at / v, 1e-12 * at / v);
+    break_forward(r);
+    EXPECT_FALSE(r.law->quasi_static_regime(r.view()));
 }
 
 TEST(Coulomb, HoldsAtStaticThresholdAndSlipsJustAbove) {

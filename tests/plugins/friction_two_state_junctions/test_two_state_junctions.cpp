@@ -97,6 +97,28 @@ TEST(TwoStateJunctions, BreaksStrictlyAboveTheThreshold) {
     EXPECT_EQ(r.law->pinned(1), 4);  // the other blocks did not move
 }
 
+TEST(TwoStateJunctions, QuasiStaticRegimeStiffensPinnedJunctionsAndForeseesTheBreak) {
+    // Quiet solving (share/docs/quasi-static.md): block 0's four pinned junctions stiffen its x by
+    // 4 k; moving at v they reach f_s after (x_break - x) / v; slipping ones add no stiffness.
+    Rig r;
+    const double k = r.law->stiffness(0), v = 1e-3;
+    EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
+    std::vector<Eigen::Triplet<double>> stiffness;
+    r.law->add_stiffness(r.view(), stiffness);
+    ASSERT_EQ(stiffness.size(), 3u);
+    EXPECT_EQ(stiffness[0].row(), 0);
+    EXPECT_EQ(stiffness[0].value(), 4 * k);
+    r.move(0, 0.25 * x_break);
+    r.y[r.layout.nodes * 2] = v;
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + 0.75 * x_break / v, 1e-12 * x_break / v);
+    r.y[r.layout.nodes * 2] = 0;
+    r.move(0, x_break + 0x1p-40);  // all four break
+    EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
+    stiffness.clear();
+    r.law->add_stiffness(r.view(), stiffness);
+    EXPECT_EQ(stiffness.size(), 2u) << "block 0 carries no pinned junction";
+}
+
 TEST(TwoStateJunctions, SlipsAtMuDOpposingTheBreakingDirectionWhateverTheMotion) {
     Rig r;
     r.move(0, x_break + 0x1p-20);

@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "random_lattice_state.hpp"
+#include "chain_springs.hpp"
 #include "driving_spring.hpp"
+#include "plate_springs.hpp"
 #include "rig.hpp"
 #include "rigid_base_contact.hpp"
 #include "spring_lattice_2d.hpp"
@@ -93,6 +95,20 @@ TEST(QuasiStaticStiffness, DrivingSpringStiffensItsDrivingPoint) {
         spring.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(s.y, s.layout, 0.0));
         EXPECT_LT(stiffness_mismatch(spring, s.layout, s.y, 1e-4, 1e-9), relative_tolerance) << "height " << height;
     }
+}
+
+TEST(QuasiStaticStiffness, ChainSpringsAndPlateSpringsGiveMinusTheirForceJacobian) {
+    // Both are linear: K is exact.
+    DisplacedLattice s(1e-6, "geometric");
+    ChainSprings chain(s.layout.nodes, 1e-3, 3e6);  // the lattice's nodes, read as one chain
+    EXPECT_TRUE(chain.quasi_static_regime(view_of(s.y, s.layout, 0)));
+    EXPECT_LT(stiffness_mismatch(chain, s.layout, s.y, 0, 1e-9), relative_tolerance);
+    PlateSprings::Params p;
+    p.node_set = "top";
+    PlateSprings plate(p, s.context());
+    plate.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(s.y, s.layout, 0.0));
+    EXPECT_TRUE(plate.quasi_static_regime(view_of(s.y, s.layout, 0)));
+    EXPECT_LT(stiffness_mismatch(plate, s.layout, s.y, 1e-4, 1e-9), relative_tolerance);
 }
 
 /// Three junctions on each block, pinned unloaded, friction events on.
