@@ -98,6 +98,16 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFil
         out.first_precursor_time = t_start[first] - load_start;
         out.first_precursor_force = events["driving_force"][first];
     }
+    // Every event in time order up to the second global slip (the precursors and the first slips).
+    std::vector<std::size_t> order(t_start.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return t_start[a] < t_start[b]; });
+    int globals = 0;
+    for (std::size_t e : order) {
+        if (globals == 2) break;
+        out.events.push_back({t_start[e] - load_start, events["driving_force"][e], events["extent_over_length"][e]});
+        globals += global[e] > 0.5;
+    }
     if (std::filesystem::exists(rupture.summary))
         out.global_static_coefficient =
             summary_number(YAML::LoadFile(rupture.summary.string()), "global_static_coefficient");
@@ -152,6 +162,19 @@ CaseErrors compare(const CaseOutcome& reference, const CaseOutcome& outcome) {
     e.global_static_coefficient =
         relative_error(reference.global_static_coefficient, outcome.global_static_coefficient);
     if (reference.global_slip && !outcome.global_slip) add_note(e.note, "no global slip where the reference has one");
+    const std::size_t matched = std::min(reference.events.size(), outcome.events.size());
+    if (matched > 0) e.event_time = e.event_force = e.event_length = 0;
+    for (std::size_t k = 0; k < matched; ++k) {
+        const auto& r = reference.events[k];
+        const auto& o = outcome.events[k];
+        e.event_time = std::max(e.event_time, relative_error(r.time, o.time));
+        e.event_force = std::max(e.event_force, relative_error(r.force, o.force));
+        e.event_length = std::max(e.event_length, std::abs(o.length - r.length));
+    }
+    if (outcome.events.size() != reference.events.size())
+        add_note(e.note, std::to_string(outcome.events.size()) +
+                             " events to the second global slip where the reference has " +
+                             std::to_string(reference.events.size()));
     if (!reference.event_slip.empty() && !outcome.event_slip.empty())
         e.event_slip = relative_l2_on_grid(reference.x_over_length, reference.event_slip, outcome.x_over_length,
                                            outcome.event_slip);

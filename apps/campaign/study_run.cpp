@@ -32,6 +32,9 @@ const std::vector<ErrorColumn> error_columns{
     {"err_first_precursor_force", "first precursor F_S", &CaseErrors::first_precursor_force},
     {"err_global_static_coefficient", "global F_S/F_N", &CaseErrors::global_static_coefficient},
     {"err_event_slip", "slip of first event", &CaseErrors::event_slip},
+    {"err_event_time", "event times", &CaseErrors::event_time},
+    {"err_event_force", "event F_S", &CaseErrors::event_force},
+    {"err_event_length", "event l/L (abs.)", &CaseErrors::event_length},
 };
 
 /// The node at a key path ("integrator.dt", "loaders[2].velocity") of a resolved scene; an

@@ -719,6 +719,9 @@ STUDY_ERRORS = [
     ("err_first_precursor_force", "$F_S$ of the first precursor"),
     ("err_global_static_coefficient", "global $F_S/F_N$"),
     ("err_event_slip", "slip profile of the first event"),
+    ("err_event_time", "start times of the events to the 2nd global slip"),
+    ("err_event_force", "$F_S$ of the events to the 2nd global slip"),
+    ("err_event_length", "$l/L$ of the events (absolute difference)"),
 ]
 
 
@@ -728,7 +731,7 @@ def work_precision(study_dir):
         rows = list(csv.DictReader(f))
     cases = [r for r in rows if r["case"] != "reference"]
     families = list(dict.fromkeys(r["family"] for r in cases))
-    fig, axes = plt.subplots(2, 3, figsize=(13, 7.5))
+    fig, axes = plt.subplots(3, 3, figsize=(13, 10.5))
     for ax, (column, title) in zip(axes.flat, STUDY_ERRORS):
         for k, family in enumerate(families):
             points = sorted((float(r["wall_seconds"]), float(r[column]), r["case"]) for r in cases if r["family"] == family)
@@ -739,7 +742,7 @@ def work_precision(study_dir):
         ax.set_yscale("log")
         ax.set_title(title, fontsize=10)
         ax.grid(True, which="major", alpha=0.3)
-    for ax in axes[1]:
+    for ax in axes[-1]:
         ax.set_xlabel("wall time (s)")
     for ax in axes[:, 0]:
         ax.set_ylabel("relative error")

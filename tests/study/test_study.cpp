@@ -42,9 +42,15 @@ std::vector<Row> read_rows(const fs::path& file, std::vector<std::string>& heade
     return rows;
 }
 
-const std::vector<std::string> errors{"err_settled_normal_force",      "err_settled_friction_force",
-                                      "err_first_precursor_time",      "err_first_precursor_force",
-                                      "err_global_static_coefficient", "err_event_slip"};
+const std::vector<std::string> errors{"err_settled_normal_force",
+                                      "err_settled_friction_force",
+                                      "err_first_precursor_time",
+                                      "err_first_precursor_force",
+                                      "err_global_static_coefficient",
+                                      "err_event_slip",
+                                      "err_event_time",
+                                      "err_event_force",
+                                      "err_event_length"};
 
 /// study.csv of the tiny study, by case.
 class StudyTable {

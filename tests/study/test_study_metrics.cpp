@@ -77,3 +77,24 @@ TEST(CompareOutcomes, AMissingPrecursorOrGlobalSlipIsNanWithANote) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CompareOutcomes, EventsAreMatchedInOrderTheirLargestErrorsReportedAndACountMismatchNoted) {
+    CaseOutcome reference, outcome;
+    reference.events = {{0.1, 70.0, 0.1}, {0.2, 90.0, 0.3}, {0.3, 150.0, 1.0}};
+    outcome.events = {{0.1, 70.7, 0.1}, {0.21, 90.0, 0.35}, {0.3, 150.0, 1.0}};
+    const auto same = compare(reference, outcome);
+    EXPECT_NEAR(same.event_time, 0.05, 1e-12);   // 0.01 of 0.2
+    EXPECT_NEAR(same.event_force, 0.01, 1e-12);  // 0.7 of 70
+    EXPECT_NEAR(same.event_length, 0.05, 1e-12);
+    EXPECT_EQ(same.note.find("events"), std::string::npos) << same.note;
+    outcome.events.pop_back();
+    const auto fewer = compare(reference, outcome);
+    EXPECT_NEAR(fewer.event_time, 0.05, 1e-12);  // over the two both have
+    EXPECT_NE(fewer.note.find("2 events to the second global slip where the reference has 3"), std::string::npos)
+        << fewer.note;
+    EXPECT_TRUE(std::isnan(compare(reference, CaseOutcome{}).event_force));
+}
+
+}  // namespace

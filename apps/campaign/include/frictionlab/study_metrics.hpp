@@ -23,6 +23,12 @@ struct CaseOutcome {
     double first_precursor_force = nan;      // F_S at its start (N)
     double global_static_coefficient = nan;  // F_S/F_N at the first global slip (theory.md B.20)
     std::vector<double> event_slip;          // slip of each block over the first event (m)
+    /// The rupture events up to and including the second global slip, in time order: start since
+    /// loading began (s), F_S at it (N) and length l/L.
+    struct Event {
+        double time, force, length;
+    };
+    std::vector<Event> events;
     bool any_event = false, global_slip = false;
 };
 
@@ -38,6 +44,9 @@ struct CaseErrors {
     double settled_normal_force = CaseOutcome::nan, settled_friction_force = CaseOutcome::nan;
     double first_precursor_time = CaseOutcome::nan, first_precursor_force = CaseOutcome::nan;
     double global_static_coefficient = CaseOutcome::nan, event_slip = CaseOutcome::nan;
+    /// Over the events both have (in time order, up to the second global slip): the largest
+    /// relative error of their start time and F_S, and the largest difference of l/L.
+    double event_time = CaseOutcome::nan, event_force = CaseOutcome::nan, event_length = CaseOutcome::nan;
     std::string note;
 };
 
