@@ -30,9 +30,11 @@ namespace {
 
 constexpr const char* scene_file = FRICTIONLAB_SOURCE_DIR "/configs/li2020/maegawa_uniform.yaml";
 
-/// The baseline scene, settled and loading, with `overrides` applied as `--set` would.
+/// The baseline scene, settled and loading, with `overrides` applied as `--set` would, stepped by
+/// RK4 (the scene's own integrator is the quasi-static hybrid, whose dynamic phases are these steps).
 struct SceneFixture {
-    explicit SceneFixture(const std::vector<std::string>& overrides) {
+    explicit SceneFixture(std::vector<std::string> overrides) {
+        overrides.push_back("integrator={type: rk4, dt: 2.0e-7}");
         Diagnostics diagnostics;
         auto document = SceneDocument::load(scene_file, overrides, diagnostics);
         // FRICTIONLAB_PLUGIN_PATH first, as for the program: it lets one binary time another build's plugins.

@@ -740,6 +740,10 @@ def work_precision(study_dir):
                 ax.plot([p[0] for p in points], [p[1] for p in points], "o-", color=f"C{k}", label=family, ms=4)
         ax.set_xscale("log")
         ax.set_yscale("log")
+        # Ticks at 1, 2, 5 of each decade, as plain numbers: cases often span less than a decade.
+        ax.xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        ax.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda value, _: f"{value:g}"))
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_title(title, fontsize=10)
         ax.grid(True, which="major", alpha=0.3)
     for ax in axes[-1]:
