@@ -70,6 +70,26 @@ INSTANTIATE_TEST_SUITE_P(
                                "dormand_prince on an undamped, ringing lattice"}),
     [](const auto& info) { return info.param.name; });
 
+/// The quasi-static hybrid on the cases where quiet phases meet the hard parts: a detaching edge, a
+/// heavy load settled with junctions breaking, drive reversals, an undamped lattice that never calms,
+/// many soft junctions. Its quiet steps and hand-overs must keep the balance as RK4 does.
+const std::string hybrid = " --set 'integrator={type: quasi_static_hybrid, dt: 2.0e-7}'";
+
+INSTANTIATE_TEST_SUITE_P(
+    Hybrid, HardCases,
+    ::testing::Values(HardCase{"hybrid_theta_plus_one", "--set loaders[1].theta=1" + hybrid,
+                               "the hybrid with the trailing edge unloaded"},
+                      HardCase{"hybrid_normal_2kN", "--set loaders[1].total_force=2000" + heavy_settle + hybrid,
+                               "the hybrid settling a heavy load through junction breaks"},
+                      HardCase{"hybrid_velocity_reversals",
+                               "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002" + hybrid,
+                               "the hybrid through five drive reversals"},
+                      HardCase{"hybrid_zero_damping", "--set bulk.damping_factor=0" + hybrid,
+                               "the hybrid on an undamped lattice, which never calms: dynamic throughout"},
+                      HardCase{"hybrid_soft_many_junctions", "--set friction.contact_radius=3.0e-6" + hybrid,
+                               "the hybrid with ~1150 soft junctions per block"}),
+    [](const auto& info) { return info.param.name; });
+
 /// Cases refused as bad input before anything runs.
 TEST(HardCasesRefused, ALatticeBeyondTheDampingLimitAndASingularAngle) {
     const auto dir = testing::work_directory();

@@ -21,13 +21,20 @@ namespace {
 constexpr double k = 1e4, c = 20, V = 1e-3, m = 1.0;  // N/m, N s/m, m/s, kg: damping ratio 0.1
 
 /// k (V t - x) - c vx on x, and a spring k pulling z back to 0; a threshold event at x = x_event.
+/// Broken, the node feels -drop on x (a rupture's force drop), until `lasting` later, when it heals
+/// (a scheduled event) and the drop is gone: a rupture and its end.
 class DrivenNode final : public Effect {
 public:
-    explicit DrivenNode(double x_event = std::numeric_limits<double>::infinity()) : x_event_(x_event) {}
+    explicit DrivenNode(double x_event = std::numeric_limits<double>::infinity(), double drop = 0,
+                        double lasting = std::numeric_limits<double>::infinity())
+        : x_event_(x_event), drop_(drop), lasting_(lasting) {}
     std::string describe() const override { return "driven node"; }
     void add_forces(const StageView& s, ForceView& f) override {
-        f.fx(0) += k * (V * s.t - s.x(0)) - c * s.vx(0);
+        f.fx(0) += k * (V * s.t - s.x(0)) - c * s.vx(0) - (broken ? drop_ : 0.0);
         f.fz(0) -= k * s.z(0);
+    }
+    double next_event_time() const override {
+        return broken ? broke_at + lasting_ : std::numeric_limits<double>::infinity();
     }
     bool quasi_static_regime(const StageView&) const override { return !broken; }
     void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& K) const override {
@@ -39,13 +46,14 @@ public:
         return s.t + (x_event_ - s.x(0)) / s.vx(0);
     }
     void commit(const StageView& end, double) override {
-        if (!broken && end.x(0) > x_event_) broken = true, broke_at = end.t;
+        if (broken && end.t >= broke_at + lasting_) broken = false, healed = true;
+        if (!broken && !healed && end.x(0) > x_event_) broken = true, broke_at = end.t;
     }
-    bool broken = false;
+    bool broken = false, healed = false;
     double broke_at = 0;
 
 private:
-    double x_event_;
+    double x_event_, drop_, lasting_;
 };
 
 Body one_node() { return test_support::one_node(m); }
@@ -114,6 +122,78 @@ TEST(QuasiStaticHybrid, LandsOnAForeseenEventAndHandsItToTheDynamicScheme) {
     EXPECT_EQ(hybrid.switches_to_dynamic(), 1);
     // Until the check at the first step, then one quiet step to the event: the rest is dynamic.
     EXPECT_EQ(hybrid.quiet_steps(), 1);
+}
+
+TEST(QuasiStaticHybrid, HandsARuptureToTheDynamicSchemeAndReturnsWhenItHasCalmed) {
+    // Quiet to the threshold (0.302 s); a force drop of 0.1 N for 50 ms, integrated dynamically;
+    // healed, the node rings (amplitude ~1e-5 m, ~V) and its envelope exp(-c t / 2m) takes it below
+    // quiet_speed = V / 100 in ~0.46 s: quiet again from there, on the exact steady response.
+    spdlog::logger log("test");
+    Body body = one_node();
+    System system(body, 0);
+    system.initial_state()(0) = -c * V / k;
+    system.initial_state()(2) = V;
+    auto node = std::make_unique<DrivenNode>(3e-4, 0.1, 0.05);
+    DrivenNode* probe = node.get();
+    system.add_effect(std::move(node));
+    QuasiStaticHybrid::Params p;
+    p.max_quiet_step = 1e-2;
+    p.quiet_speed = V / 100;
+    QuasiStaticHybrid hybrid = make_hybrid(log, p);
+    double quiet_again = 0;
+    while (system.time() < 1.2) {
+        const bool was_quiet = hybrid.quiet();
+        hybrid.step(system, 1.2 - system.time());
+        if (!was_quiet && hybrid.quiet() && probe->healed) quiet_again = system.time();
+    }
+    ASSERT_TRUE(probe->healed);
+    EXPECT_NEAR(probe->broke_at, (3e-4 + c * V / k) / V, 1e-9);
+    EXPECT_EQ(hybrid.switches_to_dynamic(), 1);
+    EXPECT_EQ(hybrid.switches_to_quiet(), 2) << "quiet at the start and once the ringing has calmed";
+    EXPECT_GT(quiet_again, probe->broke_at + 0.05 + 0.3) << "not before the ringing has calmed";
+    EXPECT_LT(quiet_again, probe->broke_at + 0.05 + 0.7);
+    EXPECT_TRUE(hybrid.quiet());
+    EXPECT_NEAR(system.state().x(0), V * system.time() - c * V / k, 1e-12);
+    EXPECT_NEAR(system.state().vx(0), V, 1e-9 * V);
+}
+
+TEST(QuasiStaticHybrid, TurnsQuietOnlyOnceTheCalmHasHeldForQuietHoldNotAtOneCalmCheck) {
+    // From rest the velocity rings about V: v - V = A(t) sin(w_d t + phase), A = V exp(-zeta w t) /
+    // sqrt(1 - zeta^2) (zeta = 0.1, w = 100 rad/s). A check every 1 ms finds |v - V| < quiet_speed =
+    // V / 100 near each crossing long before A is (0.46 s); a calm spell of length H around a crossing
+    // needs A <= q / sin(w_d H / 2). With quiet_hold = 10 ms the run turns quiet no earlier than that
+    // allows and never switches back; with the hold as short as one check it turns quiet far earlier.
+    const double w = std::sqrt(k / m), zeta = c / (2 * std::sqrt(k * m)), w_d = w * std::sqrt(1 - zeta * zeta);
+    const auto earliest = [&](double hold) {  // when A(t) = q / sin(w_d hold / 2)
+        const double q = V / 100, a = q / std::sin(w_d * hold / 2);
+        return std::log(V / (std::sqrt(1 - zeta * zeta) * a)) / (zeta * w);
+    };
+    const auto first_quiet = [](double hold, long long& to_dynamic) {
+        spdlog::logger log("test");
+        Body body = one_node();
+        System system(body, 0);
+        system.add_effect(std::make_unique<DrivenNode>());
+        QuasiStaticHybrid::Params p;
+        p.max_quiet_step = 1e-2;
+        p.quiet_speed = V / 100;
+        p.dt = 1e-4;
+        p.check_interval = 1e-3;
+        p.quiet_hold = hold;
+        QuasiStaticHybrid hybrid(p, Context{log, 0, nullptr, nullptr, nullptr, "integrator", &dynamic_schemes()});
+        double at = -1;
+        while (system.time() < 1.0) {
+            hybrid.step(system, 1.0 - system.time());
+            if (hybrid.quiet() && at < 0) at = system.time();
+        }
+        to_dynamic = hybrid.switches_to_dynamic();
+        return at;
+    };
+    long long back = 0, back_short = 0;
+    const double held = first_quiet(1e-2, back), unheld = first_quiet(1e-3, back_short);
+    EXPECT_GE(held, earliest(1e-2) - 2e-3) << "earliest possible " << earliest(1e-2);  // - the checks' spacing
+    EXPECT_LE(held, 0.47) << "once A < quiet_speed at every phase (0.46 s) it must turn quiet";
+    EXPECT_EQ(back, 0) << "no chattering back to dynamic";
+    EXPECT_LT(unheld, held - 0.05) << "a single calm check would have switched far earlier";
 }
 
 }  // namespace
