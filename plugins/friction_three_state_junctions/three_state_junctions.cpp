@@ -127,6 +127,7 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
     : name_(ctx.name.empty() ? std::string(type) : ctx.name),
       seed_(ctx.seed),
       p_(junction_load(spec().checked(params))),
+      inverse_p_(1 / p_),
       k_s_(junction_stiffness(params)),
       mu_d_p_(params.mu_d * p_),
       threshold_(params.mu_s * p_),
@@ -320,7 +321,7 @@ void ThreeStateJunctions::decay_angle(BlockJunctions& b, Index j, double t) cons
 }
 
 void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double x) {
-    const double ratio = std::max(0.0, (*normal_force_)[i] / p_);
+    const double ratio = std::max(0.0, (*normal_force_)[i] * inverse_p_);
     // An exploding run makes P_b absurd within a step; stop it here rather than allocate junctions
     // until memory runs out (the run's runaway check only looks every few steps).
     if (!(ratio <= max_junctions_per_block))

@@ -167,7 +167,7 @@ private:
 
     std::string name_;
     std::uint64_t seed_;
-    double p_, k_s_, mu_d_p_, threshold_, tan_phi0_;
+    double p_, inverse_p_, k_s_, mu_d_p_, threshold_, tan_phi0_;  // 1/p: a commit multiplies, per block
     Removal removal_;
     SettleOverload settle_overload_;
     LifetimeSampler sampler_;
