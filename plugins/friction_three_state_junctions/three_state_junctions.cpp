@@ -156,9 +156,7 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
         x_start_.push_back(ctx.body->x0[node]);
     }
     removal_draws_.assign(nodes_.size(), 0);
-    normal_.assign(nodes_.size(), 0.0);
-    normal_rate_.assign(nodes_.size(), 0.0);
-    rate_base_.assign(nodes_.size(), 0.0);
+    normal_rate_ = rate_base_ = normal_ = Eigen::VectorXd::Zero(static_cast<Index>(nodes_.size()));
     for (Index i = 0; i < n; ++i) publish_counts(i);
 }
 
@@ -235,8 +233,7 @@ void ThreeStateJunctions::commit(const StageView& end, double /*dt*/) {
         commit_block(static_cast<Index>(i), end.x[nodes_[i]], end.t);
         next_event_ = std::min(next_event_, blocks_[i].next_deadline());
     }
-    normal_time_ = end.t;
-    if (end.t - rate_base_time_ >= rate_interval) rate_base_time_ = end.t;
+    follow_normal_rate(end.t);
 }
 
 void ThreeStateJunctions::commit_block(Index i, double x, double t) {
@@ -250,7 +247,6 @@ void ThreeStateJunctions::commit_block(Index i, double x, double t) {
         repin_overloaded(b, x);
     update_active(b, i, x, t);
     follow_normal_force(b, i, x);
-    follow_normal_rate(i, t);
     b.refresh_active();
     b.refresh_pinned(x);
     publish_counts(i);
@@ -339,23 +335,25 @@ void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double
     while (b.size() > high) b.remove(removal_choice(b, i, x));
 }
 
-void ThreeStateJunctions::follow_normal_rate(Index i, double t) {
+void ThreeStateJunctions::follow_normal_rate(double t) {
     // The rate over at least rate_interval: over a very short step (a quiet step to an event) the
-    // difference of P_b is round-off.
-    const auto k = static_cast<std::size_t>(i);
-    normal_[k] = (*normal_force_)[i];
+    // difference of P_b is round-off. Once per commit, for the whole interface, after the blocks.
+    const Eigen::Map<const Eigen::VectorXd> normal(normal_force_->data(), normal_force_->size());
+    normal_ = normal;
+    normal_time_ = t;
     if (t - rate_base_time_ < rate_interval) return;
-    normal_rate_[k] = (normal_[k] - rate_base_[k]) / (t - rate_base_time_);
-    rate_base_[k] = normal_[k];
+    normal_rate_ = (normal_ - rate_base_) / (t - rate_base_time_);
+    rate_base_ = normal_;
+    rate_base_time_ = t;
 }
 
 double ThreeStateJunctions::time_to_count_change(Index i) const {
     // The count changes when P_b / p leaves (n - 1, n + 1) (follow_normal_force): when P_b, going
     // on at its rate between the last two commits, reaches (n + 1) p or (n - 1) p.
-    const auto k = static_cast<std::size_t>(i);
-    const double rate = normal_rate_[k], n = static_cast<double>(blocks_[k].size());
-    const double time = rate > 0            ? ((n + 1) * p_ - normal_[k]) / rate
-                        : rate < 0 && n > 0 ? (normal_[k] - (n - 1) * p_) / -rate
+    const double rate = normal_rate_[i], normal = normal_[i];
+    const auto n = static_cast<double>(blocks_[static_cast<std::size_t>(i)].size());
+    const double time = rate > 0            ? ((n + 1) * p_ - normal) / rate
+                        : rate < 0 && n > 0 ? (normal - (n - 1) * p_) / -rate
                                             : infinity;
     return time > 0 ? time : infinity;  // not ahead: the commit has judged it
 }

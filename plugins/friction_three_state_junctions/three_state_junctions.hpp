@@ -154,8 +154,8 @@ private:
     void end_dislocated(BlockJunctions& b, Index j, double x) const;
     void decay_angle(BlockJunctions& b, Index j, double t) const;
     void follow_normal_force(BlockJunctions& b, Index i, double x);
-    /// Records block i's P_b at the commit at t and its rate since the last one.
-    void follow_normal_rate(Index i, double t);
+    /// Records every block's P_b at the commit at t, and its rate over the last rate_interval.
+    void follow_normal_rate(double t);
     /// How long after the last commit block i's count changes if P_b goes on at its rate.
     double time_to_count_change(Index i) const;
     Index removal_choice(const BlockJunctions& b, Index i, double x);
@@ -174,8 +174,8 @@ private:
     NodeSet nodes_;
     std::vector<BlockJunctions> blocks_;
     std::vector<double> x_start_;
-    std::vector<double> normal_, normal_rate_;     // each block's P_b at the last commit (N), and its rate (N/s)
-    std::vector<double> rate_base_;                // P_b where the rate was last taken
+    Eigen::VectorXd normal_, normal_rate_;         // each block's P_b at the last commit (N), and its rate (N/s)
+    Eigen::VectorXd rate_base_;                    // P_b where the rate was last taken
     double normal_time_ = 0, rate_base_time_ = 0;  // the last commit's time; where the rate was last taken
     std::vector<std::uint64_t> removal_draws_;
     const Eigen::ArrayXd* normal_force_;
