@@ -55,6 +55,7 @@ public:
 private:
     Params params_;
     NodeSet nodes_;
+    Index first_;  // the set's first node if its nodes are consecutive, else -1
     Eigen::ArrayXd weights_;
     double full_total_ = 0;  // sum of W_i: F_N, or F_N (1 + theta/N_x) for the literal formula
     double ramp_start_ = 0;

@@ -34,6 +34,7 @@ double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body)
 RigidBaseContact::RigidBaseContact(const Params& p, const Context& ctx)
     : params_(p),
       nodes_(ctx.body->nodes(p.node_set)),
+      first_(consecutive_start(nodes_)),
       z0_(ctx.body->z0(nodes_)),
       stiffness_(contact_stiffness_of(p, *ctx.body)),
       normal_force_(ctx.quantities->field("normal_force", p.node_set, static_cast<Index>(nodes_.size()), "N",
@@ -45,12 +46,20 @@ std::string RigidBaseContact::describe() const {
 }
 
 void RigidBaseContact::update_normal_force(const StageView& s) {
+    if (first_ >= 0) {  // a row of the lattice: one vectorised pass
+        normal_force_ = stiffness_ * (z0_ - s.z.segment(first_, z0_.size())).max(0.0);
+        return;
+    }
     for (std::size_t k = 0; k < nodes_.size(); ++k)
         normal_force_(k) = stiffness_ * std::max(0.0, z0_(k) - s.z(nodes_[k]));
 }
 
 void RigidBaseContact::add_forces(const StageView& s, ForceView& f) {
     update_normal_force(s);
+    if (first_ >= 0) {
+        f.fz.segment(first_, normal_force_.size()) += normal_force_;
+        return;
+    }
     for (std::size_t k = 0; k < nodes_.size(); ++k) f.fz(nodes_[k]) += normal_force_(k);
 }
 

@@ -49,6 +49,7 @@ private:
 
     Params params_;
     NodeSet nodes_;
+    Index first_;        // the set's first node if its nodes are consecutive, else -1
     Eigen::ArrayXd z0_;  // reference heights of the set's nodes, m
     double stiffness_;   // K_b, N/m
     Eigen::ArrayXd& normal_force_;

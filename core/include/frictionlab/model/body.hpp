@@ -18,6 +18,10 @@ namespace frictionlab {
 
 using NodeSet = std::vector<Index>;
 
+/// The first node of a set whose nodes are consecutive (first, first + 1, ...), else -1: an effect
+/// may then work on the set as one block of the state arrays instead of node by node.
+Index consecutive_start(const NodeSet& set);
+
 struct Body {
     Eigen::ArrayXd x0, z0;                     // reference (undeformed) positions [nnode], m
     Eigen::ArrayXd mass;                       // [nnode], kg
