@@ -155,3 +155,17 @@ TEST(System, WorkAccountingSplitsACompositeAndChangesNoForce) {
 
 }  // namespace
 }  // namespace frictionlab
+
+namespace frictionlab {
+namespace {
+
+TEST(NodeSets, AConsecutiveSetIsRecognisedFromItsFirstNodeAnOtherIsNot) {
+    EXPECT_EQ(consecutive_start({4, 5, 6, 7}), 4);
+    EXPECT_EQ(consecutive_start({0}), 0);
+    EXPECT_EQ(consecutive_start({4, 6, 7}), -1);
+    EXPECT_EQ(consecutive_start({5, 4}), -1);
+    EXPECT_EQ(consecutive_start({}), -1);
+}
+
+}  // namespace
+}  // namespace frictionlab
