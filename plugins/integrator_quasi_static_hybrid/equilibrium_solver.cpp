@@ -17,6 +17,7 @@ bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::Vecto
     // The symbolic analysis (AMD ordering, elimination tree) only when the pattern may have changed.
     if (stiffness_.nonZeros() != pattern_size_) ldlt_.analyzePattern(stiffness_), pattern_size_ = stiffness_.nonZeros();
     ldlt_.factorize(stiffness_);
+    diagonal_ = stiffness_.diagonal();
     ++counts_.factorisations;
     // A singular or indefinite stiffness (a body mode nothing holds) has no stable static equilibrium.
     factorised_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0).all();
@@ -71,8 +72,7 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
 bool EquilibriumSolver::in_equilibrium(System& system, double t, const Eigen::VectorXd& y) {
     if (!factorised_) return false;
     node_forces(system, t, y, forces_);
-    const auto scaled = forces_.array().abs() / stiffness_.diagonal().array();
-    return scaled.maxCoeff() <= s_.position_tolerance;
+    return (forces_.array().abs() / diagonal_.array()).maxCoeff() <= s_.position_tolerance;
 }
 
 bool EquilibriumSolver::steady_velocity(System& system, double t, Eigen::VectorXd& y) {

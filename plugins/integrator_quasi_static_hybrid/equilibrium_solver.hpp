@@ -81,6 +81,7 @@ public:
         stiffness_ = Eigen::Map<const Eigen::SparseMatrix<double>>(rows, cols, static_cast<Index>(values.size()),
                                                                    outer.data(), inner.data(), values.data());
         if (factorised_) ldlt_.analyzePattern(stiffness_), ldlt_.factorize(stiffness_);
+        diagonal_ = stiffness_.diagonal();
     }
 
 private:
@@ -100,6 +101,7 @@ private:
     bool factorised_ = false, stale_ = false;
     Index pattern_size_ = -1;
     Eigen::VectorXd guess_, all_forces_, forces_, later_, rhs_, dq_, probe_, kv_, dv_;
+    Eigen::VectorXd diagonal_;  // of the stiffness factorised
 };
 
 }  // namespace frictionlab
