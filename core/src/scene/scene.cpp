@@ -100,13 +100,13 @@ SceneDocument SceneDocument::load(const std::filesystem::path& file, const std::
 SceneDocument SceneDocument::load_located(const std::filesystem::path& file,
                                           const std::vector<SceneOverride>& overrides, Diagnostics& diagnostics) {
     auto data = read(read_file(file, diagnostics), file.string(), file.parent_path(), overrides, diagnostics);
-    return SceneDocument(std::make_unique<Impl>(std::move(data)));
+    return SceneDocument(std::make_unique<Impl>(Impl{std::move(data)}));
 }
 
 SceneDocument SceneDocument::parse(const std::string& text, const std::string& name,
                                    const std::vector<std::string>& overrides, Diagnostics& diagnostics) {
     auto data = read(text, name, std::filesystem::path(name).parent_path(), from_command_line(overrides), diagnostics);
-    return SceneDocument(std::make_unique<Impl>(std::move(data)));
+    return SceneDocument(std::make_unique<Impl>(Impl{std::move(data)}));
 }
 
 std::vector<std::filesystem::path> SceneDocument::plugin_paths(Diagnostics& diagnostics) const {
