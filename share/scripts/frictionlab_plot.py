@@ -431,11 +431,13 @@ def x_display():
     if not shutil.which("Xvfb"):
         raise RenderUnavailable("no X display, and no Xvfb to start one (Debian: xvfb)")
     # -displayfd: Xvfb takes a free display number itself (no collision with another run) and writes
-    # it to the pipe once it accepts clients.
+    # it to the pipe once it accepts clients. -noreset: by default an X server resets when its last
+    # client disconnects, and refuses connections meanwhile; VTK's SupportsOpenGL() connects and
+    # disconnects just before the render connects again, which then failed at random (and VTK aborts).
     ready, number_fd = os.pipe()
     with tempfile.TemporaryFile() as log:
         server = subprocess.Popen(["Xvfb", "-displayfd", str(number_fd), "-screen", "0", "1600x1200x24",
-                                   "-nolisten", "tcp"], pass_fds=(number_fd,), stdout=log, stderr=log,
+                                   "-nolisten", "tcp", "-noreset"], pass_fds=(number_fd,), stdout=log, stderr=log,
                                   preexec_fn=stop_with_parent)
         os.close(number_fd)
         saved = os.environ.get("DISPLAY")
