@@ -69,10 +69,10 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
     return false;
 }
 
-bool EquilibriumSolver::in_equilibrium(System& system, double t, const Eigen::VectorXd& y) {
+bool EquilibriumSolver::in_equilibrium(System& system, double t, const Eigen::VectorXd& y, double tolerance) {
     if (!factorised_) return false;
     node_forces(system, t, y, forces_);
-    return (forces_.array().abs() / diagonal_.array()).maxCoeff() <= s_.position_tolerance;
+    return (forces_.array().abs() / diagonal_.array()).maxCoeff() <= tolerance;
 }
 
 bool EquilibriumSolver::steady_velocity(System& system, double t, Eigen::VectorXd& y) {

@@ -52,10 +52,11 @@ public:
     /// equilibrium(), whose factorisation it uses). False if the refinement does not converge.
     bool steady_velocity(System& system, double t, Eigen::VectorXd& y);
     /// Whether y balances at t: every node's residual force, over its diagonal stiffness, within
-    /// position_tolerance. False without a factorisation (nothing to compare with).
-    bool in_equilibrium(System& system, double t, const Eigen::VectorXd& y);
+    /// `tolerance` (m). False without a factorisation (nothing to compare with).
+    bool in_equilibrium(System& system, double t, const Eigen::VectorXd& y, double tolerance);
 
     const Counts& counts() const { return counts_; }
+    const Eigen::VectorXd& diagonal() const { return diagonal_; }
 
     /// Checkpoints: the stiffness the factorisation in use was made from (restoring factorises it
     /// again: the same factors, bit for bit), whether it is current, and the counts.

@@ -29,6 +29,16 @@ constexpr int max_short_steps = 4;
 /// a junction formed or removed changes them by ~1/N of a block's junctions (1e-4 to 1e-3), the
 /// settled slider's secants wander by ~1e-7 m/s, a drive starting or a ramp ending changes them all.
 constexpr double lag_fraction = 1e-2, lag_floor = 10;
+/// A residual (|F_i| / K_ii) within this many times Newton's tolerance is what a solve with a kept
+/// factorisation leaves, and the next span's solve takes it up; above it a commit has changed the
+/// forces at fixed positions: a jump (a junction breaking, a clock ending, a loaded junction
+/// removed: 1e-11 to 1e-9 m on the paper's slider, against the 1e-13 m tolerance).
+constexpr double jump_residual = 100;
+/// A jump's transient is checked along the straight path from the state before the jump, run in
+/// this (arbitrary, short) time: events the clock schedules, which do not move with it, stay beyond.
+constexpr double transient_path_time = 1e-9;
+/// An undamped mode overshoots a step in its load to twice the static response; dashpots only lessen it.
+constexpr double transient_overshoot = 2;
 /// Why a quiet step is refused when the steady velocities change at once by more than that.
 constexpr const char* lagging =
     "the steady velocities changed at once (a drive started or changed): the masses lag, and ring";
@@ -67,13 +77,15 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
         "Effects that cannot describe their quasi-static regime keep the run dynamic.");
     s.choice("dynamic", &Params::dynamic, {{"rk4", Dynamic::rk4}, {"velocity_verlet", Dynamic::velocity_verlet}},
              "Explicit scheme of the dynamic phase.");
-    s.choice("scheduled_events", &Params::scheduled_events,
-             {{"dynamic", ScheduledEvents::dynamic}, {"quasi_static", ScheduledEvents::quasi_static}},
-             "Spans with a scheduled event pending (a junction sliding or dislocated, its clock running): "
-             "'dynamic' integrates them with the dynamic scheme, as the reference does (a junction breaking in a "
-             "quiet phase hands over to it); 'quasi_static' crosses them in static solves from event to event, "
-             "each broken junction's jump solved at once (faster; share/docs/quasi-static.md gives its measured "
-             "accuracy).");
+    s.choice("jumps", &Params::jumps,
+             {{"dynamic", Jumps::dynamic}, {"checked", Jumps::checked}, {"quasi_static", Jumps::quasi_static}},
+             "A jump is a commit's change of the forces at fixed positions (a junction breaking, a clock ending, a "
+             "loaded junction removed). 'checked': solved statically unless the transient it excites could trigger "
+             "an event (an effect foresees one on the path to twice the static jump, an undamped mode's overshoot), "
+             "then integrated by the dynamic scheme as the reference does; spans with junction clocks running are "
+             "crossed quietly. 'dynamic': every span with a clock running is integrated dynamically (the most "
+             "conservative). 'quasi_static': every jump solved statically (the fastest; share/docs/quasi-static.md "
+             "gives each one's measured accuracy).");
     s.add("dt", &Params::dt, "Time step of the dynamic phase.").unit("s").greater_than(0);
     s.add("quiet_speed", &Params::quiet_speed,
           "The dynamic phase may turn quiet while every node's velocity is within this of the quasi-static "
@@ -90,9 +102,8 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
         .unit("s")
         .greater_than(0);
     s.add("max_quiet_step", &Params::max_quiet_step,
-          "Longest quiet step, whatever the events ahead. Junction count changes (normal force crossing a "
-          "multiple of p) are not foreseen but judged at each step's end: keep V * max_quiet_step to ~10 nm "
-          "of drive (0.1 ms at 0.1 mm/s).")
+          "Longest quiet span solved at once, whatever the events ahead; observations within a span are on the "
+          "straight line between its solved ends (the response is linear between events).")
         .unit("s")
         .greater_than(0);
     s.add("event_overshoot", &Params::event_overshoot,
@@ -132,6 +143,7 @@ std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() cons
             {"quiet_seconds_wall", seconds(quiet_wall_)},
             {"dynamic_seconds_wall", seconds(dynamic_wall_)},
             {"quiet_steps", static_cast<double>(quiet_steps_)},
+            {"quiet_spans", static_cast<double>(spans_)},
             {"dynamic_steps", static_cast<double>(dynamic_steps_)},
             {"switches_to_quiet", static_cast<double>(to_quiet_)},
             {"switches_to_dynamic", static_cast<double>(to_dynamic_)},
@@ -183,9 +195,9 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
 bool QuasiStaticHybrid::may_turn_quiet(System& system) {
     const double t = system.time();
     const Index n = system.layout().nodes;
-    // The run turns quiet only when no clock runs (however scheduled_events crosses them once quiet):
-    // the aftermath of a rupture, its junctions sliding and re-pinning by the thousand, is dynamic.
-    bool calm = system.quasi_static_regime(system.state()) && no_scheduled_event(system);
+    // With jumps: dynamic, the run turns quiet only when no clock runs.
+    bool calm =
+        system.quasi_static_regime(system.state()) && (p_.jumps != Jumps::dynamic || no_scheduled_event(system));
     const auto velocities = system.y().segment(2 * n, 2 * n);
     // While the lattice still rings far from the steady velocities of the last full check, the
     // static solves of a full check would only confirm it.
@@ -233,7 +245,28 @@ bool QuasiStaticHybrid::quasi_static_state(System& system, double t) {
            solver_.equilibrium(system, t, y_);
 }
 
+bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) {
+    // y_ holds the static response to the jump, the system the state before it: the masses follow
+    // with a transient about y_ that overshoots it (twice the jump, for an undamped mode). Events
+    // the effects foresee anyway (a count change due from the normal force's rate) are not the
+    // transient's: only one the path brings earlier than the state at rest counts.
+    const Index dof = 2 * system.layout().nodes;
+    mean_ = system.y();
+    mean_.segment(dof, dof).setZero();
+    const double at_rest = system.foreseen_event_time(view_of(mean_, system.layout(), t));
+    mean_.segment(dof, dof) = (y_.head(dof) - mean_.head(dof)) / transient_path_time;
+    const double on_path = system.foreseen_event_time(view_of(mean_, system.layout(), t));
+    return on_path < at_rest && on_path - t <= transient_overshoot * transient_path_time;
+}
+
 bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
+    // Within a solved span the response is linear in time: an observation inside it is on the line
+    // between the span's ends, as long as no commit on the way has changed the forces (a count
+    // change the foresight missed): the state at the span's last sample must still balance.
+    if (in_span_ && !projected_ &&
+        solver_.in_equilibrium(system, system.time(), system.y(), jump_residual * p_.position_tolerance))
+        return span_step(system, max_dt, h);
+    in_span_ = false;
     // From the projected state just after turning quiet (y_ then holds it), else from the accepted one.
     if (!projected_) y_ = system.y();
     const bool projected = std::exchange(projected_, false);
@@ -241,16 +274,18 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     const double t = system.time();
     if (!system.quasi_static_regime(view_of(y_, layout, t)))
         return why_dynamic_ = "an effect left its quasi-static regime", false;
-    if (p_.scheduled_events == ScheduledEvents::dynamic && !no_scheduled_event(system))
+    if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system))
         return why_dynamic_ = "a scheduled event is pending", false;
     // The last commit may have changed the forces at fixed positions (a junction broke, entered the
     // dislocated state or was removed): the static response to that change, a jump, comes first.
     // If its new loads bring another junction to its threshold, the next step is a short one to it.
     const Index dof = 2 * layout.nodes;
     bool jumped = false;
-    if (!projected && !solver_.in_equilibrium(system, t, y_)) {
+    if (!projected && !solver_.in_equilibrium(system, t, y_, jump_residual * p_.position_tolerance)) {
         jumped = true;
         if (!quasi_static_state(system, t)) return why_dynamic_ = "no static solution", false;
+        if (p_.jumps == Jumps::checked && transient_reaches_event(system, t))
+            return why_dynamic_ = "the transient of a jump could trigger an event", false;
         ++jumps_;
     }
     // Scheduled events at or before t have been judged by the last commit.
@@ -258,40 +293,65 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
                             system.foreseen_event_time(view_of(y_, layout, t)));
     start_ = y_;
-    system.begin_step();
-    // The events are foreseen at the start's velocities; the step's own mean velocity (q1 - q0)/h
+    system.begin_step();  // the effects' step-start references (B.17) for the solves of the span
+    // The events are foreseen at the start's velocities; the span's own mean velocity (q1 - q0)/H
     // may foresee an earlier one (the drive changed at a stage start, junction counts changed the
-    // response): then the step is redone to it. For a linear response the mean velocity is exact.
+    // response): then the span is redone to it. For a linear response the mean velocity is exact.
+    double span = 0;
     for (int attempt = 0;; ++attempt) {
         if (attempt == max_attempts) return why_dynamic_ = "events foreseen ever earlier", false;
-        h = std::min({max_dt, p_.max_quiet_step, event + p_.event_overshoot - t});
-        const double t1 = t + h;
+        // Not shorter than the slack: an event foreseen ever a little later (a count change whose
+        // foresight lags the normal force's rate) would otherwise be chased in ever shorter spans.
+        span = std::min(
+            {system.stage_end() - t, p_.max_quiet_step, std::max(event + p_.event_overshoot - t, event_slack * p_.dt)});
+        const double t1 = t + span;
         y_ = start_;
-        y_.head(dof) += h * start_.segment(dof, dof);  // the linear response as the first guess
+        y_.head(dof) += span * start_.segment(dof, dof);  // the linear response as the first guess
         if (!solver_.equilibrium(system, t1, y_)) return why_dynamic_ = "no static solution", false;
         // From a balanced start the response to the drive is (near) linear: its secant over the
-        // step is the steady velocity (a jump or the turn to quiet solved for it at the start).
-        // Over a step shorter than the dynamic one (to an event) the secant would carry Newton's
-        // tolerance divided by the step: the velocities then stay as they were.
-        if (h >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
+        // span is the steady velocity (a jump or the turn to quiet solved for it at the start).
+        // Over a span shorter than the dynamic step (to an event) the secant would carry Newton's
+        // tolerance divided by the span: the velocities then stay as they were.
+        if (span >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
         // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
-        if (h * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(start_, y_, dof))
+        if (span * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(start_, y_, dof))
             return why_dynamic_ = lagging, false;
         mean_ = start_;
-        mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / h;
+        mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
         const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
         if (foreseen + p_.event_overshoot + event_slack * p_.dt >= t1) break;
-        log_.trace("quasi_static_hybrid: step from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
+        log_.trace("quasi_static_hybrid: span from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
                    t, t1, foreseen, event, jumped);
         event = foreseen;
     }
     // Events closer together than the dynamic step (a cascade of breaks spreading, the clocks of
     // many junctions running out): the dynamic scheme takes them as the reference does, cheaper.
-    short_steps_ = h < p_.dt ? short_steps_ + 1 : 0;
+    short_steps_ = span < p_.dt ? short_steps_ + 1 : 0;
     if (short_steps_ > max_short_steps) return why_dynamic_ = "events closer together than the dynamic step", false;
-    const double t1 = t + h;
-    system.add_straight_path_work(t1, y_);
-    system.accept(t1, y_);
+    span_end_.swap(y_);
+    span_start_time_ = t, span_end_time_ = t + span, in_span_ = true;
+    ++spans_;
+    return span_step(system, max_dt, h);
+}
+
+bool QuasiStaticHybrid::span_step(System& system, double max_dt, double& h) {
+    const double t = system.time(), t1 = span_end_time_;
+    const Index dof = 2 * system.layout().nodes;
+    system.begin_step();
+    // The span's end, or the observation within it that the run asks the step to land on.
+    if (max_dt >= (t1 - t) * (1 - 1e-12)) {
+        h = t1 - t;
+        in_span_ = false;
+        system.add_straight_path_work(t1, span_end_);
+        system.accept(t1, span_end_);
+        return true;
+    }
+    h = max_dt;
+    const double along = (t + h - span_start_time_) / (t1 - span_start_time_);
+    y_ = span_end_;
+    y_.head(dof) = start_.head(dof) + along * (span_end_.head(dof) - start_.head(dof));
+    system.add_straight_path_work(t + h, y_);
+    system.accept(t + h, y_);
     return true;
 }
 

@@ -13,42 +13,48 @@ namespace frictionlab {
 /// Quasi-static / dynamic hybrid stepper (share/docs/quasi-static.md): quiet phases crossed in a
 /// few static solves, ruptures integrated by an explicit scheme at its own step.
 ///
-/// Quiet phase: every active effect is in its quasi-static regime (Effect::quasi_static_regime) and,
-/// with scheduled_events dynamic, no scheduled event is pending (no junction clock runs). Each quiet
-/// step jumps from t to the first of: the next scheduled event (Effect::next_event_time: a lifetime
-/// ending, a drive reversal), the earliest foreseen one (Effect::foreseen_event_time: a pinned
-/// junction reaching mu_s p, a count change, a contact opening), the next observation or stage end
-/// (the run passes them within max_dt), and max_quiet_step. There it solves static equilibrium with
-/// the velocities held (the viscous lag, EquilibriumSolver), sets the velocities to the step's
-/// secant and commits. A step to a foreseen event overshoots it by event_overshoot so the strict
-/// threshold is crossed; a commit that changed forces at fixed positions is followed by the static
-/// response to it (a jump) before the next step.
+/// Quiet phase: every active effect is in its quasi-static regime (Effect::quasi_static_regime).
+/// Each quiet span goes from t to the first of: the next scheduled event (Effect::next_event_time:
+/// a lifetime ending, a drive reversal), the earliest foreseen one (Effect::foreseen_event_time: a
+/// pinned junction reaching mu_s p, a count change, a contact opening), the stage's end and
+/// max_quiet_step. There it solves static equilibrium with the velocities held (the viscous lag,
+/// EquilibriumSolver) and sets the velocities to the span's secant. Between events the response is
+/// linear in time, so the steps the run asks for within the span (its observations) land on the
+/// straight line between the span's solved ends, without a solve, and are committed like any step.
+/// A span to a foreseen event overshoots it by event_overshoot so the strict threshold is crossed.
+///
+/// Jumps: a commit that changes the forces at fixed positions (a junction broke, a clock ended)
+/// is followed by the static response to it, unless (jumps: checked) the transient it excites
+/// could trigger an event: an effect foresees one on the straight path from the state before the
+/// jump to twice the static jump (an undamped mode's overshoot). The dynamic scheme then takes it
+/// as the reference does. jumps: dynamic integrates every span with a junction clock running;
+/// jumps: quasi_static solves every jump statically.
 ///
 /// Dynamic phase: the scene's explicit scheme (rk4 or velocity_verlet) at its step dt. It starts
-/// when an effect leaves its regime, a clock starts (scheduled_events dynamic), events come closer
-/// together than dt, or no static solution is found. Every check_interval of simulated time the
-/// stepper checks whether it may return: every effect in its regime, no clock running, and the
-/// state within quiet_speed of the quasi-static one (largest |v - v*| over the nodes, v* the
-/// steady velocities at the equilibrium of that time). It returns only when this has held at every
-/// check for quiet_hold: the hysteresis that keeps a marginal case (a ringing lattice, a junction
-/// close to its threshold) from switching at every check. On return the residual vibration (speeds
-/// below quiet_speed) is projected away; its kinetic energy shows in the energy observer's residual,
-/// bounded by 1/2 M quiet_speed^2.
+/// when an effect leaves its regime, a jump's transient could trigger an event (or, with jumps:
+/// dynamic, a clock starts), events come closer together than dt, or no static solution is found.
+/// Every check_interval of simulated time the stepper checks whether it may return: every effect
+/// in its regime (with jumps: dynamic, no clock running), and the state within quiet_speed of the
+/// quasi-static one (largest |v - v*| over the nodes, v* the steady velocities at the equilibrium
+/// of that time). It returns only when this has held at every check for quiet_hold: the hysteresis
+/// that keeps a marginal case (a ringing lattice, a junction close to its threshold) from switching
+/// at every check. On return the residual vibration (speeds below quiet_speed) is projected away;
+/// its kinetic energy shows in the energy observer's residual, bounded by 1/2 M quiet_speed^2.
 class QuasiStaticHybrid final : public Integrator {
 public:
     /// The explicit scheme of the dynamic phase.
     enum class Dynamic { rk4, velocity_verlet };
-    /// How spans with a scheduled event pending (a junction sliding or dislocated, its clock
-    /// running) are crossed: by the dynamic scheme, or quietly from event to event.
-    enum class ScheduledEvents { dynamic, quasi_static };
+    /// How a jump (a commit's change of the forces at fixed positions: a junction breaking, a clock
+    /// ending) is taken, and whether spans with junction clocks running may be quiet.
+    enum class Jumps { dynamic, checked, quasi_static };
     struct Params {
         Dynamic dynamic = Dynamic::rk4;
-        ScheduledEvents scheduled_events = ScheduledEvents::dynamic;
+        Jumps jumps = Jumps::checked;
         double dt = 2e-7;
         double quiet_speed = 1e-7;
         double quiet_hold = 1e-4;
         double check_interval = 1e-5;
-        double max_quiet_step = 1e-4;
+        double max_quiet_step = 1e-3;
         double event_overshoot = 1e-12;
         double position_tolerance = 1e-13;
     };
@@ -66,9 +72,9 @@ public:
     template <class Archive>
     void serialize(Archive& ar) {
         auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count();
-        ar(solver_, y_, quiet_, projected_, next_check_, calm_since_, steady_, checks_since_full_, to_quiet_,
-           to_dynamic_, quiet_steps_, dynamic_steps_, jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall,
-           dynamic_wall);
+        ar(solver_, y_, start_, span_end_, span_start_time_, span_end_time_, in_span_, spans_, quiet_, projected_,
+           next_check_, calm_since_, steady_, checks_since_full_, to_quiet_, to_dynamic_, quiet_steps_, dynamic_steps_,
+           jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall, dynamic_wall);
         quiet_wall_ = std::chrono::steady_clock::duration(quiet_wall);
         dynamic_wall_ = std::chrono::steady_clock::duration(dynamic_wall);
     }
@@ -88,10 +94,15 @@ public:
     long long switches_to_quiet() const { return to_quiet_; }
     long long switches_to_dynamic() const { return to_dynamic_; }
     long long quiet_steps() const { return quiet_steps_; }
+    /// Quiet spans solved; the quiet steps within them land on the line between the span's ends.
+    long long quiet_spans() const { return spans_; }
+    long long jumps_solved() const { return jumps_; }
 
 private:
     /// One quiet step, or false (nothing done) if the system must be stepped dynamically now.
     bool quiet_step(System& system, double max_dt, double& h);
+    /// One step within the solved span: to its end, or to the observation max_dt ahead on the line to it.
+    bool span_step(System& system, double max_dt, double& h);
     /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis).
     bool may_turn_quiet(System& system);
     /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
@@ -100,6 +111,8 @@ private:
     /// (and a percent of themselves) of those of `before`: a quasi-static state may follow a change
     /// of the drive only as fast as inertia lets it.
     bool keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, Index dof) const;
+    /// Whether the transient of the jump from the system's state to y_ could trigger an event.
+    bool transient_reaches_event(const System& system, double t);
     /// Whether no effect has a scheduled event pending (no junction clock runs).
     static bool no_scheduled_event(const System& system);
 
@@ -108,7 +121,11 @@ private:
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
     Eigen::VectorXd y_;             // the quiet solution being formed
-    Eigen::VectorXd start_, mean_;  // a quiet step's start, and its start with the step's mean velocity
+    Eigen::VectorXd start_, mean_;  // a quiet span's start, and its start with the span's mean velocity
+    Eigen::VectorXd span_end_;      // the quiet span's solved end
+    double span_start_time_ = 0, span_end_time_ = 0;
+    bool in_span_ = false;  // steps land within a solved span
+    long long spans_ = 0;
     bool quiet_ = false;
     const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
     bool projected_ = false;        // y_ holds the quasi-static state the first quiet step starts from

@@ -196,6 +196,7 @@ void System::add_straight_path_work(double t1, const Eigen::VectorXd& y1) {
 }
 
 void System::activate(const StageInfo* stage) {
+    stage_end_ = stage ? stage->t_start + stage->duration : std::numeric_limits<double>::infinity();
     active_.clear();
     active_parts_.clear();
     for (const Slot& slot : slots_) {

@@ -102,6 +102,98 @@ TEST(QuasiStaticHybrid, QuietPhaseGivesTheExactSteadyResponseWithItsViscousLag) 
     EXPECT_LE(system.step_index() - steps, 140 + 3);
 }
 
+TEST(QuasiStaticHybrid, StepsWithinASolvedSpanLandOnTheExactResponseWithoutASolve) {
+    // Between events the steady response is linear in time: one solve per span of max_quiet_step
+    // (10 ms), and the 1 ms steps the run asks for in between (its observations) on the line.
+    spdlog::logger log("test");
+    Body body = one_node();
+    System system(body, 0);
+    system.initial_state()(0) = -c * V / k;  // on the steady response: quiet from the first check
+    system.initial_state()(2) = V;
+    system.add_effect(std::make_unique<DrivenNode>());
+    QuasiStaticHybrid::Params p;
+    p.max_quiet_step = 1e-2;
+    QuasiStaticHybrid hybrid = make_hybrid(log, p);
+    while (!hybrid.quiet()) hybrid.step(system, 1e-3);
+    const long long spans = hybrid.quiet_spans(), steps = hybrid.quiet_steps();
+    for (int i = 0; i < 100; ++i) {
+        const double t = system.time() + 1e-3;
+        hybrid.step(system, 1e-3);
+        EXPECT_NEAR(system.time(), t, 1e-15);
+        EXPECT_NEAR(system.state().x(0), V * system.time() - c * V / k, 1e-15) << system.time();
+        EXPECT_NEAR(system.state().vx(0), V, 1e-9 * V);
+    }
+    EXPECT_EQ(hybrid.quiet_steps() - steps, 100);
+    EXPECT_LE(hybrid.quiet_spans() - spans, 11) << "one solve per 10 ms span, not per step";
+}
+
+/// Driven like DrivenNode, but a threshold at x_break releases a resisting force R at once (a
+/// junction breaking: the node is pushed forward, the forces stay linear in x) and a second
+/// threshold lies `gap` beyond where the node was when it broke.
+class ReleasingNode final : public Effect {
+public:
+    ReleasingNode(double x_break, double release, double gap) : x_break_(x_break), release_(release), gap_(gap) {}
+    std::string describe() const override { return "releasing node"; }
+    void add_forces(const StageView& s, ForceView& f) override {
+        f.fx(0) += k * (V * s.t - s.x(0)) - c * s.vx(0) + (released ? release_ : 0.0);
+        f.fz(0) -= k * s.z(0);
+    }
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& K) const override {
+        K.emplace_back(0, 0, k);
+        K.emplace_back(1, 1, k);
+    }
+    double foreseen_event_time(const StageView& s) const override {
+        const double target = released ? broke_at_x + gap_ : x_break_;
+        if (second || s.vx(0) <= 0) return std::numeric_limits<double>::infinity();
+        return s.x(0) >= target ? s.t : s.t + (target - s.x(0)) / s.vx(0);
+    }
+    void commit(const StageView& end, double) override {
+        if (released && !second && end.x(0) > broke_at_x + gap_) second = true, second_at = end.t;
+        if (!released && end.x(0) > x_break_) released = true, broke_at_x = end.x(0), broke_at = end.t;
+    }
+    bool released = false, second = false;
+    double broke_at = 0, broke_at_x = 0, second_at = 0;
+
+private:
+    double x_break_, release_, gap_;
+};
+
+TEST(QuasiStaticHybrid, AJumpWhoseTransientCouldTriggerAnEventIsIntegratedDynamically) {
+    // Released, the node's equilibrium moves forward by R/k = 100 um at once; the mass overshoots it
+    // (to 1 + exp(-pi zeta / sqrt(1 - zeta^2)) = 1.73 R/k at zeta = 0.1, half a period = 31 ms
+    // later). A second threshold 1.5 R/k ahead is then reached by the transient after ~20 ms, where
+    // the drive alone would take 50 ms: the jump must be integrated. One 3 R/k ahead is out of the
+    // transient's reach (the drive takes 200 ms to it), and the jump is solved statically.
+    const double release = 1.0;  // N: R/k = 100 um
+    const auto run = [&](double gap, long long& to_dynamic, long long& jumps) {
+        spdlog::logger log("test");
+        Body body = one_node();
+        System system(body, 0);
+        system.initial_state()(0) = -c * V / k;
+        system.initial_state()(2) = V;
+        auto node = std::make_unique<ReleasingNode>(3e-4, release, gap);
+        ReleasingNode* probe = node.get();
+        system.add_effect(std::move(node));
+        QuasiStaticHybrid::Params p;
+        p.max_quiet_step = 1e-2;
+        QuasiStaticHybrid hybrid = make_hybrid(log, p);
+        while (system.time() < 0.41) hybrid.step(system, 0.41 - system.time());
+        EXPECT_NEAR(probe->broke_at, 0.302, 1e-3);
+        to_dynamic = hybrid.switches_to_dynamic(), jumps = hybrid.jumps_solved();
+        return probe->second ? probe->second_at - probe->broke_at : -1.0;
+    };
+    long long to_dynamic = 0, jumps = 0;
+    const double triggered_after = run(1.5 * release / k, to_dynamic, jumps);
+    EXPECT_EQ(to_dynamic, 1);
+    EXPECT_EQ(jumps, 0);
+    EXPECT_GT(triggered_after, 0.015) << "the transient needs ~20 ms to swing there";
+    EXPECT_LT(triggered_after, 0.03) << "the drive alone would take 50 ms";
+    EXPECT_LT(run(3 * release / k, to_dynamic, jumps), 0) << "nothing reaches a threshold 3 R/k ahead in 0.1 s";
+    EXPECT_EQ(to_dynamic, 0);
+    EXPECT_EQ(jumps, 1);
+}
+
 TEST(QuasiStaticHybrid, LandsOnAForeseenEventAndHandsItToTheDynamicScheme) {
     spdlog::logger log("test");
     Body body = one_node();

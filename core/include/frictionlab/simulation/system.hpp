@@ -1,6 +1,7 @@
 #pragma once
 // The assembled system: state vector, masses and the force pipeline. Integrators drive it through
 // derivative(), begin_step() and accept(); the run drives stages and observation.
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -86,6 +87,9 @@ public:
     void add_straight_path_work(double t1, const Eigen::VectorXd& y1);
 
     void begin_stage(const StageInfo& stage);
+    /// Simulated time at which the current stage ends (+infinity before the first): a stepper that
+    /// plans beyond its next step (a quiet span) must not plan across it, the pipeline changes there.
+    double stage_end() const { return stage_end_; }
     /// Makes `stage` the current one without beginning it: for a run resumed within it, whose
     /// effects then restore the state they had (restore_state).
     void resume_stage(const StageInfo& stage) { activate(&stage); }
@@ -155,7 +159,7 @@ private:
     Eigen::VectorXd local_scratch_;                 // forces of the effects local in velocity
     std::vector<Eigen::Triplet<double>> triplets_;  // stiffness assembly scratch
     Eigen::VectorXd path_state_;                    // straight-path work scratch
-    double t_ = 0;
+    double t_ = 0, stage_end_ = std::numeric_limits<double>::infinity();
     long long steps_ = 0, evaluations_ = 0;
 };
 
