@@ -22,8 +22,8 @@ struct LoadingRun {
     testing::Columns curve;
     YAML::Node record;
 };
-LoadingRun run_loading(const std::filesystem::path& work, const std::string& overrides) {
-    const auto dir = work / (overrides.empty() ? "hybrid" : "reference");
+LoadingRun run_loading(const std::filesystem::path& work, const std::string& name, const std::string& overrides) {
+    const auto dir = work / name;
     std::filesystem::create_directories(dir);
     const auto r = testing::frictionlab("run -q " + overrides + " " + scene("loading.yaml"), dir);
     EXPECT_EQ(r.code, 0) << r.output;
@@ -32,30 +32,39 @@ LoadingRun run_loading(const std::filesystem::path& work, const std::string& ove
 }
 
 TEST(QuasiStaticScenes, StuckLoadingCurveMatchesRk4WithinTheTarget) {
+    // The scene at the paper's rate, 0.1 mm/s, for 30 ms: stuck throughout (the first break comes
+    // after 1 s at this rate).
+    const std::string paper_rate = "--set loaders[2].velocity=1.0e-4 --set stages[1].duration=0.03 ";
     const auto work = testing::work_directory();
-    const LoadingRun hybrid = run_loading(work, ""),
-                     rk4 = run_loading(work, "--set 'integrator={type: rk4, dt: 2.0e-7}'");
+    const LoadingRun hybrid = run_loading(work, "hybrid", paper_rate),
+                     rk4 = run_loading(work, "rk4", paper_rate + "--set 'integrator={type: rk4, dt: 2.0e-7}'");
     const auto& t = hybrid.curve.at("time");
     ASSERT_EQ(t.size(), rk4.curve.at("time").size()) << "the observer's samples land on the same times";
-    // The hybrid crossed the stuck loading (4.5 of the scene's 10 ms, from the drive's start to the
-    // first break) in quiet steps, one per sample (every 10 us); the settling rings until 1e-7 m/s.
+    // The drive starting at 4 ms makes the masses lag and ring (integrated dynamically); once calm,
+    // the rest is crossed in quiet spans, the samples every 10 us on their lines.
     const YAML::Node stats = hybrid.record["integrator_statistics"];
     ASSERT_TRUE(stats) << "run.yaml records the phase statistics";
-    EXPECT_GT(stats["quiet_fraction_of_simulated_time"].as<double>(), 0.4);
-    EXPECT_GE(stats["switches_to_dynamic"].as<double>(), 1) << "the first precursor is integrated dynamically";
-    // Stuck: loading starts at 4 ms; the first junction breaks at ~9.0 ms. The RK4 run starts with a
-    // transient (the drive jumps from rest to 20 mm/s: 0.01 N at the first sample, 6e-4 N after
-    // 0.15 ms, decaying) that the quasi-static solution has not, by construction; point by point the
-    // curves agree within the target once it has decayed (from 4.5 ms, F_S = 7 N; measured 1.3e-5).
-    double worst_relative = 0;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-        EXPECT_DOUBLE_EQ(t[k], rk4.curve.at("time")[k]);
-        if (t[k] < 4.5e-3 || t[k] > 8e-3) continue;
-        const double reference = rk4.curve.at("driving_force")[k];
-        const double error = std::abs(hybrid.curve.at("driving_force")[k] - reference);
-        worst_relative = std::max(worst_relative, error / reference);
-    }
-    EXPECT_LE(worst_relative, 1e-4) << "relative error of F_S on the stuck loading curve";
+    EXPECT_GT(stats["quiet_fraction_of_simulated_time"].as<double>(), 0.7);
+    EXPECT_LT(stats["quiet_spans"].as<double>(), stats["quiet_steps"].as<double>() / 5)
+        << "a solve per span, not per sample";
+    // Point by point the curves agree within the target (measured: 2e-8) once RK4's own ringing from
+    // the drive's start (the quasi-static solution has none, by construction) has decayed, from 1 ms
+    // into the loading (F_S = 0.07 N) to the first discrete event, a junction removed as a block's
+    // normal force falls (15.96 ms). RK4 rings about the new balance for ~0.1 ms after each such
+    // removal (4e-4 N at most here) where the quiet solution takes the jump at once; between them
+    // the two agree as closely again (20 to 29 ms, before the next removal).
+    const auto worst_relative = [&](double from, double to) {
+        double worst = 0;
+        for (std::size_t k = 0; k < t.size(); ++k) {
+            EXPECT_DOUBLE_EQ(t[k], rk4.curve.at("time")[k]);
+            if (t[k] < from || t[k] > to) continue;
+            const double reference = rk4.curve.at("driving_force")[k];
+            worst = std::max(worst, std::abs(hybrid.curve.at("driving_force")[k] - reference) / reference);
+        }
+        return worst;
+    };
+    EXPECT_LE(worst_relative(5e-3, 15.9e-3), 1e-4) << "relative error of F_S on the stuck loading curve";
+    EXPECT_LE(worst_relative(20e-3, 29e-3), 1e-6) << "and between the discrete events that follow";
 }
 
 /// Time at which the first junction of the interface breaks, stepping the scene's stages.
@@ -75,7 +84,10 @@ double first_break(const std::vector<std::string>& overrides) {
 }
 
 TEST(QuasiStaticScenes, LocatesTheFirstJunctionBreakAsAFineRk4RunDoes) {
-    const double hybrid = first_break({});
+    // The 20 mm/s drive rings the lattice as it starts, and junction counts change all along the
+    // loading: calm taken at 1e-5 m/s of the steady motion lets the hybrid cross the stuck loading
+    // (from 4.5 ms) in quiet spans to the foreseen break.
+    const double hybrid = first_break({"integrator.quiet_speed=1.0e-5"});
     const double fine = first_break({"integrator={type: rk4, dt: 5.0e-8}"});
     const double paper = first_break({"integrator={type: rk4, dt: 2.0e-7}"});
     // RK4 breaks a junction at the first step end past its threshold: up to one step late (measured:
