@@ -51,7 +51,7 @@ public:
         Dynamic dynamic = Dynamic::rk4;
         Jumps jumps = Jumps::checked;
         double dt = 2e-7;
-        double quiet_speed = 1e-7;
+        double quiet_speed = 1e-6;
         double quiet_hold = 1e-4;
         double check_interval = 1e-5;
         double max_quiet_step = 1e-3;
