@@ -63,6 +63,13 @@ struct Common {
         return log;
     }
 
+    /// For components built only to be checked: their own log lines only if asked for.
+    std::shared_ptr<spdlog::logger> checking_logger() const {
+        auto log = logger();
+        if (log_level == "info") log->set_level(spdlog::level::warn);
+        return log;
+    }
+
     std::vector<std::filesystem::path> directories(const std::vector<std::filesystem::path>& scene_paths) const {
         const char* env = std::getenv("FRICTIONLAB_PLUGIN_PATH");
         return fl::plugin_directories(plugin_paths, scene_paths, env ? env : "", fl::shipped_plugin_directory());
@@ -447,16 +454,9 @@ int main(int argc, char** argv) {
             if (!scene) return fl::exit_code::bad_input;
             if (*check) {
                 fl::check_scene_builds(*scene, registry, *log);
-                // The components are built to estimate the stable step: their own log lines only
-                // if asked for.
-                auto quiet = common.logger();
-                if (common.log_level == "info") quiet->set_level(spdlog::level::warn);
                 fl::Diagnostics diagnostics;
-                fl::check_stable_steps(*scene, registry, *quiet, diagnostics);
-                if (!diagnostics.empty()) {
-                    std::cerr << diagnostics.format() << "1 error in " << scene_file.string() << "\n";
-                    return fl::exit_code::bad_input;
-                }
+                fl::check_stable_steps(*scene, registry, *common.checking_logger(), diagnostics);
+                if (!diagnostics.empty()) return report_errors(diagnostics, scene_file);
                 std::cout << scene_file.string() << ": ok\n";
                 return fl::exit_code::ok;
             }

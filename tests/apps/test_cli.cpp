@@ -265,6 +265,23 @@ TEST_F(Cli, CheckReportsAStepAboveTheStableOneAtIntegratorDt) {
     EXPECT_EQ(frictionlab("run -q " + file.string() + " -o unstable_run", dir_).code, 2);
 }
 
+TEST_F(Cli, CheckEstimatesTheStableStepOfEveryStage) {
+    // The driving spring acts in the second stage only: stiff enough, it is what limits the step there,
+    // and the first stage's pipeline does not show it.
+    const fs::path file = scene("tiny_lattice.yaml");
+    const std::string stiff = " --set loaders[2].stiffness=1e12";
+    auto r = frictionlab("check " + file.string() + stiff, dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find(location_of(file, "dt") + ": error: integrator.dt: stage 'load': the time step dt = "),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("set by driving spring"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\n1 error in " + file.string()), std::string::npos) << r.output;
+    auto run = frictionlab("run -q " + file.string() + stiff + " -o refused", dir_);
+    EXPECT_EQ(run.code, 2) << "run and check agree: " << run.output;
+    EXPECT_NE(run.output.find("stage 'load'"), std::string::npos) << run.output;
+}
+
 TEST_F(Cli, DashOMakesTheOutputKeyOptional) {
     std::string text = read_text(scene("tiny_lattice.yaml"));
     text.erase(text.find("output: tiny_out\n"), std::string("output: tiny_out\n").size());

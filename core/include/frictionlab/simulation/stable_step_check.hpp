@@ -1,5 +1,5 @@
 #pragma once
-// What `frictionlab check` adds to validation: the stable-step estimate `run` makes before the first
+// What `frictionlab check` adds to validation: the stable-step estimate `run` makes before each
 // stage, so that a step `run` would refuse is reported by `check` too, at `integrator.dt`.
 #include <spdlog/logger.h>
 
@@ -10,10 +10,12 @@ namespace frictionlab {
 
 class Registry;
 
-/// Builds the scene's components and estimates the stable step of the first stage's pipeline at the
-/// scene's initial state; a step above it is reported to `diagnostics` where `integrator.dt` is
-/// written (the integrator's mapping if dt is left at its default). `run` estimates again at the
-/// start of each stage, from the state the earlier stages left. A component that refuses its set-up
+/// Builds the scene's components and estimates the stable step of each stage's pipeline, in stage
+/// order, at the scene's initial state (with friction events off after the first stage); the first
+/// step above it is reported to `diagnostics`, naming the stage, where `integrator.dt` is written
+/// (the integrator's mapping if dt is left at its default). `run` estimates at the start of each stage
+/// from the state the earlier stages left (junctions formed under the settled load add their
+/// stiffness), so it may still refuse a step close to the limit. A component that refuses its set-up
 /// is reported at its place in the scene.
 void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics);
 
