@@ -109,6 +109,29 @@ int report_errors(const fl::Diagnostics& diagnostics, const std::filesystem::pat
     return fl::exit_code::bad_input;
 }
 
+/// The stable-step estimate `check` makes for a scene (stable_step_check.hpp), for every case of a
+/// campaign, each finding naming its case. A sweep with a case above its stable step fails, so there
+/// it is an error; a study records such a case as a failed row by design, so there it is a warning.
+/// Returns how many cases are above their stable step.
+std::size_t check_case_steps(const std::vector<std::pair<std::string, const fl::Scene*>>& cases, bool as_errors,
+                             const Common& common, const fl::Registry& registry, fl::Diagnostics& diagnostics) {
+    const auto log = common.checking_logger();
+    std::size_t above = 0;
+    for (const auto& [name, scene] : cases) {
+        fl::Diagnostics found;
+        fl::check_stable_steps(*scene, registry, *log, found);
+        above += found.empty() ? 0 : 1;
+        for (const auto& d : found.list()) {
+            const fl::Diagnostic named{d.where, d.key_path, "case " + name + ": " + d.message};
+            if (as_errors)
+                diagnostics.error(named.where, named.key_path, named.message);
+            else
+                std::cerr << named.format("warning") << " (the study records it as a failed case)\n";
+        }
+    }
+    return above;
+}
+
 /// Reads and validates a scene, loading the plugins it needs. Prints every diagnostic and returns
 /// nothing if the scene has any error.
 std::optional<fl::Scene> read_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
@@ -216,6 +239,11 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
         fl::load_plugins(registry, common.directories(scene_paths));
         cases = fl::sweep_cases(spec, output, registry, diagnostics);
     }
+    if (check_only && diagnostics.empty() && root) {
+        std::vector<std::pair<std::string, const fl::Scene*>> scenes;
+        for (const auto& c : cases) scenes.emplace_back(c.name, &c.scene);
+        check_case_steps(scenes, true, common, registry, diagnostics);
+    }
     if (!diagnostics.empty()) return root ? report_errors(diagnostics, file) : fl::exit_code::bad_input;
     if (check_only) {
         if (root) std::cout << file.string() << ": ok (sweep of " << cases.size() << " cases)\n";
@@ -283,7 +311,12 @@ int study(const std::filesystem::path& file, std::string output, const fl::RunOp
     }
     if (!diagnostics.empty()) return report_errors(diagnostics, file);
     if (check_only) {
-        std::cout << file.string() << ": ok (study of " << scenes.size() << " scenes)\n";
+        std::vector<std::pair<std::string, const fl::Scene*>> cases;
+        const auto specs = spec.all_cases();
+        for (std::size_t i = 0; i < scenes.size(); ++i) cases.emplace_back(specs.at(i)->name, &scenes[i]);
+        const std::size_t above = check_case_steps(cases, false, common, registry, diagnostics);
+        std::cout << file.string() << ": ok (study of " << scenes.size() << " scenes"
+                  << (above > 0 ? fmt::format("; {} above the stable step", above) : "") << ")\n";
         return fl::exit_code::ok;
     }
     const fl::InterruptSignals signals;

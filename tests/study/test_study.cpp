@@ -182,6 +182,28 @@ TEST_F(BadStudy, ErrorsInACaseOverridePointIntoTheStudyFile) {
         << r.output;
 }
 
+TEST_F(BadStudy, CheckWarnsOfACaseAboveItsStableStepWhichTheStudyRecordsAsFailed) {
+    std::ofstream(dir_ / "steps.yaml") << "scene: tiny_scene.yaml\n"
+                                          "reference:\n"
+                                          "  set: [integrator.dt=1.0e-7]\n"
+                                          "cases:\n"
+                                          "  - name: unstable\n"
+                                          "    set: [integrator.dt=2.0e-5]\n";
+    for (const char* command : {"check steps.yaml", "study --check steps.yaml"}) {
+        const auto r = frictionlab(command, dir_);
+        EXPECT_EQ(r.code, 0) << command << "\n" << r.output;
+        EXPECT_NE(r.output.find("steps.yaml:6:"), std::string::npos) << "at the override: " << r.output;
+        EXPECT_NE(r.output.find("warning: integrator.dt: case unstable: stage 'settle': the time step dt = 2e-05 s is "
+                                "above the estimated stable step"),
+                  std::string::npos)
+            << command << "\n"
+            << r.output;
+        EXPECT_EQ(r.output.find("case reference"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("steps.yaml: ok (study of 2 scenes; 1 above the stable step)"), std::string::npos)
+            << r.output;
+    }
+}
+
 TEST_F(BadStudy, MissingBaseSceneAndStudyFile) {
     const auto r = study("scene: nowhere.yaml\nreference: {set: []}\ncases: [{name: a}]\n");
     EXPECT_EQ(r.code, 2) << r.output;

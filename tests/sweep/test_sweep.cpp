@@ -217,14 +217,18 @@ TEST(Sweep, AKilledCaseResumesFromItsCheckpointWhenTheSweepRunsAgain) {
     EXPECT_EQ(sweep_rows(dir / "out" / "sweep.csv").at("seed-3").at("status"), "done");
 }
 
+/// A sweep of two listed cases of the tiny scene: `fine`, loading for a millisecond, and `unstable`, at a
+/// step far above the stable one (its override on line 6).
+void write_fine_and_unstable_sweep(const fs::path& file) {
+    std::ofstream out(file);
+    out << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
+        << "cases:\n  - name: fine\n    set: [\"stages[1].duration=1.0e-3\"]\n"
+        << "  - name: unstable\n    set: [\"integrator.dt=2.0e-5\"]\n";
+}
+
 TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     const fs::path dir = frictionlab::testing::work_directory();
-    {
-        std::ofstream out(dir / "failing.yaml");
-        out << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
-            << "cases:\n  - name: fine\n    set: [\"stages[1].duration=1.0e-3\"]\n"
-            << "  - name: unstable\n    set: [\"integrator.dt=2.0e-5\"]\n";
-    }
+    write_fine_and_unstable_sweep(dir / "failing.yaml");
     const auto result = frictionlab("sweep -q failing.yaml -o out -j 2", dir);
     EXPECT_EQ(result.code, 1) << result.output;
     const auto rows = sweep_rows(dir / "out" / "sweep.csv");
@@ -232,6 +236,23 @@ TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     EXPECT_EQ(rows.at("fine").at("status"), "done");
     EXPECT_EQ(rows.at("unstable").at("status"), "failed");
     EXPECT_NE(rows.at("unstable").at("reason").find("stable"), std::string::npos) << rows.at("unstable").at("reason");
+}
+
+TEST(Sweep, CheckReportsACaseAboveItsStableStepAtItsOverride) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    write_fine_and_unstable_sweep(dir / "steps.yaml");
+    for (const char* command : {"check steps.yaml", "sweep --check steps.yaml"}) {
+        const auto result = frictionlab(command, dir);
+        EXPECT_EQ(result.code, 2) << command << "\n" << result.output;
+        EXPECT_NE(result.output.find("steps.yaml:6:"), std::string::npos) << "at the override: " << result.output;
+        EXPECT_NE(result.output.find("error: integrator.dt: case unstable: stage 'settle': the time step dt = 2e-05 s "
+                                     "is above the estimated stable step"),
+                  std::string::npos)
+            << command << "\n"
+            << result.output;
+        EXPECT_EQ(result.output.find("case fine"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("\n1 error in steps.yaml"), std::string::npos) << result.output;
+    }
 }
 
 TEST(Sweep, BadValuesAreReportedWithTheirPlaceInTheSweepFile) {

@@ -8,10 +8,10 @@
 
 namespace frictionlab {
 
-std::string Diagnostic::format() const {
+std::string Diagnostic::format(const std::string& severity) const {
     std::string out = where.file.empty() ? "<scene>" : where.file;
     if (where.line > 0) out += fmt::format(":{}:{}", where.line, where.column);
-    out += ": error: ";
+    out += ": " + severity + ": ";
     if (!key_path.empty()) out += key_path + ": ";
     return out + message;
 }

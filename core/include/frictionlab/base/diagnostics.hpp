@@ -15,7 +15,8 @@ struct Diagnostic {
     SourceLocation where;
     std::string key_path;  // e.g. "loaders[1].stiffness"; empty for whole-file errors
     std::string message;
-    std::string format() const;
+    /// "file:line:column: error: key.path: message" (or another severity, e.g. "warning").
+    std::string format(const std::string& severity = "error") const;
 };
 
 class Diagnostics {
