@@ -21,6 +21,7 @@
 
 #include "frictionlab/campaign_mpi.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/live_line.hpp"
 
 namespace frictionlab {
 
@@ -128,7 +129,8 @@ public:
             else
                 log_.warn("case {} failed: {} ({}/{})", c.name, r.reason, done_, total_);
         } else if (r.status != "done") {
-            std::fprintf(stderr, "\r\033[Kcase %s failed: %s\n", c.name.c_str(), r.reason.c_str());
+            clear_live_line();
+            std::fprintf(stderr, "case %s failed: %s\n", c.name.c_str(), r.reason.c_str());
         }
         show();
     }
@@ -146,9 +148,8 @@ private:
             const double left = elapsed / static_cast<double>(finished_here_) * static_cast<double>(total_ - done_);
             eta = fmt::format("ETA {:.0f} s", std::ceil(left));
         }
-        std::fprintf(stderr, "\r\033[Ksweep: %zu/%zu done, %zu running, %zu failed, %.0f s, %s", done_, total_,
-                     running_, failed_, elapsed, eta.c_str());
-        std::fflush(stderr);
+        show_live_line(fmt::format("sweep: {}/{} done, {} running, {} failed, {:.0f} s, {}", done_, total_, running_,
+                                   failed_, elapsed, eta));
     }
 
     std::size_t total_, done_, running_ = 0, failed_ = 0, finished_here_ = 0;

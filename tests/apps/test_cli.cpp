@@ -330,7 +330,12 @@ TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
     std::array<char, 4096> buffer{};
     for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) output.append(buffer.data(), n);
     ASSERT_EQ(pclose(pipe), 0) << output;
-    ASSERT_NE(output.find("\rstage "), std::string::npos) << "a live progress line was drawn";
+    // Drawn and cleared by erasing to the end of the line, never padded with spaces: padding wraps on
+    // a terminal narrower than it and leaves stale lines.
+    const std::string erase = "\r\x1b[K";
+    ASSERT_NE(output.find(erase + "stage "), std::string::npos) << "a live progress line was drawn";
+    EXPECT_EQ(output.find("\rstage "), std::string::npos) << "every drawing erases the line first";
+    EXPECT_EQ(output.find("          "), std::string::npos) << "no padding";
     int log_lines = 0;
     // "[12:00:00.000] info: ...", the level in colour on a terminal.
     const std::regex log_line("\\[[0-9:.]+\\] (\x1b\\[[0-9;]*m)?info");
@@ -342,6 +347,9 @@ TEST_F(Cli, TheLiveProgressLineIsClearedBeforeALogLine) {
         const std::string shown = before.substr(before.rfind('\r') == std::string::npos ? 0 : before.rfind('\r') + 1);
         EXPECT_EQ(shown.find("stage "), std::string::npos)
             << "a log line printed after the progress text: '" << shown << "'";
+        if (before.find("stage ") != std::string::npos) {
+            EXPECT_EQ(before.substr(before.size() - erase.size()), erase) << "the progress line is erased first";
+        }
         ++log_lines;
     }
     EXPECT_GT(log_lines, 5);

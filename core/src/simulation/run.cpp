@@ -6,7 +6,6 @@
 #include <csignal>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <iterator>
@@ -22,6 +21,7 @@
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/checkpoint_file.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/live_line.hpp"
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/output_directory.hpp"
 #include "frictionlab/plugins/registry.hpp"
@@ -106,7 +106,7 @@ public:
     bool shown = false;
 
     void erase() {
-        if (shown) std::fprintf(stderr, "\r%-100s\r", ""), std::fflush(stderr);
+        if (shown) clear_live_line();
         shown = false;
     }
 
@@ -141,7 +141,7 @@ public:
         const std::string line = fmt::format("stage {} ({}): t = {:.6g} s, {:5.1f} %, {:.3g} steps/s, ETA {:.0f} s",
                                              stage.index + 1, stage.name, t, 100 * done, rate, eta);
         if (live_)
-            std::fprintf(stderr, "\r%-100s", line.c_str()), std::fflush(stderr), eraser_->shown = true;
+            show_live_line(line), eraser_->shown = true;
         else
             log_.info(line);
         last_ = now;
