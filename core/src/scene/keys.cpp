@@ -47,7 +47,10 @@ const std::vector<ParamInfo>& top_level_params() {
         ParamSpec<Header> s;
         s.add("title", &Header::title, "A line describing the scene, for the run's records.");
         s.add("seed", &Header::seed, "Seed of every random draw of the run.").at_least(0);
-        s.add("output", &Header::output, "Output directory, relative to the working directory.").required();
+        s.add("output", &Header::output,
+              "Output directory, relative to the working directory; may be left out when the command gives one "
+              "(run or check -o DIR).")
+            .required();
         return s;
     }();
     return spec.params();
