@@ -1,6 +1,7 @@
 #include "vtk_series.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -94,9 +95,9 @@ void insert_cells(vtkUnstructuredGrid& grid, int type, const std::vector<std::ar
 ParamSpec<VtkSeries::Params> VtkSeries::spec() {
     ParamSpec<Params> s(
         "Lattice snapshots for ParaView: a .vtu file per observation (nodes at their reference positions with "
-        "displacement, velocity, net force, node-set roles, every published field and the strain of each "
-        "cell) and a .pvd collection "
-        "with their simulated times, valid after every snapshot.");
+        "displacement, velocity, net force, node-set roles and every published field; each quad cell's strain "
+        "strain_xx, strain_zz, strain_xz and the stress its springs carry, stress_xx, stress_zz, stress_xz in Pa) "
+        "and a .pvd collection with their simulated times, valid after every snapshot.");
     s.add("prefix", &Params::prefix,
           "Name of the collection <prefix>.pvd and of the folder <prefix>/ of its .vtu files, in the run's output "
           "directory.");
@@ -320,8 +321,12 @@ void VtkSeries::update(const RunView& view) {
     }
     update_pinned_fraction();
     for (const auto& [value, array] : scalars_) set_single(array, *value);
-    set_single(when_.time, s.t);
-    set_single(when_.time_value, s.t);
+    // The time the .pvd lists, so that the series and a file opened alone agree to the digit.
+    const std::string listed = collection_time(s.t, view.step);
+    double t = s.t;
+    std::from_chars(listed.data(), listed.data() + listed.size(), t);
+    set_single(when_.time, t);
+    set_single(when_.time_value, t);
     set_single(when_.step, view.step);
     set_single(when_.stage, view.stage.name);
     set_single(when_.stage_index, view.stage.index);

@@ -60,7 +60,8 @@ namespace frictionlab {
 /// viscous part is not included): what one looks at around a rupture tip.
 ///
 /// The .pvd lists each snapshot at its simulated time rounded to a hundredth of the mean step so far
-/// (0.408, not the 0.40800000000967207 a sum of two million steps gives); TIME in the file is exact.
+/// (0.408, not the 0.40800000000967207 a sum of two million steps gives); TIME and TimeValue in the
+/// file hold the same rounded time.
 ///
 /// Field data: TIME (s), TimeValue (the same; VTK's readers take a file's time from this name when
 /// the .vtu files are opened without the .pvd), STEP, stage, stage_index, every published scalar

@@ -477,6 +477,31 @@ TEST_F(VtkSeriesTest, EndWithoutBeginWritesNothing) {
     EXPECT_TRUE(fs::is_empty(dir_));
 }
 
+TEST_F(VtkSeriesTest, TheFileHoldsTheTimeTheCollectionLists) {
+    make_system();
+    VtkSeries observer = make_observer();
+    observer.begin(view());
+    // 1.25 million steps of 2e-7 s summed one by one land a few 1e-12 s off 0.25.
+    double t = 0;
+    for (int i = 0; i < 1'250'000; ++i) t += 2e-7;
+    ASSERT_NE(t, 0.25);
+    system_->accept(t, system_->y());
+    system_->refresh();
+    observer.observe(view());
+    observer.end(view());
+    const auto entries = read_collection(dir_ / "lattice.pvd");
+    ASSERT_EQ(entries.size(), 1u);
+    EXPECT_EQ(entries[0].time, 0.25);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((dir_ / entries[0].file).c_str());
+    reader->Update();
+    for (const char* name : {"TIME", "TimeValue"}) {
+        vtkDataArray* array = reader->GetOutput()->GetFieldData()->GetArray(name);
+        ASSERT_NE(array, nullptr) << name;
+        EXPECT_EQ(array->GetComponent(0, 0), 0.25) << name << ": as the .pvd lists it, not " << t;
+    }
+}
+
 TEST(VtkSeriesCollection, TimesAreWrittenWithoutTheDriftOfASumOfSteps) {
     // 2.04 million steps of 2e-7 s summed one by one land 1e-11 s off 0.408.
     double t = 0;
@@ -496,6 +521,13 @@ TEST(VtkSeriesSpec, PrefixMustBeAPlainFileName) {
     EXPECT_EQ(rules[0].check({{"prefix", std::string("lattice")}}), "");
     EXPECT_NE(rules[0].check({{"prefix", std::string("out/lattice")}}), "");
     EXPECT_NE(rules[0].check({{"prefix", std::string("")}}), "");
+}
+
+TEST(VtkSeriesSpec, ItsDescriptionNamesTheCellArraysWithTheirUnit) {
+    // What `frictionlab doc observer/vtk_series` prints first.
+    const std::string summary = VtkSeries::spec().summary();
+    for (const char* name : {"strain_xx", "strain_zz", "strain_xz", "stress_xx", "stress_zz", "stress_xz", "Pa"})
+        EXPECT_NE(summary.find(name), std::string::npos) << name << " in: " << summary;
 }
 
 TEST(VtkSeriesPlugin, TheLibraryLoadsAndRegistersTheObserver) {
