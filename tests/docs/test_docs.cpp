@@ -9,12 +9,14 @@
 // - Lines `--set ...` in any fence: applied to a shipped scene with `frictionlab check`.
 // - Fenced ```yaml blocks: a scene (it has `bulk:`) is written out and checked; a study or sweep (it has
 //   `scene:`) is written beside the base scene it names and checked with `check`.
-// - share/docs/glossary.md names every CSV column, VTU array and run.yaml key a run writes.
+// - share/docs/glossary.md names every CSV column, VTU array and run.yaml and precursors_summary.yaml
+//   key a run writes, and every column of a sweep's and a study's tables, each with its unit.
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <fstream>
 #include <regex>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -167,44 +169,129 @@ TEST_F(Docs, EveryDocumentedSceneAndStudyIsValid) {
     EXPECT_GE(files, 2);
 }
 
-/// Every backquoted name of the glossary.
-std::set<std::string> glossary_names() {
-    const std::string text = read_text(source / "share/docs/glossary.md");
-    std::set<std::string> names;
-    const std::regex quoted("`([^`]+)`");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), quoted); it != std::sregex_iterator(); ++it)
-        names.insert((*it)[1]);
-    return names;
+/// The cells of a Markdown table row (an escaped \| stays within its cell), trimmed.
+std::vector<std::string> table_cells(const std::string& row) {
+    std::vector<std::string> cells{""};
+    for (std::size_t i = 1; i < row.size(); ++i) {
+        if (row[i] == '|' && row[i - 1] != '\\')
+            cells.emplace_back();
+        else
+            cells.back() += row[i];
+    }
+    cells.pop_back();  // after the closing bar
+    for (auto& c : cells) {
+        c.erase(0, c.find_first_not_of(' '));
+        c.erase(c.find_last_not_of(' ') + 1);
+    }
+    return cells;
 }
 
-TEST_F(Docs, TheGlossaryNamesEveryColumnAndArrayARunWrites) {
-    const auto scene = source / "tests/apps/scenes/every_observer.yaml";
-    const auto r = frictionlab("run " + scene.string() + " -q -o out", dir_);
-    ASSERT_EQ(r.code, 0) << r.output;
-    const auto names = glossary_names();
-    const auto documented = [&](const std::string& name) {
-        if (names.contains(name)) return true;
-        // Per-block and per-effect columns are documented by their pattern.
+/// A row of a glossary table that has a `unit` column: the backquoted names in the cells left of
+/// that column, and the row's unit.
+struct GlossaryRow {
+    std::vector<std::string> names;
+    std::string unit;
+};
+
+std::vector<GlossaryRow> glossary_rows() {
+    std::vector<GlossaryRow> rows;
+    std::vector<std::string> header;
+    const std::regex quoted("`([^`]+)`");
+    for (const auto& line : lines_of(read_text(source / "share/docs/glossary.md"))) {
+        if (line.rfind("|", 0) != 0) {
+            header.clear();
+            continue;
+        }
+        const auto cells = table_cells(line);
+        if (header.empty()) {
+            header = cells;
+            continue;
+        }
+        const auto unit = std::find(header.begin(), header.end(), "unit");
+        if (unit == header.end() || cells.at(0).rfind("---", 0) == 0) continue;
+        const auto column = static_cast<std::size_t>(unit - header.begin());
+        GlossaryRow row{{}, cells.size() > column ? cells[column] : ""};
+        for (std::size_t k = 0; k < column && k < cells.size(); ++k)
+            for (auto it = std::sregex_iterator(cells[k].begin(), cells[k].end(), quoted); it != std::sregex_iterator();
+                 ++it)
+                row.names.push_back((*it)[1]);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+/// Every name of glossary_rows(), with the unit of its row (the first that gives one).
+std::map<std::string, std::string> glossary_units() {
+    std::map<std::string, std::string> units;
+    for (const auto& row : glossary_rows())
+        for (const auto& name : row.names)
+            if (units[name].empty()) units[name] = row.unit;
+    return units;
+}
+
+/// Checks each name against the glossary: listed in a table with a unit, and that unit given.
+/// Per-block and per-effect columns, and the key paths campaigns vary, by their pattern.
+class Glossary {
+public:
+    void expect_documented(const std::string& name, const std::string& where) {
+        ++checked_;
+        std::string entry = name;
         static const std::vector<std::pair<std::regex, std::string>> patterns = {
             {std::regex("block_[0-9]+"), "block_<b>"},
-            {std::regex(".*_(energy|work|dissipated|input)"), "<label>_energy"}};
-        for (const auto& [pattern, entry] : patterns)
-            if (std::regex_match(name, pattern) && names.contains(entry)) return true;
-        return false;
-    };
-    int checked = 0;
-    for (const auto& file : fs::directory_iterator(dir_ / "out")) {
-        if (file.path().extension() != ".csv") continue;
-        std::istringstream in(read_text(file.path()));
+            {std::regex(".*_energy"), "<label>_energy"},
+            {std::regex(".*_work"), "<label>_work"},
+            {std::regex(".*_dissipated"), "<label>_dissipated"},
+            {std::regex(".*_input"), "<label>_input"},
+            {std::regex("[a-z_]+(\\[[0-9]+\\])?(\\.[a-z_]+(\\[[0-9]+\\])?)+"), "<key.path>"}};
+        if (!units_.contains(name))
+            for (const auto& [pattern, pattern_entry] : patterns)
+                if (std::regex_match(name, pattern) && units_.contains(pattern_entry)) entry = pattern_entry;
+        const auto it = units_.find(entry);
+        EXPECT_TRUE(it != units_.end()) << where << ": '" << name << "' is not in a glossary table with a unit";
+        if (it != units_.end()) {
+            EXPECT_FALSE(it->second.empty()) << where << ": '" << name << "' has no unit";
+        }
+    }
+    /// Every column of a CSV table's header (after any '#' lines).
+    void expect_columns(const fs::path& csv) {
+        ASSERT_TRUE(fs::exists(csv)) << csv;
+        std::istringstream in(read_text(csv));
         std::string header;
         while (std::getline(in, header) && header.rfind("#", 0) == 0) {}
         std::istringstream columns(header);
-        for (std::string column; std::getline(columns, column, ',');) {
-            ++checked;
-            EXPECT_TRUE(documented(column))
-                << file.path().filename() << ": column '" << column << "' is not in the glossary";
-        }
+        for (std::string column; std::getline(columns, column, ',');)
+            expect_documented(column, csv.filename().string());
     }
+    /// Every top-level key of a YAML file.
+    void expect_keys(const fs::path& yaml) {
+        ASSERT_TRUE(fs::exists(yaml)) << yaml;
+        for (const auto& entry : YAML::LoadFile(yaml.string()))
+            expect_documented(entry.first.as<std::string>(), yaml.filename().string());
+    }
+    int checked() const { return checked_; }
+
+private:
+    std::map<std::string, std::string> units_ = glossary_units();
+    int checked_ = 0;
+};
+
+TEST_F(Docs, EveryRowOfAGlossaryTableWithAUnitColumnGivesItsUnit) {
+    const auto rows = glossary_rows();
+    EXPECT_GT(rows.size(), 120u);
+    for (const auto& row : rows)
+        EXPECT_FALSE(row.unit.empty()) << "glossary: '" << (row.names.empty() ? "" : row.names.front())
+                                       << "' has no unit";
+}
+
+TEST_F(Docs, TheGlossaryNamesEveryColumnAndArrayARunWritesWithItsUnit) {
+    const auto scene = source / "tests/apps/scenes/every_observer.yaml";
+    const auto r = frictionlab("run " + scene.string() + " -q -o out", dir_);
+    ASSERT_EQ(r.code, 0) << r.output;
+    Glossary glossary;
+    for (const auto& file : fs::directory_iterator(dir_ / "out"))
+        if (file.path().extension() == ".csv") glossary.expect_columns(file.path());
+    glossary.expect_keys(dir_ / "out/precursors_summary.yaml");
+    glossary.expect_keys(dir_ / "out/run.yaml");
     const auto vtu = dir_ / "out/lattice/lattice_000000.vtu";
     ASSERT_TRUE(fs::exists(vtu));
     vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -213,18 +300,29 @@ TEST_F(Docs, TheGlossaryNamesEveryColumnAndArrayARunWrites) {
     for (auto* data :
          {static_cast<vtkFieldData*>(reader->GetOutput()->GetPointData()),
           static_cast<vtkFieldData*>(reader->GetOutput()->GetCellData()), reader->GetOutput()->GetFieldData()})
-        for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
-            const std::string name = data->GetArrayName(i);
-            ++checked;
-            EXPECT_TRUE(documented(name) || name == "driving_force" || name == "normal_load" ||
-                        name == "driving_displacement" || name == "driver_position" || name == "junction_area")
-                << "VTU array '" << name << "' is not in the glossary";
-        }
-    for (const auto& entry : YAML::LoadFile((dir_ / "out/run.yaml").string())) {
-        ++checked;
-        EXPECT_TRUE(documented(entry.first.as<std::string>())) << "run.yaml key '" << entry.first << "'";
-    }
-    EXPECT_GT(checked, 60);
+        for (int i = 0; i < data->GetNumberOfArrays(); ++i) glossary.expect_documented(data->GetArrayName(i), "VTU");
+    EXPECT_GT(glossary.checked(), 120);
+}
+
+TEST_F(Docs, TheGlossaryNamesEveryColumnOfTheCampaignTablesWithItsUnit) {
+    // A one-case sweep and a two-case study of the tiny scenes the sweep and study tests use, loading
+    // for a millisecond: their tables, not their physics.
+    std::ofstream(dir_ / "sweep.yaml") << "scene: " << (source / "tests/sweep/tiny_scene.yaml").string()
+                                       << "\ncases:\n  - name: short\n    set: [\"stages[1].duration=1.0e-3\"]\n"
+                                       << "seeds: [1]\n";
+    const auto sweep = frictionlab("sweep -q sweep.yaml -o sweep_out -j 1", dir_);
+    ASSERT_EQ(sweep.code, 0) << sweep.output;
+    std::ofstream(dir_ / "study.yaml") << "scene: " << (source / "tests/study/tiny_scene.yaml").string()
+                                       << "\nreference:\n  set: [\"stages[1].duration=1.0e-3\"]\n"
+                                       << "cases:\n  - name: coarse\n    set: [\"stages[1].duration=1.0e-3\", "
+                                          "\"integrator.dt=4.0e-7\"]\n";
+    const auto study = frictionlab("study -q study.yaml -o study_out", dir_);
+    ASSERT_EQ(study.code, 0) << study.output;
+    Glossary glossary;
+    glossary.expect_columns(dir_ / "sweep_out/sweep.csv");
+    glossary.expect_columns(dir_ / "sweep_out/events.csv");
+    glossary.expect_columns(dir_ / "study_out/study.csv");
+    EXPECT_GE(glossary.checked(), 40);
 }
 
 }  // namespace
