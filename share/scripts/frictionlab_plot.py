@@ -17,9 +17,13 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
 and, over all the runs given (into -o, default the first run's plots/): precursor_lengths, l/L
 against F_S/F_N (Li2020 Figs. 7, 8), and with several runs loading_curves, F_S/F_N overlaid.
 
-Every time axis is time since loading started (the start of the last stage, as the loading curve
-has it), and every title names the scene: its title, F_N, theta, h, the friction law and the seed,
-from the run's run.yaml. A panel without data says so.
+Every time axis has one origin, when loading started: the start of the first stage in which a
+driving loader (driving_spring, plate_springs) acts (every stage if it names none), or of the last
+stage in a scene without one, from the stage durations the run's run.yaml records. Figures on an
+event's own clock (four_phase: since detachment; fronts: since nucleation) say when the event came
+after loading started. Every title names the scene: its title, F_N, theta, h, the friction law and
+the seed, from run.yaml. A panel without data says so, and so does a figure of a run without the
+event it draws.
 
     frictionlab plot SWEEP_DIR                 (a directory `frictionlab sweep` wrote)
 
@@ -53,6 +57,7 @@ import xml.etree.ElementTree as ElementTree
 import matplotlib
 
 matplotlib.use("Agg")
+matplotlib.rcParams["svg.fonttype"] = "none"  # the SVGs keep their text as text: searchable, editable
 import matplotlib.font_manager  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
@@ -128,12 +133,66 @@ def no_data(ax, what):
     ax.text(0.5, 0.5, what, transform=ax.transAxes, ha="center", va="center", color="0.4", fontsize=9)
 
 
+def has_table(run, name):
+    """Whether the run wrote the table `name` (CSV or HDF5), rows or not: an observer ran."""
+    return any(os.path.exists(os.path.join(run, os.path.splitext(name)[0] + ext)) for ext in (".csv", ".h5"))
+
+
+DRIVING_LOADERS = ("driving_spring", "plate_springs")  # the loaders that pull the slider
+
+
+def loading_stage(scene):
+    """Index of the stage loading starts in: the first in which a driving loader acts (its `stages`,
+    or every stage if it names none); the last stage in a scene without one. None without stages."""
+    names = [stage.get("name") for stage in scene.get("stages") or []]
+    if not names:
+        return None
+    acting = [names.index(name) for loader in scene.get("loaders") or [] if loader.get("type") in DRIVING_LOADERS
+              for name in (loader.get("stages") or names) if name in names]
+    return min(acting) if acting else len(names) - 1
+
+
 def loading_start(run):
-    """Time at which loading starts (start of the last stage), from loading_curve.csv; 0 if unknown."""
-    curve = table(run, "loading_curve.csv")
-    if curve is None or "stage" not in curve.dtype.names:
-        return 0.0
-    return float(load_stage_start(curve))
+    """When loading started, in the run's simulated time: the stage durations before the loading
+    stage (loading_stage) summed, as run.yaml records them; None if it records no stages."""
+    scene = scene_of(run)
+    stage = loading_stage(scene)
+    if stage is None:
+        return None
+    try:  # PyYAML (YAML 1.1) reads 3e-3 as a string: float() takes it
+        return float(sum(float(s["duration"]) for s in scene["stages"][:stage]))
+    except (KeyError, TypeError, ValueError):
+        return None
+
+
+def time_origin(run):
+    """(t0, what t0 is) for the run's time axes: when loading started, or, said so, the run's start
+    where run.yaml does not tell when loading started."""
+    t0 = loading_start(run)
+    if t0 is None:
+        return 0.0, "the run started (when loading started is unknown: run.yaml records no stages)"
+    return t0, "loading started"
+
+
+def from_loading(times, t0):
+    """Which rows are at or after t0: a row's time is a sum of steps, so within round-off of a stage's
+    start; half an observation interval's grace takes the row observed at the start."""
+    grace = 0.5 * float(np.median(np.diff(times))) if len(times) > 1 else 0.0
+    return times >= t0 - grace
+
+
+def overlaid_time_label(unknown):
+    """The time axis of curves of several runs, each from its own time_origin; `unknown`: some run
+    does not tell when its loading started."""
+    return "time since loading started (s" + ("; from the run's start where run.yaml records no stages"
+                                              if unknown else "") + ")"
+
+
+def no_events_note(run):
+    """What a figure of rupture events says when it has none to draw."""
+    if has_table(run, "precursors.csv"):
+        return "no rupture event in this run (the precursors observer recorded none)"
+    return "no rupture events recorded (no precursors observer)"
 
 
 def save(fig, out_dir, name):
@@ -144,18 +203,12 @@ def save(fig, out_dir, name):
     print(os.path.join(out_dir, name + ".png"))
 
 
-def load_stage_start(curve):
-    """Time at which the last stage (the loading) starts: the driving force is zero until then."""
-    stages = curve["stage"]
-    return curve["time"][np.argmax(stages == stages.max())]
-
-
 def loading_curve(run, out_dir):
     curve, events = table(run, "loading_curve.csv"), table(run, "precursors.csv")
     if curve is None or "driving_force" not in curve.dtype.names:
         return
-    t0 = load_stage_start(curve)
-    loading = curve["time"] >= t0
+    t0, since = time_origin(run)
+    loading = from_loading(curve["time"], t0)
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 5), gridspec_kw={"height_ratios": [3, 1]})
     top.plot(curve["time"][loading] - t0, curve["driving_force"][loading], color="tab:red", lw=1)
     top.set_ylabel("driving force $F_S$ (N)")
@@ -169,10 +222,10 @@ def loading_curve(run, out_dir):
         bottom.vlines(t, 0, events["extent_over_length"], color="tab:blue")
         bottom.plot(t, events["extent_over_length"], ".", color="tab:blue")
     else:
-        no_data(bottom, "no rupture events recorded (no precursors observer)")
+        no_data(bottom, no_events_note(run))
     bottom.set_ylim(0, 1.05)
     bottom.set_ylabel("$l/L$")
-    bottom.set_xlabel("time since loading started (s)")
+    bottom.set_xlabel(f"time since {since} (s)")
     top.set_title(run_label(run), fontsize=9)
     save(fig, out_dir, "loading_curve")
 
@@ -203,19 +256,22 @@ def precursor_lengths(runs, out_dir):
 def loading_curves(runs, out_dir):
     """F_S/F_N against time since loading started, every run overlaid."""
     fig, ax = plt.subplots(figsize=(7, 4))
+    unknown = False  # a run whose loading start is unknown is drawn from its own start
     for run in runs:
         curve = table(run, "loading_curve.csv")
         if curve is None or "driving_force_over_normal_load" not in curve.dtype.names:
             continue
-        t0 = load_stage_start(curve)
-        loading = curve["time"] >= t0
+        t0, since = time_origin(run)
+        known = since == "loading started"
+        unknown = unknown or not known
+        loading = from_loading(curve["time"], t0)
         ax.plot(curve["time"][loading] - t0, curve["driving_force_over_normal_load"][loading], lw=1,
-                label=run_label(run, short=True))
+                label=run_label(run, short=True) + ("" if known else " (from the run's start)"))
     if ax.lines:
         ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     else:
         no_data(ax, "no loading curve with F_S/F_N in these runs")
-    ax.set_xlabel("time since loading started (s)")
+    ax.set_xlabel(overlaid_time_label(unknown))
     ax.set_ylabel("$F_S/F_N$")
     save(fig, out_dir, "loading_curves")
 
@@ -243,14 +299,23 @@ def phase_boundaries(t, d):
 
 def four_phase(run, out_dir):
     paths = glob.glob(os.path.join(run, "contact_area_block_*.csv")) + glob.glob(os.path.join(run, "contact_area_block_*.h5"))
+    t0, since = time_origin(run)
     for stem in sorted({os.path.splitext(os.path.basename(p))[0] for p in paths}):
         block = stem[len("contact_area_block_"):]
         d = table(run, stem + ".csv")
         if d is None:
             continue
-        loading = d["stage"] == d["stage"].max()
-        detached = np.flatnonzero(loading & (d["pinned_fraction"] < 0.5))
+        title = (f"interface block {int(block) + 1} of the paper (index {block}): the four phases of one rupture\n"
+                 + run_label(run, short=True))
+        detached = np.flatnonzero(from_loading(d["time"], t0) & (d["pinned_fraction"] < 0.5))
         if detached.size == 0:
+            fig, ax = plt.subplots(figsize=(7.5, 3))
+            no_data(ax, "no rupture event reached this block in this run:\n"
+                        "its pinned fraction never fell below 0.5 after loading started")
+            ax.set_xticks([])
+            ax.set_yticks([])
+            ax.set_title(title, fontsize=9)
+            save(fig, out_dir, f"four_phase_{block}")
             continue
         t_det = d["time"][detached[0]]
         window = (d["time"] > t_det - 5e-4) & (d["time"] < t_det + 4e-3)
@@ -272,7 +337,7 @@ def four_phase(run, out_dir):
         for name, label in (("friction_force", "$f_i$"), ("bond_force_left", "left bond"), ("bond_force_right", "right bond")):
             axes[3].plot(t, w[name], lw=1, label=label)
         axes[3].set_ylabel("force (N)")
-        axes[3].set_xlabel("time since detachment (ms)")
+        axes[3].set_xlabel(f"time since detachment (ms); detachment at {(t_det - t0) * 1e3:.2f} ms after {since}")
         for ax in (axes[0], axes[3]):  # beside the axes, never over the curves
             ax.legend(frameon=False, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1))
         bounds = phase_boundaries(t, w)
@@ -286,9 +351,7 @@ def four_phase(run, out_dir):
                     ax.axvspan(a, b, color="0.93", zorder=0)
             axes[0].text(0.5 * (a + b), 1.02, ["I", "II", "III", "IV"][k], transform=axes[0].get_xaxis_transform(),
                          ha="center", va="bottom", fontsize=10, fontweight="bold")
-        paper_block = int(block) + 1
-        axes[0].set_title(f"interface block {paper_block} of the paper (index {block}): the four phases of one rupture\n"
-                          + run_label(run, short=True), fontsize=9, pad=16)
+        axes[0].set_title(title, fontsize=9, pad=16)
         save(fig, out_dir, f"four_phase_{block}")
 
 
@@ -299,7 +362,7 @@ def spacetime(run, out_dir):
     panels = [(velocity, "log$_{10}$ |slip velocity| (m/s)", lambda v: np.log10(np.abs(v) + 1e-9), "magma")]
     if pinned is not None:
         panels.append((pinned, "pinned fraction", lambda v: v, "viridis"))
-    t0 = loading_start(run)  # one time origin with the loading curve
+    t0, since = time_origin(run)  # one time origin with the loading curve
     fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(7, 3 * len(panels)), squeeze=False)
     for ax, (data, label, transform, cmap) in zip(axes[:, 0], panels):
         blocks = [n for n in data.dtype.names if n.startswith("block_")]
@@ -309,7 +372,7 @@ def spacetime(run, out_dir):
         fig.colorbar(image, ax=ax, label=label)
         ax.set_ylabel("interface block (trailing edge = 0)")
     axes[0, 0].set_title(run_label(run), fontsize=9)
-    axes[-1, 0].set_xlabel("time since loading started (s; negative: settling)")
+    axes[-1, 0].set_xlabel(f"time since {since} (s; negative: settling)")
     save(fig, out_dir, "spacetime")
 
 
@@ -336,23 +399,30 @@ def wave_speeds(scene):
 
 
 def fronts(run, out_dir):
-    """Rupture-front position against time for every event (Rubinstein et al. 2004 style)."""
+    """Rupture-front position against time for every event (Rubinstein et al. 2004 style), with the
+    lattice's wave speeds for reference, events or not."""
+    if not has_table(run, "precursors.csv"):
+        return  # no precursors observer: no events to draw, nor their absence
     f, events = table(run, "precursor_fronts.csv"), table(run, "precursors.csv")
-    if f is None or events is None:
-        return
+    t0, since = time_origin(run)
     fig, ax = plt.subplots(figsize=(7, 4.5))
     cmap = plt.get_cmap("viridis")
-    ids = np.unique(f["event"])
+    ids = np.unique(f["event"]) if f is not None and events is not None else np.array([])
     for k, event in enumerate(ids):
         rows = f[f["event"] == event]
         rows = rows[np.lexsort((rows["distance"], rows["delay"]))]  # in time order, nearest first at ties
         is_global = events["global"][events["event"] == event].max() > 0.5
+        nucleation = (events["t_start"][events["event"] == event].min() - t0) * 1e3
         # Points only: two fronts of one event (from both sides) joined by a line would zig-zag.
         ax.plot(rows["delay"] * 1e3, rows["x"] * 1e3, "." if is_global else "o", ms=4 if is_global else 3,
-                color=cmap(k / max(len(ids) - 1, 1)), label=f"event {int(event)}" + (" (global)" if is_global else ""))
-    speeds = wave_speeds(scene_of(run))
-    global_ids = events["event"][events["global"] > 0.5]
-    if speeds and global_ids.size:
+                color=cmap(k / max(len(ids) - 1, 1)),
+                label=f"event {int(event)}" + (" (global)" if is_global else "") + f" at {nucleation:.2f} ms")
+    if not ids.size:
+        no_data(ax, no_events_note(run))
+    speeds, global_ids = wave_speeds(scene_of(run)), np.array([])
+    if events is not None:
+        global_ids = events["event"][events["global"] > 0.5]
+    if speeds and f is not None and global_ids.size:
         # Through the first global slip's arrival at its farthest block: a crossing at c_S or c_R
         # would run parallel to these.
         rows = f[f["event"] == global_ids[0]]
@@ -360,16 +430,21 @@ def fronts(run, out_dir):
         x0, t_far, x_far = float(np.min(rows["x"])), float(last["delay"]), float(last["x"])
         if x_far < x0 + 1e-12:  # a front running towards the trailing edge
             x0 = float(np.max(rows["x"]))
+    elif speeds:
+        # No global slip: a front from the trailing edge (where the driving spring nucleates them)
+        # to the leading edge at each speed.
+        x0, x_far = 0.0, float(scene_of(run)["bulk"]["length"])
+        t_far = x_far / speeds[1]
+    if speeds:
         for c, name, style in ((speeds[0], "$c_S$", "--"), (speeds[1], "$c_R$", ":")):
             t_start = t_far - abs(x_far - x0) / c
             ax.plot([t_start * 1e3, t_far * 1e3], [x0 * 1e3, x_far * 1e3], style, color="0.2", lw=1.2,
                     label=f"{name} = {c:.0f} m/s (lattice)")
-    elif not ids.size:
-        no_data(ax, "no rupture fronts")
-    ax.set_xlabel("time since nucleation (ms)")
+    ax.set_xlabel(f"time since each event's nucleation (ms); legend: nucleation, ms after {since}")
     ax.set_ylabel("front position x (mm)")
     ax.set_title(run_label(run), fontsize=9)
-    ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
+    if ax.lines:
+        ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     save(fig, out_dir, "fronts")
 
 
@@ -377,7 +452,8 @@ def energy(run, out_dir):
     e = table(run, "energy.csv")
     if e is None:
         return
-    t = e["time"] - loading_start(run)
+    t0, since = time_origin(run)
+    t = e["time"] - t0
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 6), gridspec_kw={"height_ratios": [3, 1]})
     top.set_title(run_label(run), fontsize=9)
     for name in ("input", "stored_energy", "kinetic_energy", "dissipated_damping", "dissipated_friction"):
@@ -387,7 +463,7 @@ def energy(run, out_dir):
     top.legend(frameon=False, fontsize=8)
     bottom.plot(t, e["residual"], "k", lw=1)
     bottom.set_ylabel("balance residual (J)")
-    bottom.set_xlabel("time since loading started (s; negative: settling)")
+    bottom.set_xlabel(f"time since {since} (s; negative: settling)")
     save(fig, out_dir, "energy")
 
 
@@ -504,8 +580,9 @@ def lattice(run, out_dir, magnify=200.0):
     deformation = numpy_to_vtk(displacement - mean, deep=True)
     deformation.SetName("deformation")
     data.AddArray(deformation)
-    title = (f"{run_label(run)}\nlattice at {(snapshot[1] - loading_start(run)) * 1e3:.3f} ms since loading "
-             f"started, deformation (displacement less its mean {mean[0] * 1e6:.1f} µm in x) ×{magnify:g}")
+    t0, since = time_origin(run)
+    title = (f"{run_label(run)}\nlattice at {(snapshot[1] - t0) * 1e3:.3f} ms after {since}, deformation "
+             f"(displacement less its mean {mean[0] * 1e6:.1f} µm in x) ×{magnify:g}")
     try:
         with x_display():
             render_lattice(grid, title, magnify, out_dir)
@@ -827,16 +904,19 @@ def sweep_figures(sweep_dir):
         plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(7, 5))
+    unknown = False  # a case whose loading start is unknown is drawn from its own start
     for k, r in enumerate(cases):
-        curve = table(os.path.join(sweep_dir, "cases", r["case"]), "loading_curve.csv")
+        case = os.path.join(sweep_dir, "cases", r["case"])
+        curve = table(case, "loading_curve.csv")
         if curve is None or "driving_force" not in curve.dtype.names:
             continue
-        t0 = load_stage_start(curve)
-        loading = curve["time"] >= t0
+        t0, since = time_origin(case)
+        unknown = unknown or since != "loading started"
+        loading = from_loading(curve["time"], t0)
         ax.plot(curve["time"][loading] - t0, curve["driving_force"][loading], lw=0.8,
                 color=f"C{groups.index(group(r)) % 10}", label=group(r) if group(r) not in
                 ax.get_legend_handles_labels()[1] else None)
-    ax.set_xlabel("time since loading began (s)")
+    ax.set_xlabel(overlaid_time_label(unknown))
     ax.set_ylabel("driving force $F_S$ (N)")
     if ax.lines:
         ax.legend(fontsize=8)

@@ -1,0 +1,111 @@
+"""The plot script's figures as a researcher reads them: one time origin, when loading started, and
+the events on their own clocks placed on it; titles and labels from the scene; a figure without the
+event it draws says so. The script is imported for its rules and run for its figures, whose SVGs
+keep their text."""
+import importlib.util
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+import frictionlab
+from conftest import SCENE
+
+SETTLE = 0.003  # the tiny scene's first stage; its driving spring acts in the second
+
+
+@pytest.fixture(scope="session")
+def script(source_dir):
+    return os.path.join(source_dir, "share", "scripts", "frictionlab_plot.py")
+
+
+@pytest.fixture(scope="session")
+def plot(script):
+    spec = importlib.util.spec_from_file_location("frictionlab_plot", script)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="session")
+def quiet_run(tmp_path_factory):
+    """The tiny scene loaded for half a millisecond: no rupture event yet."""
+    out = tmp_path_factory.mktemp("quiet") / "out"
+    return frictionlab.Scene.load(SCENE, set=["stages[1].duration=5.0e-4"]).run(output=str(out))
+
+
+def draw(script, *arguments):
+    result = subprocess.run([sys.executable, script, *arguments], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    return result
+
+
+def svg_text(directory, figure):
+    with open(os.path.join(directory, figure + ".svg")) as f:
+        return f.read()
+
+
+def test_loading_starts_when_the_loading_stage_does_not_a_sample_later(plot, csv_run):
+    assert plot.loading_start(csv_run.directory) == SETTLE
+    curve = plot.table(csv_run.directory, "loading_curve.csv")
+    loading = plot.from_loading(curve["time"], SETTLE)
+    # The row observed at the stage's start is still labelled with the settling stage: the first row
+    # labelled with the loading stage is one observation late.
+    assert curve["time"][loading][0] == pytest.approx(SETTLE, abs=1e-12)
+    assert curve["stage"][loading][0] == 0
+    assert curve["time"][curve["stage"] == 1][0] == pytest.approx(SETTLE + 1e-5, abs=1e-12)
+
+
+def test_loading_starts_in_the_first_stage_a_driving_loader_acts_in(plot, tmp_path):
+    stages = [{"name": n, "duration": 0.5} for n in ("settle", "load", "hold")]
+    driven = {"stages": stages, "loaders": [{"type": "normal_load"}, {"type": "driving_spring", "stages": ["load"]}]}
+    assert plot.loading_stage(driven) == 1
+    assert plot.loading_stage({"stages": stages, "loaders": [{"type": "plate_springs", "stages": ["hold"]}]}) == 2
+    assert plot.loading_stage({"stages": stages, "loaders": [{"type": "driving_spring"}]}) == 0
+    assert plot.loading_stage({"stages": stages, "loaders": [{"type": "normal_load"}]}) == 2  # none: the last
+    assert plot.loading_stage({"loaders": [{"type": "driving_spring"}]}) is None
+    # A run directory whose run.yaml records no stages: the axes count from the run's start, saying so.
+    (tmp_path / "run.yaml").write_text("framework: frictionlab\n")
+    t0, since = plot.time_origin(str(tmp_path))
+    assert t0 == 0 and since.startswith("the run started") and "unknown" in since
+
+
+@pytest.fixture(scope="session")
+def csv_plots(script, csv_run, tmp_path_factory):
+    """The figures of the tiny run (its multi-run figure elsewhere)."""
+    draw(script, csv_run.directory, "-o", str(tmp_path_factory.mktemp("all")))
+    return os.path.join(csv_run.directory, "plots")
+
+
+def test_the_event_figures_place_their_event_on_the_loading_clock(plot, csv_run, csv_plots):
+    four_phase = svg_text(csv_plots, "four_phase_3")
+    block = plot.table(csv_run.directory, "contact_area_block_3.csv")
+    detached = block["time"][(block["time"] >= SETTLE) & (block["pinned_fraction"] < 0.5)][0]
+    assert f"time since detachment (ms); detachment at {(detached - SETTLE) * 1e3:.2f} ms after loading started" \
+        in four_phase
+    fronts = svg_text(csv_plots, "fronts")
+    assert "nucleation, ms after loading started" in fronts
+    assert fronts.count("m/s (lattice)") == 2  # c_S and c_R
+    events = plot.table(csv_run.directory, "precursors.csv")
+    first = (events["t_start"][0] - SETTLE) * 1e3
+    assert f"at {first:.2f} ms" in fronts
+
+
+def test_figures_of_a_run_without_rupture_events_say_so(plot, script, quiet_run):
+    assert plot.table(quiet_run.directory, "precursors.csv") is None
+    draw(script, quiet_run.directory)
+    plots = os.path.join(quiet_run.directory, "plots")
+    assert "no rupture event reached this block in this run" in svg_text(plots, "four_phase_3")
+    fronts = svg_text(plots, "fronts")
+    assert "no rupture event in this run (the precursors observer recorded none)" in fronts
+    assert fronts.count("m/s (lattice)") == 2, "the wave speeds are the lattice's, events or not"
+    assert "the precursors observer recorded none" in svg_text(plots, "loading_curve")
+
+
+def test_without_a_precursors_observer_the_loading_curve_says_that_instead(plot, csv_run, tmp_path):
+    run = shutil.copytree(csv_run.directory, tmp_path / "run")
+    os.remove(run / "precursors.csv")
+    assert plot.no_events_note(str(run)) == "no rupture events recorded (no precursors observer)"
+    assert plot.no_events_note(csv_run.directory).endswith("(the precursors observer recorded none)")
