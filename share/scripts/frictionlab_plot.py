@@ -128,6 +128,35 @@ def run_label(run, short=False):
     return ", ".join(facts) if short else f"{title}\n" + ", ".join(facts)
 
 
+def run_labels(runs):
+    """Each run's short run_label, told apart where two collide: by the scene values that differ
+    between them (key paths as --set writes them, at most three), else by the directory given."""
+    labels = [run_label(run, short=True) for run in runs]
+    values = [scene_values({k: v for k, v in scene_of(run).items() if k != "output"}) for run in runs]
+    unique = list(labels)
+    for i, label in enumerate(labels):
+        alike = [j for j, other in enumerate(labels) if other == label]
+        if len(alike) < 2:
+            continue
+        keys = sorted({k for j in alike for k in values[j]})
+        differing = [k for k in keys if len({repr(values[j].get(k)) for j in alike}) > 1][:3]
+        unique[i] += "".join(f", {k}={values[i].get(k)}" for k in differing)
+    if len(set(unique)) < len(unique):  # the same scene twice: the directories tell them apart
+        unique = [f"{label} ({run})" if unique.count(label) > 1 else label for label, run in zip(unique, runs)]
+    return unique
+
+
+def scene_values(node, path=""):
+    """{key path: value} of a scene's mapping, key paths as --set writes them (loaders[2].velocity)."""
+    if isinstance(node, dict):
+        items = ((f"{path}.{k}" if path else str(k), v) for k, v in node.items())
+    elif isinstance(node, list) and any(isinstance(v, (dict, list)) for v in node):
+        items = ((f"{path}[{i}]", v) for i, v in enumerate(node))
+    else:
+        return {path: node}
+    return {key: value for k, v in items for key, value in scene_values(v, k).items()}
+
+
 def no_data(ax, what):
     """A panel with nothing to draw says so instead of staying empty."""
     ax.text(0.5, 0.5, what, transform=ax.transAxes, ha="center", va="center", color="0.4", fontsize=9)
@@ -254,10 +283,10 @@ def precursor_lengths(runs, out_dir):
 
 
 def loading_curves(runs, out_dir):
-    """F_S/F_N against time since loading started, every run overlaid."""
+    """F_S/F_N against time since loading started, every run overlaid, each labelled apart."""
     fig, ax = plt.subplots(figsize=(7, 4))
     unknown = False  # a run whose loading start is unknown is drawn from its own start
-    for run in runs:
+    for run, label in zip(runs, run_labels(runs)):
         curve = table(run, "loading_curve.csv")
         if curve is None or "driving_force_over_normal_load" not in curve.dtype.names:
             continue
@@ -266,13 +295,16 @@ def loading_curves(runs, out_dir):
         unknown = unknown or not known
         loading = from_loading(curve["time"], t0)
         ax.plot(curve["time"][loading] - t0, curve["driving_force_over_normal_load"][loading], lw=1,
-                label=run_label(run, short=True) + ("" if known else " (from the run's start)"))
+                label=label + ("" if known else " (from the run's start)"))
     if ax.lines:
         ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     else:
         no_data(ax, "no loading curve with F_S/F_N in these runs")
     ax.set_xlabel(overlaid_time_label(unknown))
     ax.set_ylabel("$F_S/F_N$")
+    titles = {scene_of(run).get("title") or "" for run in runs}
+    scene = f"{titles.pop()}: " if len(titles) == 1 and "" not in titles else ""
+    ax.set_title(f"{scene}the loading curves of {len(runs)} runs", fontsize=9)
     save(fig, out_dir, "loading_curves")
 
 
@@ -306,7 +338,7 @@ def four_phase(run, out_dir):
         if d is None:
             continue
         title = (f"interface block {int(block) + 1} of the paper (index {block}): the four phases of one rupture\n"
-                 + run_label(run, short=True))
+                 + run_label(run))
         detached = np.flatnonzero(from_loading(d["time"], t0) & (d["pinned_fraction"] < 0.5))
         if detached.size == 0:
             fig, ax = plt.subplots(figsize=(7.5, 3))

@@ -9,6 +9,7 @@ import subprocess
 import sys
 
 import pytest
+import yaml
 
 import frictionlab
 from conftest import SCENE
@@ -109,3 +110,24 @@ def test_without_a_precursors_observer_the_loading_curve_says_that_instead(plot,
     os.remove(run / "precursors.csv")
     assert plot.no_events_note(str(run)) == "no rupture events recorded (no precursors observer)"
     assert plot.no_events_note(csv_run.directory).endswith("(the precursors observer recorded none)")
+
+
+def test_a_figure_of_one_event_names_the_scene_it_comes_from(csv_plots):
+    assert "tiny rupture for the Python tests" in svg_text(csv_plots, "four_phase_3")  # the scene's title
+
+
+def test_overlaid_loading_curves_are_titled_and_labelled_apart(plot, script, csv_run, tmp_path):
+    runs = [shutil.copytree(csv_run.directory, tmp_path / name) for name in ("a", "b", "c")]
+    record = yaml.safe_load(open(runs[1] / "run.yaml"))
+    record["scene"]["loaders"][2]["velocity"] = 0.03  # not among the label's facts
+    with open(runs[1] / "run.yaml", "w") as f:
+        yaml.safe_dump(record, f)
+    a, b, c = plot.run_labels([str(r) for r in runs])
+    assert len({a, b, c}) == 3
+    assert b.endswith("loaders[2].velocity=0.03")
+    assert "loaders[2].velocity=0.02" in a and a.endswith(f"({runs[0]})")  # a and c alike: by directory
+    assert c.endswith(f"({runs[2]})")
+    draw(script, str(runs[0]), str(runs[1]), "-o", str(tmp_path / "both"))
+    both = svg_text(tmp_path / "both", "loading_curves")
+    assert "tiny rupture for the Python tests: the loading curves of 2 runs" in both
+    assert "loaders[2].velocity=0.03" in both
