@@ -11,9 +11,9 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
   fronts          rupture-front position against time since nucleation, one curve per event, with
                   the lattice's shear and Rayleigh wave speeds c_S and c_R for reference
   energy          the energy balance: input, stored, kinetic, dissipated, residual
-  lattice         the lattice around the first global slip (its VTU snapshot), coloured by slip
-                  velocity, displacement magnified: rendered by VTK offscreen (under a private Xvfb
-                  without an X display), so PNG only
+  lattice         the lattice around the first global slip (its VTU snapshot; the last snapshot in a
+                  run without one), coloured by the nodes' x velocity, displacement magnified:
+                  rendered by VTK offscreen (under a private Xvfb without an X display), so PNG only
 and, over all the runs given (into -o, default the first run's plots/): precursor_lengths, l/L
 against F_S/F_N (Li2020 Figs. 7, 8), and with several runs loading_curves, F_S/F_N overlaid.
 
@@ -568,8 +568,9 @@ def x_display():
 
 
 def lattice_snapshot(run):
-    """The path and time of the VTU snapshot nearest after the first global slip started (or of the
-    last one); None without a lattice series."""
+    """(path, time, global slip's start) of the first VTU snapshot at or after the first global slip
+    started, or (path, time, None) of the last one in a run without a global slip (or whose series
+    ends before it); None without a lattice series."""
     pvd = os.path.join(run, "lattice.pvd")
     if not os.path.exists(pvd):
         return None
@@ -577,19 +578,42 @@ def lattice_snapshot(run):
     if not snapshots:
         return None
     events = table(run, "precursors.csv")
-    chosen = snapshots[-1]
     if events is not None and (events["global"] > 0.5).any():
         t_global = events["t_start"][events["global"] > 0.5][0]
         later = [s for s in snapshots if s[0] >= t_global]
-        chosen = later[0] if later else chosen
-    return os.path.join(run, chosen[1]), chosen[0]
+        if later:
+            return os.path.join(run, later[0][1]), later[0][0], t_global
+    return os.path.join(run, snapshots[-1][1]), snapshots[-1][0], None
+
+
+def lattice_title(run, snapshot, mean_slip, magnify):
+    """What the lattice figure shows: the run, which snapshot and when, and how it is deformed."""
+    t0, since = time_origin(run)
+    _, t, t_global = snapshot
+    if t_global is not None:
+        which = f"the first snapshot after the first global slip started ({(t_global - t0) * 1e3:.3f} ms)"
+    elif has_table(run, "precursors.csv"):
+        which = "the last snapshot (no global slip in this run before it)"
+    else:
+        which = "the last snapshot (no precursors observer to find a global slip)"
+    return (f"{run_label(run)}\nlattice at {(t - t0) * 1e3:.3f} ms after {since}: {which}\n"
+            f"deformation (displacement less its mean {mean_slip * 1e6:.1f} µm in x) ×{magnify:g}")
+
+
+def velocity_unit(largest):
+    """(name, m/s in one) of the unit in which the `largest` |velocity| reads at least 1, so that the
+    colour bar's labels stay short (120 µm/s, not 0.00012 m/s)."""
+    for name, size in (("m/s", 1.0), ("mm/s", 1e-3), ("µm/s", 1e-6)):
+        if largest >= size:
+            return name, size
+    return "nm/s", 1e-9
 
 
 def lattice(run, out_dir, magnify=200.0):
-    """The lattice around the first global slip: its VTU snapshot (points at their reference
-    positions) warped by the displacement less its mean, magnified, coloured by the nodes' x
-    velocity. Rendered by VTK offscreen, PNG only (a render is a raster); drawn with matplotlib
-    where VTK cannot render."""
+    """The lattice around the first global slip (lattice_snapshot): its VTU snapshot (points at
+    their reference positions) warped by the displacement less its mean, magnified, coloured by the
+    nodes' x velocity. Rendered by VTK offscreen, PNG only (a render is a raster); drawn with
+    matplotlib where VTK cannot render."""
     snapshot = lattice_snapshot(run)
     if snapshot is None:
         return
@@ -612,15 +636,21 @@ def lattice(run, out_dir, magnify=200.0):
     deformation = numpy_to_vtk(displacement - mean, deep=True)
     deformation.SetName("deformation")
     data.AddArray(deformation)
-    t0, since = time_origin(run)
-    title = (f"{run_label(run)}\nlattice at {(snapshot[1] - t0) * 1e3:.3f} ms after {since}, deformation "
-             f"(displacement less its mean {mean[0] * 1e6:.1f} µm in x) ×{magnify:g}")
+    # Every node's x velocity (the slip velocity only on the interface row), in a unit that keeps the
+    # colour bar's labels short.
+    vx = vtk_to_numpy(data.GetArray("velocity"))[:, 0]
+    unit, size = velocity_unit(float(np.abs(vx).max()))
+    shown = numpy_to_vtk(vx / size, deep=True)
+    shown.SetName("x_velocity")
+    data.AddArray(shown)
+    title = lattice_title(run, snapshot, mean[0], magnify)
+    colour = f"x velocity vₓ ({unit})"
     try:
         with x_display():
-            render_lattice(grid, title, magnify, out_dir)
+            render_lattice(grid, title, colour, magnify, out_dir)
     except RenderUnavailable as why:
         print(f"frictionlab plot: VTK cannot render the lattice: {why}; drawn with matplotlib instead", file=sys.stderr)
-        draw_lattice(grid, title, magnify, out_dir)
+        draw_lattice(grid, title, colour, magnify, out_dir)
 
 
 def round_ticks(lo, hi):
@@ -695,9 +725,10 @@ def lattice_axes(reference, frame, px, size):
     return actors
 
 
-def render_lattice(grid, title, magnify, out_dir):
-    """lattice.png rendered by VTK offscreen: the lattice warped by its 'deformation' array, axes,
-    a colour bar with its unit; the PNG says so in its Software text."""
+def render_lattice(grid, title, colour, magnify, out_dir):
+    """lattice.png rendered by VTK offscreen: the lattice warped by its 'deformation' array, coloured
+    by its 'x_velocity' array, axes, a colour bar titled `colour`; the PNG says so in its Software
+    text."""
     import vtk
 
     warp = vtk.vtkWarpVector()
@@ -705,20 +736,18 @@ def render_lattice(grid, title, magnify, out_dir):
     warp.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, "deformation")
     warp.SetScaleFactor(magnify)
     warp.Update()
-    # Slip velocity rather than the shear/normal ratio: the ratio lives on the interface row only,
+    # The x velocity rather than the shear/normal ratio: the ratio lives on the interface row only,
     # while a slip sets the whole slider above it moving, so the velocity shows in every cell which
     # part has slipped and which is still stuck.
     lut = vtk.vtkLookupTable()
     lut.SetNumberOfTableValues(256)
     for k, rgba in enumerate(plt.get_cmap("magma")(np.linspace(0, 1, 256))):  # as the spacetime figure
         lut.SetTableValue(k, *rgba)
-    lut.SetVectorModeToComponent()
-    lut.SetVectorComponent(0)
-    lut.SetRange(grid.GetPointData().GetArray("velocity").GetRange(0))
+    lut.SetRange(grid.GetPointData().GetArray("x_velocity").GetRange())
     mapper = vtk.vtkDataSetMapper()
     mapper.SetInputConnection(warp.GetOutputPort())
     mapper.SetScalarModeToUsePointFieldData()
-    mapper.SelectColorArray("velocity")
+    mapper.SelectColorArray("x_velocity")
     mapper.SetLookupTable(lut)
     mapper.UseLookupTableScalarRangeOn()
     mapper.InterpolateScalarsBeforeMappingOn()
@@ -771,7 +800,7 @@ def render_lattice(grid, title, magnify, out_dir):
     bar.SetPosition((width - right + 40) / width, bottom / height)
     bar.SetPosition2(160 / width, (height - top - bottom) / height)
     renderer.AddActor(bar)
-    renderer.AddActor(vtk_text("slip velocity vₓ (m/s)", (width - right + 240, bottom + (height - top - bottom) / 2),
+    renderer.AddActor(vtk_text(colour, (width - right + 240, bottom + (height - top - bottom) / 2),
                                size, Orientation=90, Justification=1, VerticalJustification=1))
     # VTK draws no mathtext: run_label's $F_N$ and $\theta$ as plain text.
     renderer.AddActor(vtk_text(title.replace("\\theta", "θ").replace("$", ""), (width / 2, height - 25), size - 2,
@@ -800,14 +829,14 @@ def render_lattice(grid, title, magnify, out_dir):
     print(os.path.join(out_dir, "lattice.png"))
 
 
-def draw_lattice(grid, title, magnify, out_dir):
+def draw_lattice(grid, title, colour, magnify, out_dir):
     """lattice.png and .svg drawn with matplotlib, for where VTK cannot render."""
     from matplotlib.collections import PolyCollection
     from vtk.util.numpy_support import vtk_to_numpy
 
     data = grid.GetPointData()
     deformed = (vtk_to_numpy(grid.GetPoints().GetData()) + magnify * vtk_to_numpy(data.GetArray("deformation")))[:, :2]
-    velocity = vtk_to_numpy(data.GetArray("velocity"))[:, 0]
+    velocity = vtk_to_numpy(data.GetArray("x_velocity"))
     cells = [[grid.GetCell(c).GetPointId(k) for k in range(grid.GetCell(c).GetNumberOfPoints())]
              for c in range(grid.GetNumberOfCells())]
     fig, ax = plt.subplots(figsize=(9, 3.2))
@@ -816,7 +845,7 @@ def draw_lattice(grid, title, magnify, out_dir):
     ax.add_collection(polygons)
     ax.autoscale_view()
     ax.set_aspect("equal")
-    fig.colorbar(polygons, ax=ax, label="slip velocity $v_x$ (m/s)", shrink=0.8)
+    fig.colorbar(polygons, ax=ax, label=colour, shrink=0.8)
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("z (mm)")
     ax.set_title(title, fontsize=8)

@@ -131,3 +131,28 @@ def test_overlaid_loading_curves_are_titled_and_labelled_apart(plot, script, csv
     both = svg_text(tmp_path / "both", "loading_curves")
     assert "tiny rupture for the Python tests: the loading curves of 2 runs" in both
     assert "loaders[2].velocity=0.03" in both
+
+
+def test_the_lattice_colour_bar_reads_in_a_unit_that_keeps_its_labels_short(plot):
+    assert plot.velocity_unit(2.0) == ("m/s", 1.0)
+    assert plot.velocity_unit(0.5) == ("mm/s", 1e-3)
+    assert plot.velocity_unit(1.2e-4) == ("µm/s", 1e-6)
+    for largest in (1.2e-4, 3e-2, 0.9, 7.0):
+        unit, size = plot.velocity_unit(largest)
+        ticks, number = plot.round_ticks(-0.1 * largest / size, largest / size)
+        assert max(len(number % t) for t in ticks) <= 5, (largest, [number % t for t in ticks])
+
+
+def test_the_lattice_says_which_snapshot_it_shows(plot, csv_run, quiet_run):
+    events = plot.table(csv_run.directory, "precursors.csv")
+    t_global = events["t_start"][events["global"] > 0.5][0]
+    snapshot = plot.lattice_snapshot(csv_run.directory)
+    assert snapshot[2] == t_global and t_global <= snapshot[1] < t_global + 0.003  # every 3 ms
+    title = plot.lattice_title(csv_run.directory, snapshot, 0.0, 200)
+    assert "the first snapshot after the first global slip started" in title
+    # Without a global slip, the last snapshot, and said so: not one around a rupture.
+    snapshot = plot.lattice_snapshot(quiet_run.directory)
+    assert snapshot[2] is None
+    title = plot.lattice_title(quiet_run.directory, snapshot, 0.0, 200)
+    assert "the last snapshot (no global slip in this run before it)" in title
+    assert f"lattice at {(0.0035 - SETTLE) * 1e3:.3f} ms after loading started" in title
