@@ -103,13 +103,13 @@ void DormandPrince::attempt(System& system, double h) {
     const Eigen::VectorXd& y = system.y();
     // Every attempt starts afresh: pending work reset, effects at the step start (a retry's twin).
     system.begin_step();
-    system.derivative(t, y, k_[0], h * b[0]);
+    derivative(system, t, y, k_[0], Evaluation::weighted(h * b[0]));
     for (int s = 1; s < 7; ++s) {
         stage_ = y;
         for (int j = 0; j < s; ++j)
             if (a[s][j] != 0) stage_ += (h * a[s][j]) * k_[j];
         if (s == 6) y1_ = stage_;  // the last stage is at the 5th-order solution
-        system.derivative(t + c[s] * h, stage_, k_[s], h * b[s]);
+        derivative(system, t + c[s] * h, stage_, k_[s], Evaluation::weighted(h * b[s]));
     }
     err_.setZero();
     for (int i = 0; i < 7; ++i)

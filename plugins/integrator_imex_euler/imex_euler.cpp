@@ -44,7 +44,7 @@ double ImexEuler::step(System& system, double max_dt) {
     const Index p = 2 * system.layout().nodes;
 
     system.begin_step();
-    system.derivative(t, y, rate_, h);
+    derivative(system, t, y, rate_, Evaluation::weighted(h));
     next_ = y;
     kick(next_, rate_, h, p);  // explicit: velocities and aux from the state at t
     if (system.local_velocity_forces(t, y, force0_, jacobian0_)) solve_velocity(system, t, h);

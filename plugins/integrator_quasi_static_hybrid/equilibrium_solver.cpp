@@ -29,7 +29,9 @@ bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::Vecto
 void EquilibriumSolver::node_forces(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& out) {
     const Index dof = 2 * system.layout().nodes;
     all_forces_.resize(system.layout().size() - dof);
-    system.static_forces(t, y, all_forces_);
+    // Outside a time step: not a cost of the stepping, no work.
+    all_forces_.setZero();
+    system.add_forces(t, y, all_forces_, Evaluation::outside_step());
     out = all_forces_.head(dof);
 }
 

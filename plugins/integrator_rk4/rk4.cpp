@@ -12,7 +12,7 @@ namespace {
 
 // The stage combinations, one pass each over one part of the state: the positions (whose rate k is
 // the stage's velocities), the velocities (whose rate is System::add_forces() times the inverse
-// masses, formed here as System::derivative() would form it) or the aux variables (whose rate is
+// masses, formed here as derivative() would form it) or the aux variables (whose rate is
 // System::add_forces() as it is). The sum is formed as ((k1 + 2 k2) + 2 k3) + k4, in the order the
 // textbook expression y + h/6 (k1 + 2 k2 + 2 k3 + k4) evaluates left to right, so the step rounds
 // exactly like it. A force rate is cleared as it is read (`consume`), so that the next evaluation
@@ -111,17 +111,17 @@ double Rk4::step(System& system, double max_dt) {
         aux_variables(y0 + 2 * half, rate + half, nullptr, c, aux, stage + 2 * half, sum + 2 * half);
     };
 
-    // The last argument is each stage's quadrature weight, for work accounting (energy bookkeeping).
+    // Each stage's quadrature weight, for work accounting (energy bookkeeping).
     system.begin_step();
-    system.add_forces(t, y, rate_, h / 6);
+    system.add_forces(t, y, rate_, Evaluation::weighted(h / 6));
     combine(first_positions, first_velocities, first_aux, y0 + half, 0.5 * h);
-    system.add_forces(t + 0.5 * h, stage_, rate_, h / 3);
+    system.add_forces(t + 0.5 * h, stage_, rate_, Evaluation::weighted(h / 3));
     combine(middle_positions, middle_velocities, middle_aux, stage + half, 0.5 * h);
-    system.add_forces(t + 0.5 * h, stage_, rate_, h / 3);
+    system.add_forces(t + 0.5 * h, stage_, rate_, Evaluation::weighted(h / 3));
     combine(middle_positions, middle_velocities, middle_aux, stage + half, h);
-    system.add_forces(t + h, stage_, rate_, h / 6);
+    system.add_forces(t + h, stage_, rate_, Evaluation::weighted(h / 6));
     combine(last_positions, last_velocities, last_aux, stage + half, h / 6.0);
-    system.accept_swap(t + h, stage_);  // stage_ is all overwritten at the next step
+    system.accept(t + h, stage_);
     return h;
 }
 

@@ -25,7 +25,7 @@ double SemiImplicitEuler::step(System& system, double max_dt) {
     system.begin_step();
     // The one evaluation carries weight h in work accounting (left-point rule).
     const auto rate = [&](double offset, const Eigen::VectorXd& s, Eigen::VectorXd& dy) {
-        system.derivative(t + offset, s, dy, h);
+        derivative(system, t + offset, s, dy, Evaluation::weighted(h));
     };
     symplectic_euler_step(rate, h, 2 * system.layout().nodes, y, rate_, next_);
     system.accept(t + h, next_);

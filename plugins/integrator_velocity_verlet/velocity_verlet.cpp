@@ -42,7 +42,7 @@ double VelocityVerlet::step(System& system, double max_dt) {
     system.begin_step();
     // Each of the two evaluations carries weight h/2 in work accounting (trapezoidal rule).
     const auto rate = [&](double offset, const Eigen::VectorXd& s, Eigen::VectorXd& dy) {
-        system.derivative(t + offset, s, dy, h / 2);
+        derivative(system, t + offset, s, dy, Evaluation::weighted(h / 2));
     };
     verlet_step(rate, h, 2 * system.layout().nodes, y, start_rate_, end_rate_, stage_);
     system.accept(t + h, stage_);

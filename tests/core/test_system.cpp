@@ -1,5 +1,6 @@
-// The system's force pipeline: forces() beside derivative(), stages that switch effects on and off,
-// and composite effects evaluated in one pass whose parts are accounted alone (Effect::parts()).
+// The system's force pipeline: add_forces(), the one evaluation entry point, and derivative() on top
+// of it; stages that switch effects on and off, and composite effects evaluated in one pass whose
+// parts are accounted alone (Effect::parts()).
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -91,36 +92,39 @@ TEST(System, EvaluatesACompositeInOnePassAndNamesItsParts) {
     Pipeline p(false);
     EXPECT_EQ(p.system.labels(), (std::vector<std::string>{"spring", "effect_1", "push"}));
     EXPECT_EQ(p.system.pipeline(), (std::vector<std::string>{"test spring", "test dashpot", "test push"}));
-    p.system.derivative(0, p.y, p.dy);
+    derivative(p.system, 0, p.y, p.dy);
     EXPECT_EQ(p.bond->together, 1);
     EXPECT_EQ(p.bond->spring.alone + p.bond->dashpot.alone, 0);
     // [v | (-k x - c v + push) / m | aux rate]
     const Eigen::Vector<double, 5> expected(0.3, 0.7, (-5 * 0.1 - 3 * 0.3 + 1) / 2, (5 * 0.2 - 3 * 0.7) / 2, 0.5);
     EXPECT_LE((p.dy - expected).cwiseAbs().maxCoeff(), 1e-15);
     // One part alone (the stability estimate) takes its own pass.
-    p.system.effect_derivative(0, 0, p.y, p.dy);
+    derivative(p.system, 0, p.y, p.dy, Evaluation::outside_step(0));
     EXPECT_EQ(p.bond->spring.alone, 1);
+    EXPECT_EQ(p.bond->together, 1);
     EXPECT_DOUBLE_EQ(p.dy(2), -5 * 0.1 / 2);
-    p.system.effect_derivative(1, 0, p.y, p.dy);
+    derivative(p.system, 0, p.y, p.dy, Evaluation::outside_step(1));
     EXPECT_DOUBLE_EQ(p.dy(2), -3 * 0.3 / 2);
+    EXPECT_EQ(p.dy(4), 0) << "the push's aux rate is not the dashpot's";
+    EXPECT_EQ(p.system.evaluations(), 1) << "only the whole pipeline's evaluation counted";
 }
 
 TEST(System, AStageSwitchesAWholeCompositeOff) {
     Pipeline p(false);
     p.system.begin_stage({"undamped"});
     EXPECT_EQ(p.system.pipeline(), std::vector<std::string>{"test push"});
-    p.system.derivative(0, p.y, p.dy);
+    derivative(p.system, 0, p.y, p.dy);
     EXPECT_EQ(p.bond->together, 0);
     EXPECT_EQ(p.dy(2), 0.5);  // the push alone, 1 N over 2 kg
     p.system.begin_stage({"damped"});
-    p.system.derivative(0, p.y, p.dy);
+    derivative(p.system, 0, p.y, p.dy);
     EXPECT_EQ(p.bond->together, 1);
 }
 
 TEST(System, AddedForcesAreTheDerivativeTimesTheMasses) {
     Pipeline p(false);
     Eigen::VectorXd f = Eigen::VectorXd::Zero(3);
-    p.system.derivative(0.5, p.y, p.dy);
+    derivative(p.system, 0.5, p.y, p.dy);
     p.system.add_forces(0.5, p.y, f);
     ASSERT_EQ(p.system.inverse_mass().size(), 1);
     EXPECT_EQ(p.system.inverse_mass()(0), 0.5);
@@ -134,13 +138,17 @@ TEST(System, AddedForcesAreTheDerivativeTimesTheMasses) {
     const Eigen::VectorXd once = f;
     p.system.add_forces(0.5, p.y, f);
     EXPECT_EQ(f, 2 * once);
+    // An evaluation outside the time stepping (a quiet phase's equilibrium) is not counted.
+    p.system.add_forces(0.5, p.y, f, Evaluation::outside_step());
+    EXPECT_EQ(f, 3 * once);
+    EXPECT_EQ(p.system.evaluations(), 3);
 }
 
 TEST(System, WorkAccountingSplitsACompositeAndChangesNoForce) {
     Pipeline plain(false), accounted(true);
-    plain.system.derivative(0, plain.y, plain.dy, 0.25);
+    derivative(plain.system, 0, plain.y, plain.dy, Evaluation::weighted(0.25));
     accounted.system.begin_step();
-    accounted.system.derivative(0, accounted.y, accounted.dy, 0.25);
+    derivative(accounted.system, 0, accounted.y, accounted.dy, Evaluation::weighted(0.25));
     EXPECT_EQ(plain.dy, accounted.dy);  // bit for bit: the composite still moves the state in one pass
     EXPECT_EQ(accounted.bond->together, 1);
     EXPECT_EQ(accounted.bond->spring.alone, 1);  // once more, alone, for its power

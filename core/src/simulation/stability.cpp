@@ -36,7 +36,7 @@ double dominant_growth(const Map& apply, Index size) {
 /// u -> J u for the Jacobian of `rate` at y0, by central finite differences.
 Map jacobian_product(const Rate& rate, const Eigen::VectorXd& y0) {
     const double scale = std::max(1e-12, 1e-7 * y0.cwiseAbs().maxCoeff());
-    const Index size = y0.size();  // System::derivative writes into vectors of the state's size
+    const Index size = y0.size();  // derivative() writes into vectors of the state's size
     return [rate, &y0, scale, yp = Eigen::VectorXd(size), ym = Eigen::VectorXd(size), plus = Eigen::VectorXd(size),
             minus = Eigen::VectorXd(size)](const Eigen::VectorXd& u, Eigen::VectorXd& ju) mutable {
         yp = y0 + scale * u;
@@ -88,19 +88,19 @@ public:
     /// sees the velocities of y0 instead: what is left is the part the explicit scheme must resolve.
     void effect_rate(std::size_t k, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
         if (!implicit_[k]) {
-            system_.effect_derivative(k, t_, y, dy);
+            derivative(system_, t_, y, dy, Evaluation::outside_step(k));
             return;
         }
         frozen_ = y;
         frozen_.segment(2 * n_, n_) = y0_.segment(2 * n_, n_);
-        system_.effect_derivative(k, t_, frozen_, dy);
+        derivative(system_, t_, frozen_, dy, Evaluation::outside_step(k));
         dy.head(2 * n_) = y.segment(2 * n_, 2 * n_);
     }
     /// The whole pipeline's dy/dt at y, effect by effect in its order (each reads what the earlier
-    /// ones published) when some are frozen in velocity, else System::derivative.
+    /// ones published) when some are frozen in velocity, else the whole derivative() at once.
     void rate(const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
         if (!any_implicit_) {
-            system_.derivative(t_, y, dy);
+            derivative(system_, t_, y, dy);
             return;
         }
         const Index rest = y.size() - 2 * n_;
@@ -118,7 +118,7 @@ private:
     const double t_;
     const Index n_;
     std::vector<bool> implicit_;
-    Eigen::VectorXd one_;  // sized: System::effect_derivative writes into it
+    Eigen::VectorXd one_;
     bool any_implicit_ = false;
     Eigen::VectorXd frozen_;
 };

@@ -51,39 +51,23 @@ void System::enable_work_accounting() {
     effect_force_ = Eigen::VectorXd::Zero(layout_.size());
 }
 
-void System::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
-    evaluate(t, y, dy, work_weight);
-    ++evaluations_;
-}
-
-void System::evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight) {
-    const Index n = layout_.nodes;
-    dy.head(2 * n) = y.segment(2 * n, 2 * n);
-    compute_forces(t, y, dy.tail(layout_.size() - 2 * n), work_weight);
-    ForceView f = forces_of(dy, layout_);
-    divide_by_mass(f);
-}
-
-void System::add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight) {
-    accumulate_forces(t, y, f, work_weight);
-    ++evaluations_;
-}
-
-void System::compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
-    a.setZero();
-    accumulate_forces(t, y, a, work_weight);
-}
-
-void System::accumulate_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> a, double work_weight) {
+void System::add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, const Evaluation& how) {
     const StageView s = view_of(y, layout_, t);
-    ForceView f = forces_at(a.data(), layout_);
-    const bool accounting = work_accounting() && work_weight != 0;
-    for (const Slot* slot : active_) {
-        if (accounting)
-            for (std::size_t k = slot->first_part; k < slot->first_part + slot->part_count; ++k)
-                add_work(k, s, work_weight);
-        slot->effect->add_forces(s, f);
+    ForceView forces = forces_at(f.data(), layout_);
+    const bool accounting = work_accounting() && how.work_weight != 0;
+    if (how.part) {
+        const std::size_t k = active_parts_.at(*how.part);
+        if (accounting) add_work(k, s, how.work_weight);
+        parts_[k]->add_forces(s, forces);
+    } else {
+        for (const Slot* slot : active_) {
+            if (accounting)
+                for (std::size_t k = slot->first_part; k < slot->first_part + slot->part_count; ++k)
+                    add_work(k, s, how.work_weight);
+            slot->effect->add_forces(s, forces);
+        }
     }
+    if (how.counted) ++evaluations_;
 }
 
 void System::add_work(std::size_t part, const StageView& s, double weight) {
@@ -95,20 +79,6 @@ void System::add_work(std::size_t part, const StageView& s, double weight) {
     parts_[part]->add_forces(s, fe);
     const Eigen::Map<const Eigen::VectorXd> velocity(s.vx.data(), 2 * n);  // [vx | vz]
     pending_work_[part] += weight * effect_force_.segment(2 * n, 2 * n).dot(velocity);
-}
-
-void System::effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-    const Index n = layout_.nodes;
-    dy.head(2 * n) = y.segment(2 * n, 2 * n);
-    dy.tail(layout_.size() - 2 * n).setZero();
-    ForceView f = forces_of(dy, layout_);
-    parts_.at(active_parts_.at(active_index))->add_forces(view_of(y, layout_, t), f);
-    divide_by_mass(f);
-}
-
-void System::divide_by_mass(ForceView& f) const {
-    scale(f.fx.data(), inverse_mass_.data(), layout_.nodes);
-    scale(f.fz.data(), inverse_mass_.data(), layout_.nodes);
 }
 
 bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx) {
@@ -139,11 +109,6 @@ void System::begin_step() {
 
 void System::accept(double t, const Eigen::VectorXd& y) {
     y_ = y;
-    commit_step(t);
-}
-
-void System::accept_swap(double t, Eigen::VectorXd& y) {
-    y_.swap(y);
     commit_step(t);
 }
 
@@ -238,7 +203,7 @@ std::vector<std::string> System::not_checkpointable() const {
 }
 
 void System::refresh() {
-    evaluate(t_, y_, scratch_, 0);
+    derivative(*this, t_, y_, scratch_, Evaluation::outside_step());
     const Index n = layout_.nodes;
     net_force_.head(n) = (scratch_.segment(2 * n, n).array() * body_.mass).matrix();
     net_force_.tail(n) = (scratch_.segment(3 * n, n).array() * body_.mass).matrix();
@@ -248,6 +213,18 @@ std::vector<std::string> System::pipeline() const {
     std::vector<std::string> names;
     for (const std::size_t k : active_parts_) names.push_back(parts_[k]->describe());
     return names;
+}
+
+void derivative(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, const Evaluation& how) {
+    const StateLayout& layout = system.layout();
+    const Index n = layout.nodes;
+    dy.resize(y.size());
+    dy.head(2 * n) = y.segment(2 * n, 2 * n);
+    dy.tail(layout.size() - 2 * n).setZero();
+    system.add_forces(t, y, dy.tail(layout.size() - 2 * n), how);
+    ForceView f = forces_of(dy, layout);
+    scale(f.fx.data(), system.inverse_mass().data(), n);
+    scale(f.fz.data(), system.inverse_mass().data(), n);
 }
 
 }  // namespace frictionlab

@@ -77,7 +77,7 @@ struct HandBuilt {
         y(0) = x;
         y(2) = v;
         system.begin_step();
-        system.derivative(system.time(), y, dy, w);
+        derivative(system, system.time(), y, dy, Evaluation::weighted(w));
         y(0) = x1;
         y(2) = v1;
         system.accept(system.time() + 0.5, y);

@@ -35,13 +35,13 @@ public:
         const Eigen::VectorXd& y = system_.y();
         const double t = system_.time();
         system_.begin_step();
-        system_.derivative(t, y, k1_);
+        derivative(system_, t, y, k1_);
         stage_ = y + 0.5 * dt * k1_;
-        system_.derivative(t + 0.5 * dt, stage_, k2_);
+        derivative(system_, t + 0.5 * dt, stage_, k2_);
         stage_ = y + 0.5 * dt * k2_;
-        system_.derivative(t + 0.5 * dt, stage_, k3_);
+        derivative(system_, t + 0.5 * dt, stage_, k3_);
         stage_ = y + dt * k3_;
-        system_.derivative(t + dt, stage_, k4_);
+        derivative(system_, t + dt, stage_, k4_);
         stage_ = y + dt / 6 * (k1_ + 2 * k2_ + 2 * k3_ + k4_);
         system_.accept(t + dt, stage_);
     }

@@ -20,7 +20,7 @@ inline void drift(Eigen::VectorXd& y, double h, Index positions) {
 }
 
 /// Symplectic Euler from y into out: v and aux from the rate at y, then x with the new v.
-/// `rate(t_offset, state, dy)` is dy/dt at t + t_offset (System::derivative in a step, J u when
+/// `rate(t_offset, state, dy)` is dy/dt at t + t_offset (derivative() in a step, J u when
 /// linearised).
 template <class Rate>
 void symplectic_euler_step(Rate&& rate, double h, Index positions, const Eigen::VectorXd& y, Eigen::VectorXd& r,

@@ -1,8 +1,11 @@
 #pragma once
 // The assembled system: state vector, masses and the force pipeline. Integrators drive it through
-// derivative(), begin_step() and accept(); the run drives stages and observation.
+// begin_step(), one evaluation entry point (add_forces(), or derivative() on top of it) and
+// accept(); the run drives stages and observation.
+#include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,35 @@
 #include "frictionlab/model/state.hpp"
 
 namespace frictionlab {
+
+/// How one evaluation of the pipeline counts (System::add_forces).
+struct Evaluation {
+    /// Its weight in the integrator's quadrature of the step (RK4: h/6, h/3, h/3, h/6): with work
+    /// accounting on, each evaluated part's power F_e . v at (t, y) is added to its work with that
+    /// weight, so the work is integrated to the integrator's own order. 0: no work.
+    double work_weight = 0;
+    /// Whether it is a cost of the time stepping (evaluations()).
+    bool counted = true;
+    /// One active part alone (index into pipeline()); unset: the whole pipeline, a composite in its
+    /// one pass.
+    std::optional<std::size_t> part;
+
+    /// An evaluation of a time step, with its quadrature weight.
+    static Evaluation weighted(double work_weight) {
+        Evaluation e;
+        e.work_weight = work_weight;
+        return e;
+    }
+    /// One outside the time stepping, not counted and without work: a solver's (a quiet phase's
+    /// equilibrium) or a diagnostic's (the stable-step estimate, which names the part that limits
+    /// the step by evaluating `part` alone).
+    static Evaluation outside_step(std::optional<std::size_t> part = std::nullopt) {
+        Evaluation e;
+        e.counted = false;
+        e.part = part;
+        return e;
+    }
+};
 
 class System {
 public:
@@ -34,53 +66,41 @@ public:
     /// Initial conditions before the first stage (positions default to the reference ones).
     Eigen::VectorXd& initial_state() { return y_; }
 
-    /// dy/dt at (t, y): [v | F/m | aux rates]. Pure in (t, y) given the frozen discrete state.
-    /// `work_weight` is this evaluation's weight in the integrator's quadrature of the step (RK4:
-    /// h/6, h/3, h/3, h/6): with work accounting on, each effect's power F_e . v at (t, y) is added
-    /// to its work with that weight, so the work is integrated to the integrator's own order.
-    void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight = 0);
-    /// Adds the rest of dy/dt after the velocities, before the division by the masses, to f:
-    /// [F | aux rates], the forces in N, layout().size() - 2N values, as every effect adds its own.
-    /// For integrators that read the velocities from y and divide by the masses (inverse_mass())
-    /// within their own pass over the rates, and clear f in that pass (RK4's fused stages); into a
-    /// zero f, F_i * inverse_mass()(i) is exactly what derivative() gives. Counts as an evaluation.
-    void add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight = 0);
-    /// 1/m of every node.
+    /// The evaluation entry point: adds the rest of dy/dt after the velocities, before the division
+    /// by the masses, to f: [F | aux rates], the forces in N, layout().size() - 2N values, as every
+    /// effect adds its own at (t, y). Pure in (t, y) given the frozen discrete state. Integrators that
+    /// divide by the masses within their own pass over the rates call it directly (RK4's fused
+    /// stages); derivative() below composes the whole dy/dt on it.
+    void add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, const Evaluation& how = {});
+    /// 1/m of every node: derivative(), and integrators that divide by the masses themselves (RK4).
     const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
-    /// dy/dt with only one active part of the pipeline (index into pipeline()), for diagnostics
-    /// such as the stability estimate that names the effect limiting the step.
-    void effect_derivative(std::size_t active_index, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
     /// The x-forces and the diagonal d(fx)/d(vx) (both [nodes]) of the active effects whose velocity
     /// dependence is local (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats
-    /// that dependence implicitly solves with. False, and both zero, when no effect has one. Effects
-    /// read the quantities others published in the last derivative() (a friction law reads the base
-    /// contact's normal force), so call it at the positions of that evaluation.
+    /// that dependence implicitly solves with (IMEX). False, and both zero, when no effect has one.
+    /// Effects read the quantities others published in the last evaluation (a friction law reads
+    /// the base contact's normal force), so call it at the positions of that evaluation.
     bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx);
-    /// Whether an active part (index into pipeline()) has a local velocity Jacobian.
+    /// Whether an active part (index into pipeline()) has a local velocity Jacobian: the stable-step
+    /// estimate, for integrators implicit in it.
     bool has_velocity_jacobian(std::size_t active_index) const {
         return parts_.at(active_parts_.at(active_index))->has_velocity_jacobian();
     }
+    /// Every integrator, before a step's evaluations: the effects freeze their discrete state.
     void begin_step();
-    /// Makes (t, y) the accepted state and lets every active effect commit its transitions.
+    /// Every integrator, after a step: makes (t, y) the accepted state and lets every active effect
+    /// commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);
-    /// accept(t, y) that takes y's storage instead of copying it: y is left holding the previous
-    /// accepted state (for integrators that overwrite their stage vector at the next step anyway).
-    void accept_swap(double t, Eigen::VectorXd& y);
+    /// The earliest scheduled event of the active effects (a junction's clock): adaptive and
+    /// quasi-static steppers land on it.
     double next_event_time() const;
 
-    /// Quasi-static solving (Effect::quasi_static_regime): whether every active effect is in its
-    /// quasi-static regime at s; the stiffness K = -dF/dq ([x | z], 2N x 2N) of the active effects
-    /// at s, assembled into `stiffness` (its pattern kept when unchanged); and the earliest event
-    /// they foresee if the nodes move on at the velocities of s.
+    /// Quasi-static solving (Effect::quasi_static_regime), for the quasi-static stepper: whether
+    /// every active effect is in its quasi-static regime at s; the stiffness K = -dF/dq ([x | z],
+    /// 2N x 2N) of the active effects at s, assembled into `stiffness` (its pattern kept when
+    /// unchanged); and the earliest event they foresee if the nodes move on at the velocities of s.
     bool quasi_static_regime(const StageView& s) const;
     void assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness);
     double foreseen_event_time(const StageView& s) const;
-    /// The forces [fx | fz | aux rates] at (t, y), as add_forces() gives them into zeros, without
-    /// counting an evaluation or adding work: for solvers that evaluate the pipeline outside a time
-    /// step (a quiet phase).
-    void static_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f) {
-        compute_forces(t, y, f, 0);
-    }
     /// Adds work to each active effect as the trapezoid rule over a straight path from the accepted
     /// state to y1 (positions q0 -> q1 in time h at the constant velocity (q1 - q0)/h), with the
     /// frozen discrete state: how a quiet phase keeps the energy balance (work accounting only).
@@ -121,20 +141,13 @@ public:
     void restore_state(StateIn& in);
     /// describe() of every effect that cannot be checkpointed (Component::checkpointable).
     std::vector<std::string> not_checkpointable() const;
-    /// Number of derivative evaluations the integrator asked for so far: the cost of the time
-    /// stepping (refresh() for observers is not counted).
+    /// Number of counted evaluations (Evaluation::counted) so far: the cost of the time stepping
+    /// (refresh() for observers is not counted).
     long long evaluations() const { return evaluations_; }
 
 private:
-    /// derivative() without counting an evaluation (refresh() uses it).
-    void evaluate(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, double work_weight);
-    /// forces() without counting an evaluation.
-    void compute_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
-    void accumulate_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, double work_weight);
     /// Makes the effects active in `stage` (every effect if none) the pipeline.
     void activate(const StageInfo* stage);
-    /// Forces to accelerations, F/m.
-    void divide_by_mass(ForceView& f) const;
     /// After the accepted state is in y_: time, work and the effects' commits for the step to t.
     void commit_step(double t);
     /// Adds the work of part `part` (index into parts_) over this evaluation, with the quadrature weight.
@@ -162,5 +175,10 @@ private:
     double t_ = 0, stage_end_ = std::numeric_limits<double>::infinity();
     long long steps_ = 0, evaluations_ = 0;
 };
+
+/// dy/dt at (t, y): [v | F/m | aux rates], system.add_forces() into zeros divided by the masses,
+/// dy sized to y. For integrators that take the whole rate (every scheme but RK4's fused stages), the
+/// stable-step estimate and refresh(): F_i * inverse_mass()(i) is exactly what it gives.
+void derivative(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, const Evaluation& how = {});
 
 }  // namespace frictionlab
