@@ -90,8 +90,10 @@ def test_csv_tables_read_in_one_line_by_numpy_and_pandas(csv_run):
     meta = yaml.safe_load(open(path + ".meta.yaml"))
     assert meta["columns"] == table.columns
     assert meta["seed"] == 3 and meta["scene_hash"] == csv_run.metadata["scene_hash"]
-    plugins = {p["name"] for p in csv_run.metadata["plugins"]}
-    assert {p.split()[0] for p in meta["plugins"].split(", ")} == plugins
+    # The same provenance record as run.yaml's, under the same names.
+    for key in ("framework", "version", "scene_file", "scene_hash", "seed", "plugins"):
+        assert meta[key] == csv_run.metadata[key], key
+    assert {p.split()[0] for p in meta["plugins"].split(", ")} == {p["name"] for p in csv_run.metadata["plugin_files"]}
 
 
 def test_hdf5_tables_are_chunked_compressed_and_carry_their_provenance(hdf5_run, csv_run):

@@ -24,6 +24,7 @@
 #include "frictionlab/base/live_line.hpp"
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/output_directory.hpp"
+#include "frictionlab/output/provenance.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/simulation.hpp"
 #include "frictionlab/simulation/system.hpp"
@@ -65,34 +66,33 @@ struct RunRecord {
         YAML::Emitter y;
         y.SetDoublePrecision(12);
         y << YAML::BeginMap;
-        y << YAML::Key << "framework" << YAML::Value << "frictionlab";
-        y << YAML::Key << "version" << YAML::Value << info.framework_version;
-        y << YAML::Key << "status" << YAML::Value << status;
-        if (!error.empty())
-            y << YAML::Key << (status == "interrupted" ? "interrupted_by" : "error") << YAML::Value << error;
-        y << YAML::Key << "scene_file" << YAML::Value << info.scene_file.string();
+        const auto entry = [&](const auto& key, const auto& value) { y << YAML::Key << key << YAML::Value << value; };
+        // First, what every output records, under the same names: its first line says whose it is.
+        Provenance::of(info).visit(entry, entry);
+        entry("status", status);
+        if (!error.empty()) entry(status == "interrupted" ? "interrupted_by" : "error", error);
+        // What only the record holds: where to read the scene again (run --resume), and which
+        // library file each plugin was, with its checksum.
+        entry("scene_path", info.scene_file.string());
+        y << YAML::Key << "plugin_files" << YAML::Value << YAML::BeginSeq;
+        for (const auto& p : info.plugins)
+            y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "file"
+              << YAML::Value << p.file.string() << YAML::Key << "fnv1a_64" << YAML::Value << p.fingerprint
+              << YAML::EndMap;
+        y << YAML::EndSeq;
         y << YAML::Key << "command_line" << YAML::Value << YAML::Flow << options.command_line;
         y << YAML::Key << "overrides" << YAML::Value << YAML::Flow << options.overrides;
-        y << YAML::Key << "scene_hash" << YAML::Value << info.scene_hash;
-        y << YAML::Key << "seed" << YAML::Value << info.seed;
-        if (resumed_from_step >= 0) y << YAML::Key << "resumed_from_step" << YAML::Value << resumed_from_step;
-        y << YAML::Key << "steps" << YAML::Value << summary.steps;
-        y << YAML::Key << "evaluations" << YAML::Value << summary.evaluations;
-        y << YAML::Key << "simulated_time" << YAML::Value << summary.simulated_time;
-        y << YAML::Key << "wall_seconds" << YAML::Value << summary.wall_seconds;
-        y << YAML::Key << "cpu_seconds" << YAML::Value << summary.cpu_seconds;
+        if (resumed_from_step >= 0) entry("resumed_from_step", resumed_from_step);
+        entry("steps", summary.steps);
+        entry("evaluations", summary.evaluations);
+        entry("simulated_time", summary.simulated_time);
+        entry("wall_seconds", summary.wall_seconds);
+        entry("cpu_seconds", summary.cpu_seconds);
         if (!summary.integrator_statistics.empty()) {
             y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
-            for (const auto& [name, value] : summary.integrator_statistics)
-                y << YAML::Key << name << YAML::Value << value;
+            for (const auto& [name, value] : summary.integrator_statistics) entry(name, value);
             y << YAML::EndMap;
         }
-        y << YAML::Key << "plugins" << YAML::Value << YAML::BeginSeq;
-        for (const auto& p : info.plugins)
-            y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "version"
-              << YAML::Value << p.version << YAML::Key << "file" << YAML::Value << p.file.string() << YAML::Key
-              << "fnv1a_64" << YAML::Value << p.fingerprint << YAML::EndMap;
-        y << YAML::EndSeq;
         y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
         y << YAML::EndMap;
         return std::string(y.c_str()) + "\n";
@@ -479,7 +479,7 @@ std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
     if (!record.IsMap() || !record["framework"] || record["framework"].as<std::string>("") != "frictionlab")
         return std::nullopt;
     RecordedRun run;
-    run.scene_file = record["scene_file"].as<std::string>("");
+    run.scene_file = record["scene_path"].as<std::string>("");
     if (const auto overrides = record["overrides"]; overrides && overrides.IsSequence())
         for (const auto& o : overrides) run.overrides.push_back(o.as<std::string>(""));
     run.status = record["status"].as<std::string>("");
