@@ -1,10 +1,6 @@
 #include "frictionlab/output/checkpoint_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <fstream>
 #include <sstream>
 
@@ -14,6 +10,7 @@
 #include "frictionlab/base/fingerprint.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/os_error.hpp"
+#include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/output_directory.hpp"
 
 namespace frictionlab {
@@ -27,36 +24,6 @@ constexpr int format_version = 1;
 
 [[noreturn]] void fail(const fs::path& file, int error) {
     throw RunError(fmt::format("cannot write the checkpoint '{}': {}", file.string(), os_error(error)));
-}
-
-/// fsync of a file or folder; 0 or the errno.
-int sync_path(const fs::path& path, int flags) {
-    const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-    if (fd < 0) return errno;
-    const int error = ::fsync(fd) == 0 ? 0 : errno;
-    ::close(fd);
-    return error;
-}
-
-void write_durably(const fs::path& file, std::string_view bytes) {
-    const fs::path tmp = fs::path(file).concat(".tmp");
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) fail(file, errno);
-    int error = 0;
-    while (!bytes.empty() && error == 0) {
-        const ssize_t n = ::write(fd, bytes.data(), bytes.size());
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0)
-            error = n < 0 ? errno : EIO;
-        else
-            bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-    if (error == 0 && ::fsync(fd) != 0) error = errno;
-    if (::close(fd) != 0 && error == 0) error = errno;
-    std::error_code ec;
-    if (error != 0) fs::remove(tmp, ec), fail(file, error);
-    fs::rename(tmp, file, ec);
-    if (ec) fs::remove(tmp, ec), fail(file, ec.value());
 }
 
 std::string header(std::string_view payload) {
@@ -99,13 +66,13 @@ bool is_run_record(const fs::path& relative) {
 void write_checkpoint_file(const fs::path& dir, std::string_view payload) {
     const WholeWrite whole;
     const fs::path current = dir / checkpoint_file_name, next = dir / next_checkpoint_file_name;
-    write_durably(next, header(payload) + std::string(payload));
+    write_file_atomically(next, header(payload) + std::string(payload), Durability::durable);
     std::error_code ec;
     if (fs::exists(current)) fs::rename(current, dir / previous_checkpoint_file_name, ec);
     if (ec) fail(current, ec.value());
     fs::rename(next, current, ec);
     if (ec) fail(current, ec.value());
-    if (const int error = sync_path(dir, O_RDONLY | O_DIRECTORY); error != 0) fail(current, error);
+    sync_folder_of(current);
 }
 
 std::string read_checkpoint_file(const fs::path& dir, const std::function<void(const std::string&)>& warn) {

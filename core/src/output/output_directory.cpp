@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/atomic_file.hpp"
 
 namespace frictionlab {
 
@@ -67,9 +68,12 @@ void prepare_output_directory(const fs::path& dir, bool overwrite, const std::ve
     }
     fs::create_directories(dir, ec);
     if (ec) throw InputError(fmt::format("cannot create output directory '{}': {}", dir.string(), ec.message()));
-    std::ofstream marker(dir / output_marker_file);
-    marker << "Created by FrictionLab; `frictionlab run --overwrite` may replace this directory.\n";
-    if (!marker) throw InputError(fmt::format("cannot write in output directory '{}'", dir.string()));
+    try {
+        write_file_atomically(dir / output_marker_file,
+                              "Created by FrictionLab; `frictionlab run --overwrite` may replace this directory.\n");
+    } catch (const RunError& e) {
+        throw InputError(e.what());  // refused before the run starts, as every other set-up problem
+    }
 }
 
 }  // namespace frictionlab

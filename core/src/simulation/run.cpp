@@ -53,7 +53,7 @@ struct RunRecord {
         const std::string yaml = text();
         const auto file = dir / "run.yaml";
         try {
-            write_file_atomically(file, yaml);
+            write_file_atomically(file, yaml, Durability::durable);  // a resume reads it
         } catch (const RunError&) {
             if (!std::filesystem::exists(file)) throw;
             overwrite_in_place(file, yaml);
