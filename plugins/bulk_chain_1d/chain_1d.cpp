@@ -2,11 +2,8 @@
 
 #include <cmath>
 
-#include <fmt/format.h>
-
 #include "chain_damping.hpp"
 #include "chain_springs.hpp"
-#include "frictionlab/base/errors.hpp"
 #include "vertical_damping.hpp"
 
 namespace frictionlab {
@@ -36,9 +33,7 @@ ParamSpec<Chain1d::Params> Chain1d::spec() {
 }
 
 Chain1d::Chain1d(const Params& p, const Context& ctx) {
-    // Scene validation has checked this; it guards Params built in code.
-    if (p.blocks < 2) throw InputError(fmt::format("chain_1d: blocks = {} but a chain needs at least 2", p.blocks));
-    const Index n = p.blocks;
+    const Index n = spec().checked(p).blocks;
     const double a = p.length / (n - 1);
     body_.x0 = Eigen::ArrayXd::LinSpaced(n, 0.0, p.length);
     body_.z0 = Eigen::ArrayXd::Zero(n);

@@ -38,7 +38,7 @@ ParamSpec<RateState::Params> RateState::spec() {
     return s;
 }
 
-RateState::RateState(const Params& params, const Context& ctx) : p_(params), law_(params.law) {
+RateState::RateState(const Params& params, const Context& ctx) : p_(spec().checked(params)), law_(params.law) {
     const std::string name = ctx.name.empty() ? std::string(type) : ctx.name;
     if (!ctx.body || !ctx.quantities || !ctx.aux)
         throw InputError(name + ": needs the bulk model's body, the run's quantities and an aux allocator");

@@ -76,7 +76,7 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
 }  // namespace
 
 DrivingSpring::DrivingSpring(const Params& p, const Context& ctx)
-    : params_(p),
+    : params_(spec().checked(p)),
       attachment_(attach(p, *ctx.body)),
       force_(ctx.quantities->scalar("driving_force", "N", "Force F_S of the loading spring on the slider (+x).")),
       displacement_(ctx.quantities->scalar("driving_displacement", "m",

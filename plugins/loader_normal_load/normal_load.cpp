@@ -50,7 +50,7 @@ Eigen::ArrayXd load_weights(const NormalLoad::Params& p, Index n) {
 }  // namespace
 
 NormalLoad::NormalLoad(const Params& p, const Context& ctx)
-    : params_(p),
+    : params_(spec().checked(p)),
       nodes_(ctx.body->nodes(p.node_set)),
       first_(consecutive_start(nodes_)),
       applied_(ctx.quantities->scalar("normal_load", "N", "Total normal load applied on the top surface now.")) {

@@ -32,7 +32,7 @@ const NodeSet& pulled_nodes(const PlateSprings::Params& p, const Context& ctx) {
 }  // namespace
 
 PlateSprings::PlateSprings(const Params& p, const Context& ctx)
-    : params_(p),
+    : params_(spec().checked(p)),
       nodes_(pulled_nodes(p, ctx)),
       x_origin_(ctx.body->x0(nodes_)),
       force_(ctx.quantities->scalar("driving_force", "N", "Force of the loading on the slider (+x).")),

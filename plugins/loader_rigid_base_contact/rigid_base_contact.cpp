@@ -32,7 +32,7 @@ double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body)
 }  // namespace
 
 RigidBaseContact::RigidBaseContact(const Params& p, const Context& ctx)
-    : params_(p),
+    : params_(spec().checked(p)),
       nodes_(ctx.body->nodes(p.node_set)),
       first_(consecutive_start(nodes_)),
       z0_(ctx.body->z0(nodes_)),

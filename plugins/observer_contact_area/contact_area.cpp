@@ -73,7 +73,7 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
     return s;
 }
 
-ContactArea::ContactArea(const Params& p, const Context&) : params_(p) {}
+ContactArea::ContactArea(const Params& p, const Context&) : params_(spec().checked(p)) {}
 
 double ContactArea::bond_force_x(double k, double r0, double xi, double zi, double xj, double zj) {
     const double dx = xj - xi, dz = zj - zi;

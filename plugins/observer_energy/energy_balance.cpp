@@ -18,7 +18,7 @@ ParamSpec<EnergyBalance::Params> EnergyBalance::spec() {
     return s;
 }
 
-EnergyBalance::EnergyBalance(const Params& p, const Context&) : params_(p) {}
+EnergyBalance::EnergyBalance(const Params& p, const Context&) : params_(spec().checked(p)) {}
 
 void EnergyBalance::begin(const RunView& view) {
     const System& system = view.system;

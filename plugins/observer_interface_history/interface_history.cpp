@@ -17,7 +17,7 @@ ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
     return s;
 }
 
-InterfaceHistory::InterfaceHistory(const Params& p, const Context&) : params_(p) {}
+InterfaceHistory::InterfaceHistory(const Params& p, const Context&) : params_(spec().checked(p)) {}
 
 void InterfaceHistory::begin(const RunView& view) {
     const NodeSet& set = view.body.nodes(params_.node_set);

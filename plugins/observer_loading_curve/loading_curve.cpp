@@ -15,7 +15,7 @@ ParamSpec<LoadingCurve::Params> LoadingCurve::spec() {
     return s;
 }
 
-LoadingCurve::LoadingCurve(const Params& p, const Context&) : params_(p) {}
+LoadingCurve::LoadingCurve(const Params& p, const Context&) : params_(spec().checked(p)) {}
 
 void LoadingCurve::begin(const RunView& view) {
     const Quantities& q = view.quantities;

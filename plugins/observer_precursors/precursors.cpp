@@ -77,7 +77,7 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     return s;
 }
 
-Precursors::Precursors(const Params& p, const Context&) : params_(p) {}
+Precursors::Precursors(const Params& p, const Context&) : params_(spec().checked(p)) {}
 
 void Precursors::begin(const RunView& view) {
     const Body& body = view.body;

@@ -112,7 +112,7 @@ ParamSpec<VtkSeries::Params> VtkSeries::spec() {
     return s;
 }
 
-VtkSeries::VtkSeries(const Params& p, const Context&) : params_(p) {}
+VtkSeries::VtkSeries(const Params& p, const Context&) : params_(spec().checked(p)) {}
 
 VtkSeries::~VtkSeries() = default;
 

@@ -3,8 +3,10 @@
 //    every type is itself a valid scene component;
 //  - every friction law resists a small forward displacement and velocity of a loaded, stuck
 //    interface with a finite force, publishes friction_force, and is deterministic for a seed;
-//  - every bulk model provides the standard node sets and feels no force under rigid translation.
+//  - every bulk model provides the standard node sets and feels no force under rigid translation;
+//  - every type refuses Params built in code that a scene could not give (spec().checked).
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -176,6 +178,60 @@ TEST(Conformance, EveryBulkModelHasTheStandardNodeSetsAndNoForceUnderTranslation
         EXPECT_LT((dy.segment(2 * n, 2 * n).array() * body.mass.replicate(2, 1)).abs().maxCoeff(), 1e-9 * scale)
             << t->type;
     }
+}
+
+/// A value of `p` outside its bounds, or an item outside its items' choices; nothing where it has
+/// neither (an enumeration's member only ever holds one of its named values).
+std::optional<ParamValue> violating(const ParamInfo& p) {
+    if (p.type == ValueType::string_list && !p.choices.empty())
+        return ParamValue(std::vector<std::string>{"none_of_them"});
+    if (p.type != ValueType::real && p.type != ValueType::integer && p.type != ValueType::real_list)
+        return std::nullopt;
+    std::optional<double> v;
+    if (p.greater_than)
+        v = *p.greater_than;
+    else if (p.at_least)
+        v = *p.at_least - 1;
+    else if (p.less_than)
+        v = *p.less_than;
+    else if (p.at_most)
+        v = *p.at_most + 1;
+    if (!v) return std::nullopt;
+    if (p.type == ValueType::integer) return ParamValue(static_cast<std::int64_t>(std::floor(*v)));
+    if (p.type == ValueType::real_list) return ParamValue(std::vector<double>{*v});
+    return ParamValue(*v);
+}
+
+TEST(Conformance, EveryTypeRefusesParamsBuiltInCodeThatASceneCouldNotGive) {
+    // Built as a test or another component builds them, without a scene's validation: each key out
+    // of its bounds alone is refused by the constructor, by that key, before anything is built.
+    spdlog::logger log("test");
+    ParamValues lattice = defaults(*shipped().find(Kind::bulk_model, "spring_lattice_2d"));
+    lattice["nx"] = std::int64_t{11}, lattice["nz"] = std::int64_t{3};
+    Quantities bulk_quantities;
+    AuxAllocator bulk_aux;
+    const auto bulk = shipped().create<BulkModel>("spring_lattice_2d", lattice,
+                                                  Context{log, 0, nullptr, &bulk_quantities, &bulk_aux, "bulk"});
+    int refused = 0;
+    for (Kind kind : all_kinds)
+        for (const TypeInfo* t : shipped().types(kind))
+            for (const ParamInfo& p : t->params) {
+                const auto bad = violating(p);
+                if (!bad) continue;
+                ParamValues values = defaults(*t);
+                values[p.key] = *bad;
+                Quantities q;
+                AuxAllocator aux;
+                const Context ctx{log, 0, &bulk->body(), &q, &aux, "probe", &shipped()};
+                try {
+                    (void)t->create(values, ctx);
+                    ADD_FAILURE() << t->type << " accepts " << p.key << " = " << to_string(*bad);
+                } catch (const InputError& e) {
+                    EXPECT_EQ(std::string(e.what()).rfind(p.key + " ", 0), 0u) << t->type << ": " << e.what();
+                    ++refused;
+                }
+            }
+    EXPECT_GT(refused, 40);
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ public:
     double nominal_dt() const override { return dt_; }
 
 protected:
-    explicit FixedStepIntegrator(const Params& p) : dt_(p.dt) {}
+    // The checks every scheme's spec() makes (fixed_step_spec), for Params built in code too.
+    explicit FixedStepIntegrator(const Params& p) : dt_(fixed_step_spec({}).checked(p).dt) {}
     /// The spec of a fixed-step scheme: `summary` describes it, the key is dt.
     static ParamSpec<Params> fixed_step_spec(std::string summary) {
         ParamSpec<Params> s(std::move(summary));
