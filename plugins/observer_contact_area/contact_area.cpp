@@ -73,7 +73,8 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
     return s;
 }
 
-ContactArea::ContactArea(const Params& p, const Context&) : params_(spec().checked(p)) {}
+ContactArea::ContactArea(const Params& p, const Context& ctx)
+    : params_(spec().checked(p)), counts_(JunctionCounts::need(ctx)) {}
 
 double ContactArea::bond_force_x(double k, double r0, double xi, double zi, double xj, double zj) {
     const double dx = xj - xi, dz = zj - zi;
@@ -92,7 +93,6 @@ void ContactArea::begin(const RunView& view) {
     const Body& body = view.body;
     interface_ = body.nodes("interface");
     const auto n = static_cast<Index>(interface_.size());
-    counts_ = JunctionCounts::require(view.quantities, n, "contact_area");
     friction_ = interface_field(view, "friction_force", n);
     normal_ = interface_field(view, "normal_force", n);
     if (const auto* s = view.quantities.find_scalar("junction_area")) junction_area_ = &s->value;
@@ -130,9 +130,9 @@ double ContactArea::bond_force(const RunView& view, const Block& b, const Bond& 
 
 void ContactArea::observe(const RunView& view) {
     // The run observes again at stage ends and at the end; the same state makes no second row.
-    if (!counts_ || view.step == last_step_) return;
+    if (view.step == last_step_) return;
     last_step_ = view.step;
-    const Eigen::ArrayXd &pinned = *counts_->pinned, &sliding = *counts_->sliding, &dislocated = *counts_->dislocated;
+    const Eigen::ArrayXd &pinned = *counts_.pinned, &sliding = *counts_.sliding, &dislocated = *counts_.dislocated;
     const StageView& s = view.state;
     const double t = s.t, step = static_cast<double>(view.step), stage = view.stage.index;
 

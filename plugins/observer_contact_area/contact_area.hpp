@@ -1,7 +1,6 @@
 #pragma once
 #include <limits>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,7 +62,7 @@ public:
     static constexpr std::string_view type = "contact_area";
     static ParamSpec<Params> spec();
 
-    ContactArea(const Params& p, const Context&);
+    ContactArea(const Params& p, const Context& ctx);
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
 
@@ -96,7 +95,7 @@ private:
     Params params_;
     std::vector<Index> interface_;
     std::vector<Block> blocks_;
-    std::optional<JunctionCounts> counts_;
+    JunctionCounts counts_;
     const Eigen::ArrayXd* friction_ = nullptr;
     const Eigen::ArrayXd* normal_ = nullptr;
     const double* junction_area_ = nullptr;

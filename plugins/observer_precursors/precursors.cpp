@@ -77,7 +77,9 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     return s;
 }
 
-Precursors::Precursors(const Params& p, const Context&) : params_(spec().checked(p)) {}
+Precursors::Precursors(const Params& p, const Context& ctx) : params_(spec().checked(p)) {
+    if (params_.criterion == Criterion::pinned_fraction) counts_ = JunctionCounts::need(ctx);
+}
 
 void Precursors::begin(const RunView& view) {
     const Body& body = view.body;
@@ -85,10 +87,7 @@ void Precursors::begin(const RunView& view) {
     const auto n = static_cast<Index>(interface_.size());
     if (n == 0) throw RunError("precursors: the node set 'interface' is empty");
 
-    if (params_.criterion == Criterion::pinned_fraction)
-        counts_ = JunctionCounts::require(view.quantities, n, "precursors (criterion 'pinned_fraction')");
-    else
-        slip_criterion_.emplace(params_.slip_threshold, params_.quiet_time);
+    if (params_.criterion == Criterion::slip) slip_criterion_.emplace(params_.slip_threshold, params_.quiet_time);
 
     RuptureEventDetector::Interface geometry;
     geometry.x.resize(n);

@@ -71,7 +71,7 @@ public:
     static constexpr std::string_view type = "precursors";
     static ParamSpec<Params> spec();
 
-    Precursors(const Params& p, const Context&);
+    Precursors(const Params& p, const Context& ctx);
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
     void resumed(const RunView& view) override { write_summary(view, false); }

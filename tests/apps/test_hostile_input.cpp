@@ -110,6 +110,23 @@ TEST_F(HostileInput, AFrictionLawWithoutTheNormalForceItReadsIsRefusedAtTheLaw) 
                    "no_contact.yaml:32:3: error: friction: three_state_junctions reads the field 'normal_force'");
 }
 
+TEST_F(HostileInput, AnObserverReadingWhatNoEffectPublishesIsRefusedAtTheObserver) {
+    // contact_area reads the junction counts a law with junctions publishes, and the tiny scene has
+    // no friction law: refused by check as by run, at the observer, naming the field.
+    std::ofstream(dir_ / "no_junctions.yaml") << read_text(tiny()) << "  - type: contact_area\n    every: 2.0e-5\n";
+    expect_refused((dir_ / "no_junctions.yaml").string(),
+                   "no_junctions.yaml:32:5: error: observers[1]: contact_area reads the field 'junctions_dislocated' "
+                   "over node set 'interface', which no effect of this scene computes");
+    // precursors by its default criterion, the pinned fraction, likewise; by slip it reads none.
+    std::ofstream(dir_ / "precursors.yaml") << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n";
+    expect_refused((dir_ / "precursors.yaml").string(),
+                   "precursors.yaml:32:5: error: observers[1]: precursors reads the field 'junctions_dislocated'");
+    std::ofstream(dir_ / "slip_precursors.yaml")
+        << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n    criterion: slip\n";
+    const auto slip = frictionlab("check slip_precursors.yaml", dir_);
+    EXPECT_EQ(slip.code, 0) << slip.output;
+}
+
 TEST_F(HostileInput, AContactRadiusGivingNoJunctionStopsTheRunNamingIt) {
     const auto r = frictionlab("run -q " + every_observer() + " -o out --set friction.contact_radius=1.0", dir_);
     EXPECT_EQ(r.code, 1) << r.output;

@@ -1,32 +1,18 @@
 #include "frictionlab/model/junction_counts.hpp"
 
-#include <fmt/format.h>
-
 #include "frictionlab/base/errors.hpp"
 
 namespace frictionlab {
 
-JunctionCounts JunctionCounts::require(const Quantities& q, Index blocks, std::string_view needed_by) {
-    const auto find = [&](std::string_view name) {
-        const Quantities::Field* f = q.find_field(name);
-        if (!f)
-            throw RunError(
-                fmt::format("{} needs the field '{}' (junction counts per interface block, published by a "
-                            "friction law with junctions such as three_state_junctions), but no effect of "
-                            "the scene publishes it",
-                            needed_by, name));
-        if (f->node_set != "interface" || f->values.size() != blocks)
-            throw RunError(
-                fmt::format("{} needs the field '{}' over the {} nodes of 'interface', but it is over '{}' "
-                            "with {} values",
-                            needed_by, name, blocks, f->node_set, f->values.size()));
-        return &f->values;
+JunctionCounts JunctionCounts::need(const Context& ctx) {
+    if (!ctx.body || !ctx.quantities)
+        throw InputError(ctx.name +
+                         ": reads the junction counts, so needs the bulk model's body and the run's quantities");
+    const auto blocks = static_cast<Index>(ctx.body->nodes("interface").size());
+    const auto field = [&](std::string_view name) {
+        return &ctx.quantities->needed_field(std::string(name), "interface", blocks, ctx.name);
     };
-    JunctionCounts c;
-    c.pinned = find(pinned_name);
-    c.sliding = find(sliding_name);
-    c.dislocated = find(dislocated_name);
-    return c;
+    return {field(pinned_name), field(sliding_name), field(dislocated_name)};
 }
 
 JunctionCounts::Writable JunctionCounts::publish(Quantities& q, const std::string& node_set, Index blocks) {
@@ -39,11 +25,13 @@ JunctionCounts::Writable JunctionCounts::publish(Quantities& q, const std::strin
 }
 
 std::optional<JunctionCounts> JunctionCounts::find(const Quantities& q, Index blocks) {
-    for (auto name : {pinned_name, sliding_name, dislocated_name}) {
+    const auto field = [&](std::string_view name) -> const Eigen::ArrayXd* {
         const Quantities::Field* f = q.find_field(name);
-        if (!f || f->node_set != "interface" || f->values.size() != blocks) return std::nullopt;
-    }
-    return require(q, blocks, "");
+        return f && f->published && f->node_set == "interface" && f->values.size() == blocks ? &f->values : nullptr;
+    };
+    const JunctionCounts c{field(pinned_name), field(sliding_name), field(dislocated_name)};
+    if (!c.pinned || !c.sliding || !c.dislocated) return std::nullopt;
+    return c;
 }
 
 }  // namespace frictionlab

@@ -184,10 +184,10 @@ public:
         : scene_(scene), log_(log), options_(options), sim_(scene, registry, log) {
         sim_.refuse_unstable_steps(!options.allow_unstable_step);
         output_ = scene.output_directory;
-        for (const auto& o : scene.observers) {
-            auto observer =
-                located_in_scene(o, [&] { return registry.create<Observer>(o.type, o.values, sim_.context(o.path)); });
-            observers_.push_back({std::move(observer), o.path, o.every, o.every_steps, 0});
+        auto observers = sim_.build_observers();
+        for (std::size_t i = 0; i < observers.size(); ++i) {
+            const ComponentSpec& o = scene.observers[i];
+            observers_.push_back({std::move(observers[i]), o.path, o.every, o.every_steps, 0});
         }
         if (std::any_of(observers_.begin(), observers_.end(),
                         [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
@@ -460,10 +460,7 @@ private:
 
 void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
     Simulation sim(scene, registry, log);
-    std::vector<std::unique_ptr<Observer>> observers;
-    for (const auto& o : scene.observers)
-        observers.push_back(
-            located_in_scene(o, [&] { return registry.create<Observer>(o.type, o.values, sim.context(o.path)); }));
+    const auto observers = sim.build_observers();
     std::vector<const Observer*> built;
     for (const auto& o : observers) built.push_back(o.get());
     not_checkpointable(scene, sim, built);

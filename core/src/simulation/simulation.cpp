@@ -97,10 +97,7 @@ void Simulation::check_needed_fields() const {
     const auto unpublished = quantities_.unpublished_fields();
     if (unpublished.empty()) return;
     const auto& missing = unpublished.front();
-    const ComponentSpec* reader =
-        scene_.friction && scene_.friction->path == missing.reader ? &*scene_.friction : nullptr;
-    for (const auto& l : scene_.loaders)
-        if (l.path == missing.reader) reader = &l;
+    const ComponentSpec* reader = component_at(missing.reader);
     throw InputError(
         Diagnostic{reader ? reader->where : scene_.bulk.where, missing.reader,
                    fmt::format("{} reads the field '{}' over node set '{}', which no effect of this scene "
@@ -108,6 +105,23 @@ void Simulation::check_needed_fields() const {
                                "publishes each quantity)",
                                reader ? reader->type : missing.reader, missing.name, missing.node_set)}
             .format());
+}
+
+const ComponentSpec* Simulation::component_at(const std::string& path) const {
+    if (scene_.friction && scene_.friction->path == path) return &*scene_.friction;
+    for (const auto* list : {&scene_.loaders, &scene_.observers})
+        for (const auto& c : *list)
+            if (c.path == path) return &c;
+    return nullptr;
+}
+
+std::vector<std::unique_ptr<Observer>> Simulation::build_observers() {
+    std::vector<std::unique_ptr<Observer>> observers;
+    for (const auto& o : scene_.observers)
+        observers.push_back(
+            located_in_scene(o, [&] { return registry_.create<Observer>(o.type, o.values, context(o.path)); }));
+    check_needed_fields();
+    return observers;
 }
 
 Simulation::~Simulation() = default;

@@ -104,11 +104,11 @@ protected:
         o.observe(view());
     }
 
-    static ContactArea make(std::vector<double> blocks = {1}) {
+    ContactArea make(std::vector<double> blocks = {1}) {
         static spdlog::logger quiet("test");
         ContactArea::Params p;
         p.blocks = std::move(blocks);
-        return ContactArea(p, Context{quiet, 0, nullptr, nullptr, nullptr, "observers[0]"});
+        return ContactArea(p, Context{quiet, 0, &body_, &q_, nullptr, "observers[0]"});
     }
 
     fs::path dir_;
@@ -205,22 +205,26 @@ TEST_F(ContactAreaTest, AreaFromAPublishedJunctionArea) {
     EXPECT_DOUBLE_EQ(whole.at(0, "contact_area"), 40 * 3e-10);
 }
 
-TEST_F(ContactAreaTest, MissingJunctionCountsAreNamed) {
-    ContactArea o = make();
-    try {
-        o.begin(view());
-        FAIL() << "expected a RunError";
-    } catch (const RunError& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find("junctions_pinned"), std::string::npos) << message;
-        EXPECT_NE(message.find("contact_area"), std::string::npos) << message;
+TEST_F(ContactAreaTest, ItDeclaresTheJunctionCountsItNeedsInItsName) {
+    // Declared when built, so that a scene without a law that publishes them is refused at
+    // assembly, at this observer (Simulation::build_observers), not when the run starts.
+    make();
+    const auto unpublished = q_.unpublished_fields();
+    ASSERT_EQ(unpublished.size(), 3u);
+    for (const auto& u : unpublished) {
+        EXPECT_EQ(u.reader, "observers[0]") << u.name;
+        EXPECT_EQ(u.node_set, "interface") << u.name;
     }
-    q_.field("junctions_pinned", "interface", nx, "1", "test");
+    publish();
+    EXPECT_TRUE(q_.unpublished_fields().empty());
+}
+
+TEST_F(ContactAreaTest, JunctionCountsOverAnotherNodeSetAreRefused) {
     q_.field("junctions_sliding", "top", nx, "1", "test over the wrong set");
     try {
-        o.begin(view());
-        FAIL() << "expected a RunError";
-    } catch (const RunError& e) {
+        make();
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("junctions_sliding"), std::string::npos) << e.what();
     }
 }

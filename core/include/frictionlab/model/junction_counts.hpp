@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "frictionlab/model/context.hpp"
 #include "frictionlab/model/quantities.hpp"
 #include "frictionlab/model/state.hpp"
 
@@ -23,11 +24,12 @@ struct JunctionCounts {
     const Eigen::ArrayXd* sliding = nullptr;     // N_s per block
     const Eigen::ArrayXd* dislocated = nullptr;  // N_d per block
 
-    /// The three fields, each over "interface" with `blocks` values. Throws RunError naming the
-    /// first missing (or mis-shaped) field and `needed_by`, e.g. "precursors (criterion
-    /// 'pinned_fraction')", so the user learns which friction law the scene lacks and who needs it.
-    static JunctionCounts require(const Quantities& q, Index blocks, std::string_view needed_by);
-    /// The same for observers that only use the counts when the scene has them.
+    /// The three fields as the component built with `ctx` needs them, one value per node of
+    /// "interface", declared needed in its name (Quantities::needed_field): a scene where no effect
+    /// publishes them is refused at assembly, at that component. Observers that cannot do without
+    /// the counts call it from their constructor; the values are there from the first evaluation on.
+    static JunctionCounts need(const Context& ctx);
+    /// The three fields if the scene publishes them, for observers that only use the counts then.
     static std::optional<JunctionCounts> find(const Quantities& q, Index blocks);
 
     /// The three fields a friction law with junctions writes, published over `node_set`.

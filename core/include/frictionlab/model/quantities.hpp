@@ -7,10 +7,11 @@
 // its array and writes it in place, at every force evaluation. Values an observer sees are those of
 // the last evaluation, which the run refreshes at the accepted state before observing.
 //
-// An effect that computes a field publishes it (field()); one that only reads another's field during
-// its force evaluation (a friction law reads the base contact's "normal_force") declares it needed
-// (needed_field()), and a field needed but never published is a scene error at assembly
-// (unpublished_fields()), rather than zeros in the force loop.
+// An effect that computes a field publishes it (field()); a component that only reads another's
+// field (a friction law reads the base contact's "normal_force" in its force evaluation, an observer
+// the junction counts) declares it needed (needed_field()) when it is built, and a field needed but
+// never published is a scene error at assembly (unpublished_fields()), rather than zeros in the force
+// loop or a run that stops at its start.
 #include <map>
 #include <string>
 #include <string_view>

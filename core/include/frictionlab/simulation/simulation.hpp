@@ -49,6 +49,10 @@ public:
     const Scene& scene() const { return scene_; }
     /// A context for components built later against this simulation (observers).
     Context context(const std::string& name);
+    /// The scene's observers, built against this simulation as a run builds them. One that needs a
+    /// quantity no effect publishes (Quantities::needed_field) is an InputError at its place in the
+    /// scene, as an effect is.
+    std::vector<std::unique_ptr<Observer>> build_observers();
 
     /// Starts stage `index` of the scene at the current time and logs its pipeline. Estimates the
     /// stable step of the stage's pipeline (stability.hpp) and throws InputError, naming the limit
@@ -80,6 +84,8 @@ private:
     void check_step_count() const;
     /// A field a component reads that no effect publishes is an InputError at the reader.
     void check_needed_fields() const;
+    /// The scene's component at `path` ("friction", "observers[2]", ...), or null.
+    const ComponentSpec* component_at(const std::string& path) const;
     void check_stability(const StageInfo& stage);
     void record_plugin(const ComponentSpec& component, Kind kind);
 
