@@ -1,12 +1,16 @@
 // An out-of-tree FrictionLab plugin with one observer: at the cadence the scene sets, it writes the
-// largest node speed of the slider to a CSV table in the run's output directory.
-#include <fstream>
+// largest node speed of the slider to a table in the run's output directory. The framework's table
+// writer does the writing, so the table gets what the shipped observers' tables get: the run's
+// provenance beside it, CSV or HDF5 as the scene chooses, whole rows only, and a resumed run's
+// table cut back to the checkpoint and appended to.
+#include <memory>
 #include <string>
 #include <string_view>
 
-#include <frictionlab/base/errors.hpp>
-#include <frictionlab/model/kinds.hpp>
 #include <frictionlab/base/param_spec.hpp>
+#include <frictionlab/model/kinds.hpp>
+#include <frictionlab/output/output_file_name.hpp>
+#include <frictionlab/output/table_writer.hpp>
 #include <frictionlab/plugins/plugin.hpp>
 #include <frictionlab/plugins/registry.hpp>
 #include <frictionlab/simulation/run.hpp>
@@ -22,39 +26,40 @@ public:
     // Defaults live here, and only here.
     struct Params {
         std::string file_name = "max_speed.csv";
+        frictionlab::TableFormat format = frictionlab::TableFormat::csv;
     };
     // The name a scene gives as `type:` under `observers:`.
     static constexpr std::string_view type = "max_speed_csv";
 
-    // Docs, units and bounds of every key, read by scene validation and `frictionlab doc`.
+    // Docs, units, bounds and rules of every key, read by scene validation and `frictionlab doc`.
     static frictionlab::ParamSpec<Params> spec() {
-        frictionlab::ParamSpec<Params> s("Largest node speed of the slider over time, as a CSV table.");
+        frictionlab::ParamSpec<Params> s("Largest node speed of the slider over time, as a table.");
         s.add("file_name", &Params::file_name, "Name of the table in the run's output directory.");
+        s.rule("file_name", [](const Params& p) { return frictionlab::output_file_name_problem(p.file_name); });
+        frictionlab::add_table_format_param(s, &Params::format);
         return s;
     }
 
-    MaxSpeedCsv(const Params& params, const frictionlab::Context&) : params_(params) {}
+    // spec().checked(): Params built in code pass the checks a scene's values pass.
+    MaxSpeedCsv(const Params& params, const frictionlab::Context&) : params_(spec().checked(params)) {}
+
+    // Checkpoints: it keeps nothing but its table, which a resumed run cuts back and appends to.
+    bool checkpointable() const override { return true; }
 
     void begin(const RunView& view) override {
-        const auto path = view.output_directory / params_.file_name;
-        out_.open(path);
-        if (!out_) throw frictionlab::RunError("max_speed_csv: cannot write " + path.string());
-        out_.precision(10);
-        out_ << "time,step,max_speed\n";
+        table_ = frictionlab::open_table(view.output_directory / params_.file_name, {"time", "step", "max_speed"},
+                                         view.info, params_.format, view.resuming);
     }
 
     void observe(const RunView& view) override {
         const auto& s = view.state;
         const double max_speed = s.vx.size() == 0 ? 0.0 : (s.vx.square() + s.vz.square()).sqrt().maxCoeff();
-        out_ << s.t << ',' << view.step << ',' << max_speed << '\n';
+        table_->row({s.t, static_cast<double>(view.step), max_speed});
     }
-
-    // Also called when the run fails: what was written so far stays a valid table.
-    void end(const RunView&) override { out_.flush(); }
 
 private:
     Params params_;
-    std::ofstream out_;
+    std::unique_ptr<frictionlab::TableWriter> table_;
 };
 
 // Called once when the library is loaded: an ordinary call per type, nothing registers itself.

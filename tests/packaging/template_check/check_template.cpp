@@ -1,6 +1,7 @@
 // check_template <observer_max_speed_csv.so> <output directory>
 // Loads the plugin built from share/plugin_template through the installed library, runs its
-// observer on a two-node state whose largest speed is known (|(3, 4)| = 5 m/s) and checks the table.
+// observer on a two-node state whose largest speed is known (|(3, 4)| = 5 m/s) and checks the table,
+// written by the framework's table writer with the run's provenance beside it.
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -9,6 +10,7 @@
 
 #include <spdlog/logger.h>
 
+#include <frictionlab/base/errors.hpp>
 #include <frictionlab/model/quantities.hpp>
 #include <frictionlab/plugins/registry.hpp>
 #include <frictionlab/simulation/run.hpp>
@@ -33,8 +35,8 @@ int main(int argc, char** argv) {
             return fail("unexpected plugin " + record.name + " " + record.version);
         const fl::TypeInfo* info = registry.find(fl::Kind::observer, "max_speed_csv");
         if (!info) return fail("the plugin did not register observer type 'max_speed_csv'");
-        if (info->params.size() != 1 || info->params[0].key != "file_name")
-            return fail("observer 'max_speed_csv' should declare one key, file_name");
+        if (info->params.size() != 2 || info->params[0].key != "file_name" || info->params[1].key != "format")
+            return fail("observer 'max_speed_csv' should declare two keys, file_name and format");
 
         spdlog::logger log("check_template");  // no sinks: quiet
         fl::Body body;
@@ -47,8 +49,14 @@ int main(int argc, char** argv) {
         y.segment(4, 2) << 3.0, 0.5;  // vx
         y.segment(6, 2) << 4.0, 0.5;  // vz
         const fl::StageInfo stage{"load", 0, 0.0, 1.0, true};
-        const fl::RunInfo run_info;
+        fl::RunInfo run_info;
+        run_info.framework_version = "0.0.0-check";
+        run_info.scene_hash = "c0ffee";
         fl::Context ctx{log, 0, &body, &quantities, nullptr, "observers[0]"};
+        try {  // built in code as a scene would not let it be: refused by spec().checked()
+            registry.create<fl::Observer>("max_speed_csv", {{"file_name", std::string("../speed.csv")}}, ctx);
+            return fail("observer 'max_speed_csv' accepts a file outside the output directory");
+        } catch (const fl::InputError&) {}
         {
             auto observer =
                 registry.create<fl::Observer>("max_speed_csv", {{"file_name", std::string("speed.csv")}}, ctx);
@@ -72,6 +80,11 @@ int main(int argc, char** argv) {
         if (!fields || c1 != ',' || c2 != ',' || t != 0.0 || step != 7 || std::abs(speed - 5.0) > 1e-12)
             return fail("unexpected row '" + row + "', expected 0,7,5");
         if (std::getline(in, extra)) return fail("more rows than observations");
+        std::ifstream sidecar(output / "speed.csv.meta.yaml");
+        std::stringstream provenance;
+        provenance << sidecar.rdbuf();
+        if (provenance.str().find("scene_hash: c0ffee") == std::string::npos)
+            return fail("no provenance beside the table: '" + provenance.str() + "'");
     } catch (const std::exception& e) {
         return fail(e.what());
     }
