@@ -35,8 +35,6 @@ MpiSession::~MpiSession() {
     started = false;
 }
 
-bool mpi_available() { return true; }
-
 int mpi_rank() {
     int rank = 0;
     if (started) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -85,7 +83,6 @@ MpiSession::MpiSession() {
     (void)case_tag;
 }
 MpiSession::~MpiSession() = default;
-bool mpi_available() { return false; }
 int mpi_rank() { return 0; }
 int mpi_size() { return 1; }
 

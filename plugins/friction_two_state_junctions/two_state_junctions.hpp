@@ -91,7 +91,6 @@ public:
     Index junctions_per_block() const { return n_s_; }
     Index pinned(Index i) const { return block(i).pinned; }
     Index slipping(Index i) const { return n_s_ - block(i).pinned; }
-    bool is_slipping(Index i, Index j) const { return block(i).slipping[static_cast<std::size_t>(j)] != 0; }
     /// Re-pinning time of a slipping junction (infinity while pinned), s.
     double repin_time(Index i, Index j) const { return block(i).deadline[static_cast<std::size_t>(j)]; }
     /// k_i, f_s and f_d of block i as frozen for the current step.

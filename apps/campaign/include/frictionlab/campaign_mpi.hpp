@@ -12,8 +12,6 @@ public:
     MpiSession& operator=(const MpiSession&) = delete;
 };
 
-/// True if FrictionLab was built with MPI.
-bool mpi_available();
 /// This process's rank and the number of ranks: 0 and 1 without MPI.
 int mpi_rank();
 int mpi_size();
