@@ -20,6 +20,7 @@
 #include <spdlog/logger.h>
 
 #include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/plugins/search.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/scene/scene.hpp"
@@ -50,13 +51,11 @@ struct SceneFixture {
 
     /// Fraction of the interface's junctions that are sliding or dislocated (after the last stage).
     double fraction_unpinned() {
-        const auto* pinned = sim->quantities().find_field("junctions_pinned");
-        const auto* sliding = sim->quantities().find_field("junctions_sliding");
-        const auto* dislocated = sim->quantities().find_field("junctions_dislocated");
-        if (!pinned || !sliding || !dislocated)
-            throw std::runtime_error("the friction law publishes no junction counts");
-        const double unpinned = sliding->values.sum() + dislocated->values.sum();
-        return unpinned / (unpinned + pinned->values.sum());
+        const auto blocks = static_cast<Index>(sim->system().body().nodes("interface").size());
+        const auto counts = JunctionCounts::find(sim->quantities(), blocks);
+        if (!counts) throw std::runtime_error("the friction law publishes no junction counts");
+        const double unpinned = counts->sliding->sum() + counts->dislocated->sum();
+        return unpinned / (unpinned + counts->pinned->sum());
     }
 
     double dt() const { return sim->integrator().nominal_dt(); }
