@@ -1,5 +1,6 @@
 // PluginLibrary: the checks made before any C++ of a plugin runs. Every refusal names the file and
-// the reason, and leaves the registry that tried the load as it was.
+// the reason, and leaves the registry that tried the load as it was. The plugins refused for their
+// stamp abort in their static constructors: these tests would die if such a file were loaded.
 #include "frictionlab/plugins/library.hpp"
 
 #include <unistd.h>
@@ -34,6 +35,13 @@ protected:
     Registry registry;
 };
 
+TEST_F(PluginRefusal, NoStampIsRefusedWithoutLoadingTheFile) {
+    EXPECT_EQ(refused("testplugin_no_stamp.so"),
+              prefix("testplugin_no_stamp.so") +
+                  "it has no section .frictionlab_plugin (define its entry point with FRICTIONLAB_PLUGIN; a plugin "
+                  "built against an older frictionlab has none: rebuild it)");
+}
+
 TEST_F(PluginRefusal, NoEntrySymbol) {
     EXPECT_EQ(refused("testplugin_no_entry.so"),
               prefix("testplugin_no_entry.so") +
@@ -45,7 +53,7 @@ TEST_F(PluginRefusal, HeaderVersion) {
         refused("testplugin_bad_header_version.so"),
         prefix("testplugin_bad_header_version.so") +
             fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
-                        plugin_header_version + 1, sizeof(PluginHeader), plugin_header_version, sizeof(PluginHeader)));
+                        plugin_header_version + 1, sizeof(PluginStamp), plugin_header_version, sizeof(PluginStamp)));
 }
 
 TEST_F(PluginRefusal, HeaderSize) {
@@ -53,7 +61,7 @@ TEST_F(PluginRefusal, HeaderSize) {
         refused("testplugin_bad_header_size.so"),
         prefix("testplugin_bad_header_size.so") +
             fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
-                        plugin_header_version, sizeof(PluginHeader) - 8, plugin_header_version, sizeof(PluginHeader)));
+                        plugin_header_version, sizeof(PluginStamp) - 8, plugin_header_version, sizeof(PluginStamp)));
 }
 
 TEST_F(PluginRefusal, FrameworkAbiNamesTheField) {

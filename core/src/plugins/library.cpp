@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdint>
@@ -52,11 +53,40 @@ std::string dl_reason(const std::string& file) {
     return reason;
 }
 
-/// Why the file cannot be a shared library for this machine, or "": read with libelf before
-/// dlopen, which maps the file's segments and would die of SIGBUS on one cut short (a truncated
-/// copy, a download that stopped).
-std::string elf_problem(const std::filesystem::path& file) {
-    if (elf_version(EV_CURRENT) == EV_NONE) return "";  // cannot tell; dlopen will say
+/// The stamp section's bytes as a PluginStamp, or why they cannot be one. A stamp of another header
+/// version is reported by its first two fields, which never move.
+std::string read_stamp(Elf* elf, std::uint64_t file_size, PluginStamp& stamp) {
+    std::size_t names = 0;
+    if (elf_getshdrstrndx(elf, &names) != 0) return "its section names cannot be read";
+    for (Elf_Scn* section = elf_nextscn(elf, nullptr); section; section = elf_nextscn(elf, section)) {
+        GElf_Shdr header{};
+        if (!gelf_getshdr(section, &header)) return "its section headers cannot be read";
+        const char* name = elf_strptr(elf, names, header.sh_name);
+        if (!name || std::strcmp(name, FRICTIONLAB_PLUGIN_SECTION) != 0) continue;
+        if (header.sh_type != SHT_PROGBITS || header.sh_offset + header.sh_size > file_size)
+            return "its section " FRICTIONLAB_PLUGIN_SECTION " is damaged or truncated";
+        const Elf_Data* data = elf_getdata(section, nullptr);
+        constexpr std::size_t fixed = 2 * sizeof(std::uint32_t);  // header_version, header_size
+        if (!data || !data->d_buf || data->d_size < fixed)
+            return fmt::format("its section " FRICTIONLAB_PLUGIN_SECTION " has {} bytes, too few for a plugin stamp",
+                               data ? data->d_size : 0);
+        std::memcpy(&stamp, data->d_buf, std::min(data->d_size, sizeof stamp));
+        if (stamp.header_version != plugin_header_version || stamp.header_size != sizeof(PluginStamp) ||
+            data->d_size < sizeof stamp)
+            return fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
+                               stamp.header_version, stamp.header_size, plugin_header_version, sizeof(PluginStamp));
+        return {};
+    }
+    return "it has no section " FRICTIONLAB_PLUGIN_SECTION
+           " (define its entry point with FRICTIONLAB_PLUGIN; a plugin built against an older frictionlab "
+           "has none: rebuild it)";
+}
+
+/// Why the file cannot be a plugin for this frictionlab, or "": read with libelf before dlopen,
+/// which maps the file's segments (and would die of SIGBUS on one cut short: a truncated copy, a
+/// download that stopped) and runs the library's static constructors. Fills in `stamp`.
+std::string elf_problem(const std::filesystem::path& file, PluginStamp& stamp) {
+    if (elf_version(EV_CURRENT) == EV_NONE) return "libelf cannot read ELF files here";
     const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return std::strerror(errno);
     struct stat st {};
@@ -93,9 +123,19 @@ std::string elf_problem(const std::filesystem::path& file) {
             problem = fmt::format("it is truncated: segment {} ends at byte {}, the file has {}", i,
                                   segment.p_offset + segment.p_filesz, size);
     }
+    if (problem.empty()) problem = read_stamp(elf, size, stamp);
     if (elf) elf_end(elf);
     ::close(fd);
     return problem;
+}
+
+/// Why a stamp of the right version is not one this frictionlab can load, or "".
+std::string stamp_problem(const PluginStamp& stamp) {
+    if (auto diff = first_difference(stamp.abi, current_abi()); !diff.empty()) return diff;
+    const auto terminated = [](const auto& text) { return std::memchr(text, '\0', sizeof text) != nullptr; };
+    if (!terminated(stamp.name) || !terminated(stamp.version) || !stamp.name[0] || !stamp.version[0])
+        return "its stamp has no name or version";
+    return {};
 }
 
 /// Absolute, so that dlopen opens this very file: a name without a slash would instead be searched
@@ -114,7 +154,10 @@ PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(absolute
         throw InputError(fmt::format("{}: cannot use this plugin: {}", file_.string(), why));
     };
     if (std::error_code ec; !std::filesystem::exists(file_, ec)) fail("no such file");
-    if (const std::string problem = elf_problem(file_); !problem.empty()) fail(problem);
+    // Nothing of the file runs until its stamp has passed: dlopen runs its static constructors.
+    PluginStamp stamp{};
+    if (const std::string problem = elf_problem(file_, stamp); !problem.empty()) fail(problem);
+    if (const std::string problem = stamp_problem(stamp); !problem.empty()) fail(problem);
     // Once, as loaded: a copy earlier in the search path wins over the shipped plugin of the same
     // name, and every run's record must show which file ran.
     fingerprint_ = file_fingerprint(file_);
@@ -130,6 +173,7 @@ PluginLibrary::PluginLibrary(const std::filesystem::path& file) : file_(absolute
     std::memcpy(&entry, &symbol, sizeof entry);  // object pointer -> function pointer, as POSIX allows
     header_ = entry();
     if (!header_) fail("its entry point returned no header");
+    // The stamp passed; the entry point's header is checked again, as it may be written by hand.
     // Only the first two fields are read before they have been checked: their place never moves.
     if (header_->header_version != plugin_header_version || header_->header_size != sizeof(PluginHeader))
         fail(fmt::format("plugin header version {} (size {}), this frictionlab reads version {} (size {})",
