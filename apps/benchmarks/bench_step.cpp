@@ -40,7 +40,7 @@ struct SceneFixture {
         auto document = SceneDocument::load(scene_file, overrides, diagnostics);
         // FRICTIONLAB_PLUGIN_PATH first, as for the program: it lets one binary time another build's plugins.
         const char* env = std::getenv("FRICTIONLAB_PLUGIN_PATH");
-        load_plugins(registry, plugin_directories({}, {}, env ? env : "", FRICTIONLAB_PLUGIN_DIR));
+        load_plugins(registry, plugin_directories({}, {}, env ? env : "", FRICTIONLAB_PLUGIN_DIR), log);
         scene = document.validate(registry, diagnostics);
         if (!diagnostics.empty()) throw std::runtime_error(diagnostics.format());
         sim = std::make_unique<Simulation>(scene, registry, log);

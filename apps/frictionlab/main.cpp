@@ -139,7 +139,7 @@ std::optional<fl::Scene> read_scene(const std::filesystem::path& file, const std
     fl::Diagnostics diagnostics;
     auto document = fl::SceneDocument::load(file, overrides, diagnostics);
     const auto scene_paths = document.plugin_paths(diagnostics);
-    fl::load_plugins(registry, common.directories(scene_paths));
+    fl::load_plugins(registry, common.directories(scene_paths), *common.logger());
     fl::Scene scene = document.validate(registry, diagnostics);
     if (!diagnostics.empty()) {
         report_errors(diagnostics, file);
@@ -236,7 +236,7 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
     if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
     if (diagnostics.empty()) {
         const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics).plugin_paths(diagnostics);
-        fl::load_plugins(registry, common.directories(scene_paths));
+        fl::load_plugins(registry, common.directories(scene_paths), log);
         cases = fl::sweep_cases(spec, output, registry, diagnostics);
     }
     if (check_only && diagnostics.empty() && root) {
@@ -305,7 +305,7 @@ int study(const std::filesystem::path& file, std::string output, const fl::RunOp
     std::vector<fl::Scene> scenes;
     if (diagnostics.empty()) {
         const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics).plugin_paths(diagnostics);
-        fl::load_plugins(registry, common.directories(scene_paths));
+        fl::load_plugins(registry, common.directories(scene_paths), log);
         if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
         scenes = fl::study_scenes(spec, output, registry, diagnostics);
     }
@@ -509,7 +509,7 @@ int main(int argc, char** argv) {
             options.command_line.assign(argv, argv + argc);
             return study(study_file, output, options, check_only, common, registry, *log);
         }
-        fl::load_plugins(registry, common.directories({}));
+        fl::load_plugins(registry, common.directories({}), *log);
         if (*list) {
             for (const auto* t : all_types(registry))
                 std::cout << fl::to_string(t->kind) << "/" << t->type << "  "

@@ -161,7 +161,7 @@ private:
         auto document = text_ ? fl::SceneDocument::parse(*text_, source_.string(), overrides_, diagnostics)
                               : fl::SceneDocument::load(source_, overrides_, diagnostics);
         const auto scene_paths = document.plugin_paths(diagnostics);
-        fl::load_plugins(*registry_, plugin_directories(plugin_paths_, scene_paths));
+        fl::load_plugins(*registry_, plugin_directories(plugin_paths_, scene_paths), *make_logger("warn"));
         scene_ = document.validate(*registry_, diagnostics);
         if (!diagnostics.empty()) throw SceneInvalid(source_.string(), diagnostics);
     }
@@ -180,7 +180,7 @@ std::vector<fl::Kind> all_kinds() {
 
 std::unique_ptr<fl::Registry> shipped_registry(const std::vector<fs::path>& plugin_paths) {
     auto registry = std::make_unique<fl::Registry>();
-    fl::load_plugins(*registry, plugin_directories(plugin_paths, {}));
+    fl::load_plugins(*registry, plugin_directories(plugin_paths, {}), *make_logger("warn"));
     return registry;
 }
 

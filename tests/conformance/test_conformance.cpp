@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
+#include <spdlog/spdlog.h>
 
 #include "frictionlab/plugins/search.hpp"
 #include "frictionlab/plugins/registry.hpp"
@@ -24,7 +25,7 @@ constexpr Kind all_kinds[] = {Kind::bulk_model, Kind::friction_law, Kind::loader
 
 Registry& shipped() {
     static Registry registry;
-    static const bool loaded = (load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR}), true);
+    static const bool loaded = (load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR}, *spdlog::default_logger()), true);
     (void)loaded;
     return registry;
 }

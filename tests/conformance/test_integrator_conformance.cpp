@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
 
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/plugins/search.hpp"
@@ -20,7 +21,7 @@ using test_support::OscillatorRig;
 
 const Registry& shipped() {
     static Registry registry;
-    static const bool loaded = (load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR}), true);
+    static const bool loaded = (load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR}, *spdlog::default_logger()), true);
     (void)loaded;
     return registry;
 }

@@ -2,7 +2,11 @@
 // the environment value's parsing, the shipped directory next to the executable, and loading in order.
 #include "frictionlab/plugins/search.hpp"
 
+#include <sstream>
+
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include "test_support.hpp"
 
@@ -52,7 +56,8 @@ TEST(ShippedPluginDirectory, OfTheRunningExecutable) {
 TEST(LoadPlugins, EarlierDirectoriesWin) {
     Registry registry;
     // --plugin-path shadow, FRICTIONLAB_PLUGIN_PATH=good: shadow's testplugin_alpha overrides good's.
-    load_plugins(registry, plugin_directories({test_plugin("shadow")}, {}, test_plugin("good").string(), std::nullopt));
+    load_plugins(registry, plugin_directories({test_plugin("shadow")}, {}, test_plugin("good").string(), std::nullopt),
+                 *spdlog::default_logger());
     ASSERT_EQ(registry.plugins().size(), 3u);
     EXPECT_EQ(registry.plugins()[0].name, "testplugin_alpha");
     EXPECT_EQ(registry.plugins()[0].version, "2.0-shadow");
@@ -64,10 +69,29 @@ TEST(LoadPlugins, MissingDirectoryIsAnInputErrorNamingIt) {
     Registry registry;
     const auto missing = test_plugin("missing");
     EXPECT_EQ(refusal([&] {
-                  load_plugins(registry, {missing, test_plugin("good")});
+                  load_plugins(registry, {missing, test_plugin("good")}, *spdlog::default_logger());
               }),
               "plugin directory '" + missing.string() + "' does not exist");
     EXPECT_TRUE(registry.plugins().empty());
+}
+
+TEST(LoadPlugins, EachUnusablePluginIsWarnedOfOnceAndSkipped) {
+    std::ostringstream warnings;
+    auto sink = std::make_shared<spdlog::sinks::ostream_sink_st>(warnings);
+    sink->set_pattern("%l: %v");
+    spdlog::logger log("test", sink);
+    Registry registry;
+    // The directory twice, as when it is both on the command line and in FRICTIONLAB_PLUGIN_PATH.
+    load_plugins(registry, {TEST_PLUGIN_DIR, TEST_PLUGIN_DIR, test_plugin("good")}, log);
+    const std::string text = warnings.str();
+    const std::string expected = "warning: " + test_plugin("not_a_library.so").string() +
+                                 ": cannot use this plugin: it is not an ELF file; skipped\n";
+    EXPECT_NE(text.find(expected), std::string::npos) << text;
+    EXPECT_EQ(text.find(expected), text.rfind(expected)) << text;
+    std::size_t lines = 0;
+    for (char c : text) lines += c == '\n';
+    EXPECT_EQ(lines, registry.skipped().size()) << text;
+    EXPECT_EQ(registry.plugins().size(), 5u);  // duplicate_a, good, alpha, beta, gamma
 }
 
 }  // namespace

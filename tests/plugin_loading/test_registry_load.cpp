@@ -2,6 +2,7 @@
 // through the registry; duplicate names and failing register functions are refused whole.
 #include "frictionlab/plugins/registry.hpp"
 
+#include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -179,10 +180,42 @@ TEST(RegistryLoadDirectory, MissingDirectoryIsNamed) {
               "plugin directory '" + test_plugin("no_such_directory").string() + "' does not exist");
 }
 
-TEST(RegistryLoadDirectory, BrokenPluginStopsTheLoadWithItsMessage) {
+TEST(RegistryLoadDirectory, BrokenPluginsAreSkippedWithTheirMessageOnceAndTheRestLoad) {
     Registry registry;
-    EXPECT_EQ(refusal([&] { registry.load_directory(TEST_PLUGIN_DIR); }),
+    const auto skipped = registry.load_directory(TEST_PLUGIN_DIR);
+    // The directory's only usable plugins; testplugin_duplicate_b clashes with _a, loaded first.
+    EXPECT_EQ(plugin_names(registry), (std::vector<std::string>{"testplugin_duplicate_a", "testplugin_good"}));
+    std::vector<std::string> files;
+    for (const auto& s : skipped) files.push_back(s.file.filename().string());
+    EXPECT_EQ(files, (std::vector<std::string>{
+                         "not_a_library.so", "testplugin_bad_eigen_align.so", "testplugin_bad_framework_abi.so",
+                         "testplugin_bad_header_size.so", "testplugin_bad_header_version.so",
+                         "testplugin_bad_register_function.so", "testplugin_duplicate_b.so",
+                         "testplugin_duplicate_self.so", "testplugin_no_entry.so", "testplugin_no_stamp.so",
+                         "testplugin_throws.so", "testplugin_unresolved.so"}));
+    ASSERT_FALSE(skipped.empty());
+    EXPECT_EQ(skipped[0].message,
               test_plugin("not_a_library.so").string() + ": cannot use this plugin: it is not an ELF file");
+    EXPECT_EQ(registry.skipped().size(), skipped.size());
+    // Searched again (the same directory named twice): nothing new to report, nothing changes.
+    const auto before = snapshot(registry);
+    EXPECT_TRUE(registry.load_directory(TEST_PLUGIN_DIR).empty());
+    EXPECT_EQ(registry.skipped().size(), skipped.size());
+    EXPECT_EQ(snapshot(registry), before);
+}
+
+TEST(RegistryLoadDirectory, ASkippedPluginOverridesNothing) {
+    // A broken testplugin_alpha searched first does not hide the good one searched after it.
+    const auto dir = std::filesystem::path(FRICTIONLAB_BINARY_DIR) / "tests" / "skipped_override";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "testplugin_alpha.so") << "not a library\n";
+    Registry registry;
+    EXPECT_EQ(registry.load_directory(dir).size(), 1u);
+    EXPECT_TRUE(registry.load_directory(test_plugin("good")).empty());
+    EXPECT_EQ(plugin_names(registry),
+              (std::vector<std::string>{"testplugin_alpha", "testplugin_beta", "testplugin_gamma"}));
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "scene_fixture.hpp"
 
 #include <stdexcept>
+#include <spdlog/spdlog.h>
 
 #include "frictionlab/plugins/search.hpp"
 
@@ -13,7 +14,7 @@ namespace frictionlab::testing {
 Scene load_scene(const std::string& scene_file, const std::vector<std::string>& overrides, Registry& registry) {
     Diagnostics diagnostics;
     auto document = SceneDocument::load(scene_file, overrides, diagnostics);
-    load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR});
+    load_plugins(registry, {FRICTIONLAB_PLUGIN_DIR}, *spdlog::default_logger());
     Scene scene = document.validate(registry, diagnostics);
     if (!diagnostics.empty()) throw std::runtime_error(diagnostics.format());
     return scene;

@@ -87,7 +87,7 @@ PluginRecord Registry::load(const std::filesystem::path& file) {
     return record;
 }
 
-void Registry::load_directory(const std::filesystem::path& dir) {
+std::vector<SkippedPlugin> Registry::load_directory(const std::filesystem::path& dir) {
     std::error_code ec;
     if (!std::filesystem::is_directory(dir, ec))
         throw InputError(fmt::format("plugin directory '{}' does not exist", dir.string()));
@@ -99,16 +99,28 @@ void Registry::load_directory(const std::filesystem::path& dir) {
         throw InputError(fmt::format("plugin directory '{}' cannot be read: {}", dir.string(), e.code().message()));
     }
     std::sort(files.begin(), files.end());  // deterministic load order
+    std::vector<SkippedPlugin> skipped;
     // A plugin is named after its file; the first of a name wins, so a directory searched earlier
-    // overrides the shipped plugins.
+    // overrides the shipped plugins. A skipped file overrides nothing: the next of its name loads.
     for (const auto& f : files) {
         const auto name = f.stem().string();
         const bool loaded = std::any_of(libraries_.begin(), libraries_.end(), [&](const auto& lib) {
             const auto r = lib->record();
             return r.name == name || r.file.stem().string() == name;
         });
-        if (!loaded) load(f);
+        const bool known_bad = std::any_of(skipped_.begin(), skipped_.end(), [&](const SkippedPlugin& s) {
+            return std::filesystem::equivalent(s.file, f, ec);
+        });
+        if (loaded || known_bad) continue;
+        try {
+            load(f);
+        } catch (const InputError& e) {
+            // Named as in the message: absolute, whatever directory was searched.
+            skipped.push_back({std::filesystem::absolute(f, ec).lexically_normal(), e.what()});
+            skipped_.push_back(skipped.back());
+        }
     }
+    return skipped;
 }
 
 std::vector<PluginRecord> Registry::plugins() const {

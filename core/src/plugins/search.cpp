@@ -65,8 +65,9 @@ std::vector<std::filesystem::path> plugin_directories(const std::vector<std::fil
     return dirs;
 }
 
-void load_plugins(Registry& registry, const std::vector<std::filesystem::path>& directories) {
-    for (const auto& dir : directories) registry.load_directory(dir);
+void load_plugins(Registry& registry, const std::vector<std::filesystem::path>& directories, spdlog::logger& log) {
+    for (const auto& dir : directories)
+        for (const auto& skipped : registry.load_directory(dir)) log.warn("{}; skipped", skipped.message);
 }
 
 }  // namespace frictionlab

@@ -142,8 +142,17 @@ private:
                         "unknown " + kind_name + " type " + quote(type) +
                             (guess.empty() ? "" : "; did you mean " + quote(guess) + "?") +
                             (names.empty() ? "; no " + kind_name + " types are available (check the plugin paths)"
-                                           : " (available " + kind_name + " types: " + quote_list(names) + ")"));
+                                           : " (available " + kind_name + " types: " + quote_list(names) + ")") +
+                            skipped_plugins_note());
         return nullptr;
+    }
+
+    /// The plugin files that could not be used: the missing type may be in one of them.
+    std::string skipped_plugins_note() const {
+        std::string files;
+        for (const auto& skipped : registry_->skipped()) files += (files.empty() ? "" : ", ") + skipped.file.string();
+        return files.empty() ? ""
+                             : "\n  note: plugins skipped as unusable (warned above), which may provide it: " + files;
     }
 
     ComponentRead read_component(Kind kind, const Entry& entry, const std::string& path) {

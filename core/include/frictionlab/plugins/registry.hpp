@@ -44,6 +44,12 @@ constexpr Kind kind_of() {
     }
 }
 
+/// A plugin file of a searched directory that could not be used.
+struct SkippedPlugin {
+    std::filesystem::path file;
+    std::string message;  // "<file>: cannot use this plugin: <reason>"
+};
+
 class Registry {
 public:
     Registry();
@@ -85,10 +91,15 @@ public:
     /// reason (unloadable, no entry symbol, ABI mismatch with the first differing field, duplicate
     /// type, register function that threw); a refused plugin leaves the registry unchanged.
     PluginRecord load(const std::filesystem::path& file);
-    /// Loads every plugin (*.so) of the directory whose types are not already known.
-    void load_directory(const std::filesystem::path& dir);
+    /// Loads every plugin (*.so) of the directory whose types are not already known. A file that
+    /// cannot be used is skipped, so that one broken file does not stop commands that never need
+    /// it; returns the files this call skipped, each with load()'s message (none twice). A missing
+    /// or unreadable directory is an InputError.
+    std::vector<SkippedPlugin> load_directory(const std::filesystem::path& dir);
     /// The libraries loaded so far, in load order.
     std::vector<PluginRecord> plugins() const;
+    /// Every file load_directory() skipped so far, in order: where a missing type may have been.
+    const std::vector<SkippedPlugin>& skipped() const { return skipped_; }
 
 private:
     // Declared first so they are destroyed last: every object made from a library's code (and the
@@ -96,6 +107,7 @@ private:
     std::vector<std::unique_ptr<PluginLibrary>> libraries_;
     std::vector<TypeInfo> types_;
     std::string current_library_;
+    std::vector<SkippedPlugin> skipped_;
 };
 
 }  // namespace frictionlab

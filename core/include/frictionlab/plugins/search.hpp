@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <spdlog/logger.h>
+
 namespace frictionlab {
 
 class Registry;
@@ -30,7 +32,8 @@ std::vector<std::filesystem::path> plugin_directories(const std::vector<std::fil
                                                       const std::optional<std::filesystem::path>& shipped);
 
 /// Loads the plugins of every directory, in order (Registry::load_directory). A directory that does
-/// not exist, or a plugin that cannot be used, is an InputError naming it.
-void load_plugins(Registry& registry, const std::vector<std::filesystem::path>& directories);
+/// not exist is an InputError naming it; a plugin that cannot be used is skipped, and reported to
+/// `log` as a warning with its reason (once: a registry loaded again warns only of new files).
+void load_plugins(Registry& registry, const std::vector<std::filesystem::path>& directories, spdlog::logger& log);
 
 }  // namespace frictionlab
