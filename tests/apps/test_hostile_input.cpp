@@ -27,6 +27,7 @@ protected:
     void SetUp() override { dir_ = frictionlab::testing::work_directory(); }
     std::string tiny() const { return std::string(TEST_SCENES) + "/tiny_lattice.yaml"; }
     std::string every_observer() const { return std::string(TEST_SCENES) + "/every_observer.yaml"; }
+    std::string chain() const { return FRICTIONLAB_SOURCE_DIR "/configs/peer_bulk/amundsen2012_chain.yaml"; }
 
     /// `check` and `run` both refuse (exit 2), naming `what`; run leaves no output directory.
     void expect_refused(const std::string& args, const std::string& what) const {
@@ -89,6 +90,20 @@ TEST_F(HostileInput, ObserverFilesStayInTheOutputDirectoryAndNeverCollide) {
     EXPECT_NE(r.output.find("loading_curve.csv' is written by another observer of this run"), std::string::npos)
         << r.output;
     EXPECT_GE(whole_rows(dir_ / "out" / "loading_curve.csv"), 0);
+}
+
+TEST_F(HostileInput, IntegersBeyondTheirTypeAreRefusedWithItsRange) {
+    // 4294967307 would wrap to 11 columns while run.yaml recorded 4294967307.
+    std::string scene = read_text(tiny());
+    const std::string nx = "  nx: 11\n";
+    ASSERT_NE(scene.find(nx), std::string::npos);
+    scene.replace(scene.find(nx), nx.size(), "  nx: 4294967307\n");
+    std::ofstream(dir_ / "wide.yaml") << scene;
+    expect_refused((dir_ / "wide.yaml").string(),
+                   "wide.yaml:7:7: error: bulk.nx: must be between -2147483648 and 2147483647 (the range of its "
+                   "integer type), got 4294967307");
+    expect_refused(chain() + " --set bulk.blocks=3000000000",
+                   "bulk.blocks: must be between -2147483648 and 2147483647");
 }
 
 TEST_F(HostileInput, CheckRefusesWhatRunWouldRefuseAtSetUp) {

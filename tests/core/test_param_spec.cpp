@@ -1,5 +1,6 @@
-// ParamSpec: an enumeration bound once by name (choice), and one check of bounds, choices and rules
-// (checked) for Params whatever built them.
+// ParamSpec: an enumeration bound once by name (choice), one check of bounds, choices and rules
+// (checked) for Params whatever built them, and integers no wider than the member that holds them.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,26 @@ TEST(ParamSpec, CheckedPassesValidParamsAndNamesTheKeyAtFault) {
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), "radius: discs overlap: 2 radius > spacing");
     }
+}
+
+struct Counts {
+    int blocks = 100;
+    std::int64_t steps = 0;
+};
+
+// A scene's integers are 64-bit; an int member would wrap a larger one (4294967307 -> 11).
+TEST(ParamSpec, AnIntMemberTakesOnlyTheValuesItCanHold) {
+    ParamSpec<Counts> s;
+    s.add("blocks", &Counts::blocks, "Blocks.").at_least(2);
+    s.add("steps", &Counts::steps, "Steps.");
+    const ParamInfo& blocks = s.params()[0];
+    EXPECT_EQ(violated_constraint(blocks, std::int64_t{2147483647}), "");
+    EXPECT_EQ(violated_constraint(blocks, std::int64_t{4294967307}),
+              "must be between -2147483648 and 2147483647 (the range of its integer type), got 4294967307");
+    EXPECT_EQ(violated_constraint(blocks, std::int64_t{-2147483649}),
+              "must be between -2147483648 and 2147483647 (the range of its integer type), got -2147483649");
+    EXPECT_EQ(violated_constraint(blocks, std::int64_t{1}), "must be >= 2, got 1");
+    EXPECT_FALSE(s.params()[1].integer_range);  // as wide as the scene's integers
 }
 
 }  // namespace

@@ -68,7 +68,12 @@ std::string choice_violation(const ParamInfo& p, const std::string& s) {
 
 std::string violated_constraint(const ParamInfo& info, const ParamValue& value) {
     if (auto* d = std::get_if<double>(&value)) return numeric_violation(info, *d);
-    if (auto* i = std::get_if<std::int64_t>(&value)) return numeric_violation(info, static_cast<double>(*i));
+    if (auto* i = std::get_if<std::int64_t>(&value)) {
+        if (const auto& range = info.integer_range; range && (*i < range->first || *i > range->second))
+            return fmt::format("must be between {} and {} (the range of its integer type), got {}", range->first,
+                               range->second, *i);
+        return numeric_violation(info, static_cast<double>(*i));
+    }
     if (auto* v = std::get_if<std::vector<double>>(&value)) {
         for (std::size_t k = 0; k < v->size(); ++k)
             if (auto m = numeric_violation(info, (*v)[k]); !m.empty()) return fmt::format("item {}: {}", k, m);

@@ -17,6 +17,7 @@
 //              "Which junctions go when P_b falls.");
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -47,8 +48,11 @@ struct ParamInfo {
     ParamValue default_value;
     bool required = false;
     std::optional<double> greater_than, at_least, less_than, at_most;  // numeric bounds
-    std::vector<std::string> choices;                                  // allowed strings
-    bool names_stage = false;  // a string that must name a stage of the scene ("" names none)
+    /// An integer member narrower than the scene's 64 bits: the values it can hold. A value outside
+    /// would wrap around when stored (nx = 4294967307 would build 11 columns).
+    std::optional<std::pair<std::int64_t, std::int64_t>> integer_range;
+    std::vector<std::string> choices;  // allowed strings
+    bool names_stage = false;          // a string that must name a stage of the scene ("" names none)
 };
 
 /// A rule between several keys, checked after every key is individually valid.
@@ -162,6 +166,8 @@ public:
         info.doc = std::move(doc);
         info.type = traits::type;
         info.default_value = stored(P{}.*member);
+        if constexpr (traits::type == ValueType::integer && !std::is_same_v<T, stored>)
+            info.integer_range = {std::numeric_limits<T>::min(), std::numeric_limits<T>::max()};
         infos_.push_back(std::move(info));
         setters_.push_back([member](P& p, const ParamValue& v) { p.*member = static_cast<T>(std::get<stored>(v)); });
         getters_.push_back([member](const P& p) -> ParamValue { return stored(p.*member); });
