@@ -5,12 +5,28 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/output/output_file_name.hpp"
+#include "frictionlab/output/table_writer.hpp"
 
 namespace frictionlab {
 
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+std::string interface_file(const ContactArea::Params& p) { return p.prefix + ".csv"; }
+std::string block_file(const ContactArea::Params& p, Index block) {
+    return fmt::format("{}_block_{}.csv", p.prefix, block);
+}
+
+std::vector<OutputName> outputs(const ContactArea::Params& p) {
+    auto out = table_outputs("prefix", interface_file(p), p.format);
+    for (double block : p.blocks)
+        if (block >= 0 && block < 1e15 && block == std::floor(block))  // others are refused by the blocks rule
+            for (auto& o : table_outputs("prefix", block_file(p, static_cast<Index>(block)), p.format))
+                out.push_back(std::move(o));
+    return out;
+}
 
 const std::vector<std::string> block_columns{"time",
                                              "step",
@@ -70,6 +86,7 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
             return "prefix must be a plain, non-empty file name";
         return "";
     });
+    add_outputs(s, outputs);
     return s;
 }
 
@@ -109,15 +126,15 @@ void ContactArea::begin(const RunView& view) {
         b.node = interface_[i];
         if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
         if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
-        b.table = open_table(view.output_directory / fmt::format("{}_block_{}.csv", params_.prefix, i), block_columns,
-                             view.info, params_.format, view.resuming);
+        b.table = open_table(view.output_directory / block_file(params_, i), block_columns, view.info, params_.format,
+                             view.resuming);
         blocks_.push_back(std::move(b));
     }
     std::vector<std::string> columns{"time",   "step",    "stage",      "junctions",
                                      "pinned", "sliding", "dislocated", "pinned_fraction"};
     if (junction_area_) columns.push_back("contact_area");
-    interface_table_ = open_table(view.output_directory / (params_.prefix + ".csv"), columns, view.info, params_.format,
-                                  view.resuming);
+    interface_table_ =
+        open_table(view.output_directory / interface_file(params_), columns, view.info, params_.format, view.resuming);
     row_.reserve(block_columns.size());
 }
 

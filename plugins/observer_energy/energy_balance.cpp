@@ -4,9 +4,16 @@
 
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/output/output_file_name.hpp"
+#include "frictionlab/output/table_writer.hpp"
 #include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
+
+namespace {
+std::vector<OutputName> outputs(const EnergyBalance::Params& p) {
+    return table_outputs("file", p.file, TableFormat::csv);
+}
+}  // namespace
 
 ParamSpec<EnergyBalance::Params> EnergyBalance::spec() {
     ParamSpec<Params> s(
@@ -14,7 +21,7 @@ ParamSpec<EnergyBalance::Params> EnergyBalance::spec() {
         "loaders' input, damping and friction dissipation, and the residual of the work-energy "
         "theorem (switches the run's work accounting on).");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
-    s.rule("file", [](const Params& p) { return output_file_name_problem(p.file); });
+    add_outputs(s, outputs);
     return s;
 }
 

@@ -5,8 +5,27 @@
 #include <fmt/format.h>
 
 #include "frictionlab/model/junction_counts.hpp"
+#include "frictionlab/output/output_file_name.hpp"
 
 namespace frictionlab {
+
+namespace {
+// Its tables; the last four only where the scene publishes what they show.
+constexpr const char* velocity_file = "interface_velocity.csv";
+constexpr const char* slip_file = "interface_slip.csv";
+constexpr const char* pinned_fraction_file = "interface_pinned_fraction.csv";
+constexpr const char* normal_force_file = "interface_normal_force.csv";
+constexpr const char* friction_force_file = "interface_friction_force.csv";
+constexpr const char* shear_ratio_file = "interface_shear_ratio.csv";
+
+std::vector<OutputName> outputs(const InterfaceHistory::Params& p) {
+    std::vector<OutputName> out;
+    for (const char* file :
+         {velocity_file, slip_file, pinned_fraction_file, normal_force_file, friction_force_file, shear_ratio_file})
+        for (auto& o : table_outputs("", file, p.format)) out.push_back(std::move(o));
+    return out;
+}
+}  // namespace
 
 ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
     ParamSpec<Params> s(
@@ -14,6 +33,7 @@ ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
         "ratio of every interface block, and its normal and friction forces, one row per observation.");
     s.add("node_set", &Params::node_set, "Node set to follow, ordered along x.");
     add_table_format_param(s, &Params::format);
+    add_outputs(s, outputs);
     return s;
 }
 
@@ -29,24 +49,22 @@ void InterfaceHistory::begin(const RunView& view) {
         tables_.push_back({open_table(view.output_directory / file, columns, view.info, params_.format, view.resuming),
                            std::move(value)});
     };
-    add("interface_velocity.csv", [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
-    add("interface_slip.csv",
-        [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0(nodes_[b]); });
+    add(velocity_file, [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
+    add(slip_file, [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0(nodes_[b]); });
     // Published fields are over the interface node set, indexed like it.
     const Quantities& q = view.quantities;
     const auto blocks = static_cast<Index>(nodes_.size());
     if (const auto counts = JunctionCounts::find(q, blocks); counts && params_.node_set == "interface")
-        add("interface_pinned_fraction.csv",
-            [counts = *counts](const RunView&, Index b) { return counts.pinned_fraction(b); });
+        add(pinned_fraction_file, [counts = *counts](const RunView&, Index b) { return counts.pinned_fraction(b); });
     const auto* friction = q.find_field("friction_force");
     const auto* normal = q.find_field("normal_force");
     // Forces per block, e.g. the settled profile an accuracy study compares (frictionlab study).
     for (const auto* field : {normal, friction})
         if (field && field->node_set == params_.node_set)
-            add(field == normal ? "interface_normal_force.csv" : "interface_friction_force.csv",
+            add(field == normal ? normal_force_file : friction_force_file,
                 [field](const RunView&, Index b) { return field->values(b); });
     if (friction && normal && params_.node_set == friction->node_set)
-        add("interface_shear_ratio.csv", [friction, normal](const RunView&, Index b) {
+        add(shear_ratio_file, [friction, normal](const RunView&, Index b) {
             return normal->values(b) > 0 ? friction->values(b) / normal->values(b)
                                          : std::numeric_limits<double>::quiet_NaN();
         });

@@ -3,15 +3,22 @@
 #include <limits>
 
 #include "frictionlab/output/output_file_name.hpp"
+#include "frictionlab/output/table_writer.hpp"
 
 namespace frictionlab {
+
+namespace {
+std::vector<OutputName> outputs(const LoadingCurve::Params& p) {
+    return table_outputs("file", p.file, TableFormat::csv);
+}
+}  // namespace
 
 ParamSpec<LoadingCurve::Params> LoadingCurve::spec() {
     ParamSpec<Params> s(
         "Loading curve (Li et al. 2020, Fig. 6): driving force F_S, F_S/F_N, total friction and "
         "normal force, driving-point displacement against time, as CSV.");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
-    s.rule("file", [](const Params& p) { return output_file_name_problem(p.file); });
+    add_outputs(s, outputs);
     return s;
 }
 

@@ -28,6 +28,15 @@ const std::vector<std::string> front_columns{"event", "block", "x", "distance", 
 
 }  // namespace
 
+namespace {
+std::vector<OutputName> outputs(const Precursors::Params& p) {
+    auto out = table_outputs("events_file", p.events_file, p.format);
+    for (auto& o : table_outputs("fronts_file", p.fronts_file, p.format)) out.push_back(std::move(o));
+    out.push_back({"summary_file", p.summary_file});
+    return out;
+}
+}  // namespace
+
 ParamSpec<Precursors::Params> Precursors::spec() {
     ParamSpec<Params> s(
         "Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
@@ -71,9 +80,7 @@ ParamSpec<Precursors::Params> Precursors::spec() {
           "CSV file of the fronts: per event and block, when the block first ruptured.");
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
     add_table_format_param(s, &Params::format);
-    s.rule("events_file", [](const Params& p) { return output_file_name_problem(p.events_file); });
-    s.rule("fronts_file", [](const Params& p) { return output_file_name_problem(p.fronts_file); });
-    s.rule("summary_file", [](const Params& p) { return output_file_name_problem(p.summary_file); });
+    add_outputs(s, outputs);
     return s;
 }
 

@@ -23,6 +23,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/output/output_file_name.hpp"
 #include "frictionlab/output/provenance.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/model/junction_counts.hpp"
@@ -43,6 +44,11 @@ std::string prefix_problem(const VtkSeries::Params& p) {
     if (p.prefix.find_first_of("/\\<>&\"'") != std::string::npos)
         return "prefix must be a plain file name (no / \\ < > & or quotes)";
     return "";
+}
+
+// The folder of the .vtu files, then the collection.
+std::vector<OutputName> outputs(const VtkSeries::Params& p) {
+    return {{"prefix", p.prefix}, {"prefix", p.prefix + ".pvd"}};
 }
 
 template <class Array>
@@ -109,6 +115,7 @@ ParamSpec<VtkSeries::Params> VtkSeries::spec() {
              "Points at the reference positions, with `displacement` for ParaView's Warp By Vector, or at the "
              "deformed positions (then do not warp: the displacement would count twice).");
     s.rule("prefix", prefix_problem);
+    add_outputs(s, outputs);
     return s;
 }
 

@@ -81,15 +81,40 @@ TEST_F(HostileInput, ObserversNamingNoStageAreRefused) {
 TEST_F(HostileInput, ObserverFilesStayInTheOutputDirectoryAndNeverCollide) {
     for (const char* file : {"../x.csv", "/tmp/x.csv", "run.yaml"})
         expect_refused(tiny() + " --set observers[0].file=" + file, "observers[0].file:");
-    // Two observers on one file: the second is refused before the first step, naming the file.
-    const auto r = frictionlab("run -q " + every_observer() +
-                                   " -o out --set stages[1].duration=1e-4"
-                                   " --set observers[4].file=loading_curve.csv",
-                               dir_);
-    EXPECT_EQ(r.code, 2) << r.output;
-    EXPECT_NE(r.output.find("loading_curve.csv' is written by another observer of this run"), std::string::npos)
-        << r.output;
-    EXPECT_GE(whole_rows(dir_ / "out" / "loading_curve.csv"), 0);
+    // Two observers on one file: the second is refused where it is named, before any output.
+    expect_refused(every_observer() + " --set observers[4].file=loading_curve.csv",
+                   "observers[4].file: 'loading_curve.csv' is written by observers[0] (its file) already");
+}
+
+TEST_F(HostileInput, TheRunsOwnFilesAreNoObserversToWrite) {
+    // With checkpoints on, checkpoint.bin would replace the loading curve; the marker and a
+    // temporary would be taken for the run's own and left out of a resume.
+    for (const char* file : {"checkpoint.bin", "checkpoint.previous.bin", "checkpoint.next.bin.tmp", "run.yaml.tmp",
+                             ".frictionlab-output", "curve.csv.tmp"})
+        expect_refused(tiny() + " --set observers[0].file=" + file + " --set 'checkpoint={every: 1.0e-4}'",
+                       std::string("observers[0].file: '") + file + "' is a name of the run's own files");
+}
+
+TEST_F(HostileInput, EveryObserversFilesAndFoldersAreInTheCollisionCheck) {
+    // vtk_series writes lattice.pvd and the folder lattice/: both are taken.
+    expect_refused(every_observer() + " --set observers[0].file=lattice.pvd",
+                   "every_observer.yaml:39:5: error: observers[5].prefix: 'lattice.pvd' is written by observers[0] "
+                   "(its file) already");
+    expect_refused(every_observer() + " --set observers[4].file=lattice",
+                   "observers[5].prefix: 'lattice' is written by observers[4] (its file) already");
+    // A table's provenance sidecar, and tables named by a prefix.
+    expect_refused(every_observer() + " --set observers[4].file=loading_curve.csv.meta.yaml",
+                   "observers[4].file: 'loading_curve.csv.meta.yaml' is written by observers[0] (its file) already");
+    expect_refused(every_observer() + " --set observers[2].prefix=interface_velocity",
+                   "observers[3]: 'interface_velocity.csv' is written by observers[2] (its prefix) already");
+}
+
+TEST_F(HostileInput, NoPrefixLeadsOutOfTheOutputDirectory) {
+    // ".." would put the snapshots into the parent of the output directory.
+    for (const char* prefix : {"..", "."})
+        expect_refused(every_observer() + " --set observers[5].prefix=" + prefix,
+                       std::string("observers[5].prefix: must name a file, not '") + prefix + "'");
+    expect_refused(every_observer() + " --set observers[2].prefix=../x", "observers[2].prefix:");
 }
 
 TEST_F(HostileInput, IntegersBeyondTheirTypeAreRefusedWithItsRange) {

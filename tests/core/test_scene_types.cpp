@@ -163,6 +163,25 @@ public:
     void observe(const RunView&) override {}
 };
 
+/// Writes a folder <prefix>/ and a collection <prefix>.pvd, declared for the scene's name check.
+class FakeSeries final : public Observer {
+public:
+    struct Params {
+        std::string prefix = "snapshots";
+    };
+    static constexpr std::string_view type = "fake_series";
+    static ParamSpec<Params> spec() {
+        ParamSpec<Params> s("Writes snapshots.");
+        s.add("prefix", &Params::prefix, "Name of the folder and the collection.");
+        s.writes([](const Params& p) {
+            return std::vector<OutputName>{{"prefix", p.prefix}, {"prefix", p.prefix + ".pvd"}};
+        });
+        return s;
+    }
+    FakeSeries(const Params&, const Context&) {}
+    void observe(const RunView&) override {}
+};
+
 }  // namespace
 
 void register_scene_test_types(Registry& registry) {
@@ -173,6 +192,7 @@ void register_scene_test_types(Registry& registry) {
     registry.add<FakeDriver>();
     registry.add<FakeRk4>();
     registry.add<FakeCurve>();
+    registry.add<FakeSeries>();
 }
 
 std::string good_scene_text() {

@@ -12,6 +12,7 @@
 #include "frictionlab/base/os_error.hpp"
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/output_directory.hpp"
+#include "frictionlab/output/output_file_name.hpp"
 
 namespace frictionlab {
 
@@ -56,9 +57,7 @@ std::string read_one(const fs::path& file, std::string& problem) {
 }
 
 bool is_run_record(const fs::path& relative) {
-    const std::string name = relative.filename().string();
-    return relative.parent_path().empty() &&
-           (name == "run.yaml" || name == output_marker_file || name.starts_with("checkpoint."));
+    return relative.parent_path().empty() && is_run_file(relative.filename().string());
 }
 
 }  // namespace

@@ -83,6 +83,7 @@ public:
         if (auto checkpoint = entry(top, "checkpoint")) scene.checkpoint = read_checkpoint(*checkpoint);
         check_loader_stages(loaders);
         check_stage_parameters(observers, scene.stages);
+        check_output_names(observers);
         for (const auto& l : loaders) scene.loaders.push_back(l.spec);
         for (const auto& o : observers) scene.observers.push_back(o.spec);
         return scene;
@@ -324,6 +325,35 @@ private:
                                 fmt::format("no stage named {}{}{}", quote(*name),
                                             defaulted ? " (the default; set it, or \"\" for none)" : "",
                                             suggestion(*name, stage_names_, "stages")));
+            }
+        }
+    }
+
+    /// Two outputs of one run with the same name would overwrite each other (a file and a folder of
+    /// one name cannot both be made): a name is refused where its second writer names it, once per
+    /// key (a prefix names several files).
+    void check_output_names(const std::vector<ComponentRead>& components) {
+        struct Writer {
+            std::string path, key;
+        };
+        std::map<std::string, Writer> written;
+        for (const auto& c : components) {
+            if (!c.info || !c.info->outputs || !c.section.valid) continue;
+            std::vector<std::string> refused_keys;
+            for (const auto& o : c.info->outputs(c.spec.values)) {
+                const Writer writer{c.spec.path, o.key};
+                const auto [first, inserted] = written.emplace(o.name, writer);
+                if (inserted || std::find(refused_keys.begin(), refused_keys.end(), o.key) != refused_keys.end())
+                    continue;
+                refused_keys.push_back(o.key);
+                const auto given = o.key.empty() ? c.section.given.end() : c.section.given.find(o.key);
+                const SourceLocation where =
+                    given != c.section.given.end() ? reporter_.where(given->second.value) : c.spec.where;
+                const Writer& other = first->second;
+                reporter_.error(
+                    where, o.key.empty() ? c.spec.path : join_path(c.spec.path, o.key),
+                    fmt::format("{} is written by {} already; give each output its own name", quote(o.name),
+                                other.key.empty() ? other.path : fmt::format("{} (its {})", other.path, other.key)));
             }
         }
     }

@@ -517,10 +517,24 @@ TEST(VtkSeriesCollection, TimesAreWrittenWithoutTheDriftOfASumOfSteps) {
 
 TEST(VtkSeriesSpec, PrefixMustBeAPlainFileName) {
     const auto rules = VtkSeries::spec().erased_rules();
-    ASSERT_EQ(rules.size(), 1u);
+    ASSERT_EQ(rules.size(), 2u);  // its characters, then the names it makes
     EXPECT_EQ(rules[0].check({{"prefix", std::string("lattice")}}), "");
     EXPECT_NE(rules[0].check({{"prefix", std::string("out/lattice")}}), "");
     EXPECT_NE(rules[0].check({{"prefix", std::string("")}}), "");
+    EXPECT_EQ(rules[1].key, "prefix");
+    EXPECT_EQ(rules[1].check({{"prefix", std::string("lattice")}}), "");
+    // The folder would be the output directory's parent; checkpoint.pvd is a name of the run's own.
+    EXPECT_EQ(rules[1].check({{"prefix", std::string("..")}}), "must name a file, not '..'");
+    EXPECT_NE(rules[1].check({{"prefix", std::string("checkpoint")}}).find("'checkpoint.pvd' is a name of the run's"),
+              std::string::npos);
+}
+
+TEST(VtkSeriesSpec, DeclaresItsFolderAndCollection) {
+    const auto outputs = VtkSeries::spec().erased_outputs()({{"prefix", std::string("lattice")}});
+    ASSERT_EQ(outputs.size(), 2u);
+    EXPECT_EQ(outputs[0].name, "lattice");
+    EXPECT_EQ(outputs[1].name, "lattice.pvd");
+    for (const auto& o : outputs) EXPECT_EQ(o.key, "prefix");
 }
 
 TEST(VtkSeriesSpec, ItsDescriptionNamesTheCellArraysWithTheirUnit) {

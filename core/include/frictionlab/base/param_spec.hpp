@@ -55,6 +55,15 @@ struct ParamInfo {
     bool names_stage = false;          // a string that must name a stage of the scene ("" names none)
 };
 
+/// A file or folder a component writes at the top of the run's output directory, and the key whose
+/// value names it ("" for a fixed name).
+struct OutputName {
+    std::string key;
+    std::string name;
+};
+/// A type's outputs for given values (ParamSpec::writes), type-erased for the registry.
+using OutputNames = std::function<std::vector<OutputName>(const ParamValues&)>;
+
 /// A rule between several keys, checked after every key is individually valid.
 struct ParamRule {
     std::string key;                                       // the key an error is reported at
@@ -209,6 +218,13 @@ public:
         return *this;
     }
 
+    /// Declares the files and folders the type writes in the run's output directory, from its
+    /// Params, so that the scene check refuses two outputs of one run with the same name.
+    ParamSpec& writes(std::function<std::vector<OutputName>(const P&)> outputs) {
+        outputs_ = std::move(outputs);
+        return *this;
+    }
+
     const std::string& summary() const { return summary_; }
     const std::vector<ParamInfo>& params() const { return infos_; }
 
@@ -251,6 +267,12 @@ public:
         return out;
     }
 
+    /// The outputs writes() declared, type-erased for the registry; empty if none were.
+    OutputNames erased_outputs() const {
+        if (!outputs_) return {};
+        return [this_copy = *this](const ParamValues& v) { return this_copy.outputs_(this_copy.build(v)); };
+    }
+
 private:
     struct TypedRule {
         std::string key;
@@ -261,6 +283,7 @@ private:
     std::vector<std::function<void(P&, const ParamValue&)>> setters_;
     std::vector<std::function<ParamValue(const P&)>> getters_;
     std::vector<TypedRule> rules_;
+    std::function<std::vector<OutputName>(const P&)> outputs_;
 };
 
 }  // namespace frictionlab

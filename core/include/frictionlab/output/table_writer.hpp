@@ -31,6 +31,10 @@ enum class TableFormat { csv, hdf5 };
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
                                         const RunInfo& info, TableFormat format, bool resume = false);
 
+/// The files of a table named `file` in `format`, for an observer's declared outputs: NAME and its
+/// provenance sidecar in CSV, NAME.h5 in HDF5. `key` is the key that names the table.
+std::vector<OutputName> table_outputs(const std::string& key, const std::string& file, TableFormat format);
+
 /// Declares an observer's `format` parameter (csv or hdf5), the same for every observer with tables.
 template <class P>
 void add_table_format_param(ParamSpec<P>& spec, TableFormat P::*member) {

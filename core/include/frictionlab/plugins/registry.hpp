@@ -24,6 +24,7 @@ struct TypeInfo {
     std::string summary;  // one paragraph: the physics and its reference
     std::vector<ParamInfo> params;
     std::vector<ParamRule> rules;
+    OutputNames outputs;  // the files it writes, if it declared them (ParamSpec::writes)
     std::string library;  // the plugin file that provides it ("" for types added by code)
     std::function<std::unique_ptr<Component>(const ParamValues&, const Context&)> create;
 };
@@ -67,6 +68,7 @@ public:
         info.summary = spec.summary();
         info.params = spec.params();
         info.rules = spec.erased_rules();
+        info.outputs = spec.erased_outputs();
         info.create = [spec](const ParamValues& values, const Context& ctx) -> std::unique_ptr<Component> {
             return std::make_unique<T>(spec.build(values), ctx);
         };
