@@ -131,6 +131,15 @@ TEST_F(HostileInput, IntegersBeyondTheirTypeAreRefusedWithItsRange) {
                    "bulk.blocks: must be between -2147483648 and 2147483647");
 }
 
+TEST_F(HostileInput, AResumeReadsRunYamlOnlyIfItIsARegularFile) {
+    fs::create_directories(dir_ / "stopped");
+    ASSERT_EQ(::mkfifo((dir_ / "stopped" / "run.yaml").c_str(), 0600), 0);
+    const auto r = frictionlab("run --resume stopped", dir_);  // would block forever if opened
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("run.yaml': it is not a regular file (a device, FIFO or socket)"), std::string::npos)
+        << r.output;
+}
+
 TEST_F(HostileInput, CheckRefusesWhatRunWouldRefuseAtSetUp) {
     expect_refused(tiny() + " --set loaders[2].height=0.5", "driving_spring");
     expect_refused(tiny() + " --set loaders[0].node_set=bottomm", "bottomm");

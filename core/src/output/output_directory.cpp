@@ -43,13 +43,16 @@ std::string why_not_replaceable(const fs::path& dir, const std::vector<fs::path>
 
 }  // namespace
 
+BoundedRead read_run_record(const fs::path& dir) {
+    constexpr std::uintmax_t largest_run_record = 16 * 1024 * 1024;  // far above any (a few kB)
+    return read_bounded_file(dir / "run.yaml", largest_run_record, "a run record");
+}
+
 bool created_by_frictionlab(const fs::path& dir) {
     std::error_code ec;
     if (fs::is_regular_file(dir / output_marker_file, ec)) return true;
-    std::ifstream run_yaml(dir / "run.yaml");
-    std::string first;
-    std::getline(run_yaml, first);
-    return first == "framework: frictionlab";
+    const auto run_yaml = read_run_record(dir);
+    return run_yaml.text && run_yaml.text->starts_with("framework: frictionlab\n");
 }
 
 void prepare_output_directory(const fs::path& dir, bool overwrite, const std::vector<fs::path>& keep) {

@@ -1,12 +1,10 @@
 #include "frictionlab/scene/scene.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <iterator>
 
 #include <fmt/format.h>
 
+#include "frictionlab/base/bounded_file.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "scene/overrides.hpp"
 #include "scene/validator.hpp"
@@ -48,29 +46,9 @@ void reporting_failures(const std::string& file, Diagnostics& diagnostics, F&& f
 constexpr std::uintmax_t largest_scene_file = 4 * 1024 * 1024;
 
 std::optional<std::string> read_file(const std::filesystem::path& file, Diagnostics& diagnostics) {
-    std::error_code ec;
-    const auto fail = [&](const std::string& why) {
-        diagnostics.error({file.string(), 0, 0}, "", "cannot read the scene file: " + why);
-        return std::nullopt;
-    };
-    const auto status = std::filesystem::status(file, ec);
-    if (!std::filesystem::exists(status)) return fail("it does not exist");
-    if (std::filesystem::is_directory(status)) return fail("it is a folder");
-    // A device (/dev/zero) would be read without end, a FIFO would block until written to.
-    if (!std::filesystem::is_regular_file(status)) return fail("it is not a regular file (a device, FIFO or socket)");
-    const auto size = std::filesystem::file_size(file, ec);
-    if (!ec && size > largest_scene_file)
-        return fail(fmt::format("it is {} bytes; a scene file may have at most {} bytes", size, largest_scene_file));
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return fail(std::strerror(errno));
-    std::string text;
-    text.resize(largest_scene_file + 1);
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    if (in.bad()) return fail(std::strerror(errno));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    if (text.size() > largest_scene_file)  // grew while being read
-        return fail(fmt::format("it has more than {} bytes, the most a scene file may have", largest_scene_file));
-    return text;
+    auto read = read_bounded_file(file, largest_scene_file, "a scene file");
+    if (!read.text) diagnostics.error({file.string(), 0, 0}, "", "cannot read the scene file: " + read.problem);
+    return std::move(read.text);
 }
 
 std::vector<SceneOverride> from_command_line(const std::vector<std::string>& texts) {

@@ -467,9 +467,13 @@ void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::lo
 }
 
 std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
+    const auto file = dir / "run.yaml";
+    if (std::error_code ec; !std::filesystem::exists(std::filesystem::symlink_status(file, ec))) return std::nullopt;
+    const auto read = read_run_record(dir);
+    if (!read.text) throw InputError(fmt::format("cannot read '{}': {}", file.string(), read.problem));
     YAML::Node record;
     try {
-        record = YAML::LoadFile((dir / "run.yaml").string());
+        record = YAML::Load(*read.text);
     } catch (const YAML::Exception&) {
         return std::nullopt;
     }

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "frictionlab/base/bounded_file.hpp"
+
 namespace frictionlab {
 
 /// The file FrictionLab leaves in every output directory it creates; its presence (or a run.yaml
@@ -15,6 +17,10 @@ inline constexpr const char* output_marker_file = ".frictionlab-output";
 /// or device), and it holds neither the working directory nor any of `keep` (e.g. the scene file).
 void prepare_output_directory(const std::filesystem::path& dir, bool overwrite,
                               const std::vector<std::filesystem::path>& keep = {});
+
+/// The text of `dir`/run.yaml, read only if it is a regular file of a record's size: a FIFO or a
+/// device in its place would block or never end. Else why not ("it does not exist", ...).
+BoundedRead read_run_record(const std::filesystem::path& dir);
 
 /// True if `dir` holds FrictionLab's marker, or a run.yaml that FrictionLab wrote.
 bool created_by_frictionlab(const std::filesystem::path& dir);

@@ -72,7 +72,8 @@ struct RecordedRun {
     bool resumable() const { return status != "completed" && has_checkpoint; }
 };
 
-/// Reads `dir`/run.yaml; nothing if there is none or it is not FrictionLab's.
+/// Reads `dir`/run.yaml; nothing if there is none or it is not FrictionLab's. Something else in its
+/// place (a FIFO, a device, a huge file) is an InputError saying what, never read.
 std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir);
 
 /// Builds every component of a validated scene as `run` would (bulk, loaders, friction law,
