@@ -1,5 +1,6 @@
 #pragma once
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -41,6 +42,8 @@ public:
     };
     static constexpr std::string_view type = "chain_1d";
     static ParamSpec<Params> spec();
+    /// Why the chain is too long to build (with the memory it would take), or "".
+    static std::string too_large(const Params& p);
 
     Chain1d(const Params& p, const Context& ctx);
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/body_size.hpp"
 #include "lattice_bonds.hpp"
 
 namespace frictionlab {
@@ -40,13 +41,8 @@ ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
 
 std::string SpringLattice2d::too_large(const Params& p) {
     // Measured: a 4,000,001 x 3 lattice took 5.2 GB before its first step, ~430 bytes per node.
-    constexpr double bytes_per_node = 430, most_nodes = 4.0 * 1024 * 1024;
-    const double nodes = static_cast<double>(p.nx) * static_cast<double>(p.nz);
-    if (nodes <= most_nodes) return {};
-    return fmt::format(
-        "nx x nz = {:.0f} nodes would need about {:.3g} GB of memory before the first step; a "
-        "lattice may have at most {:.0f} nodes",
-        nodes, nodes * bytes_per_node / 1e9, most_nodes);
+    constexpr double bytes_per_node = 430;
+    return body_too_large(static_cast<double>(p.nx) * static_cast<double>(p.nz), bytes_per_node, "nx x nz", "lattice");
 }
 
 std::string SpringLattice2d::spacing_mismatch(const Params& p) {

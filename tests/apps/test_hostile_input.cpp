@@ -131,6 +131,11 @@ TEST_F(HostileInput, IntegersBeyondTheirTypeAreRefusedWithItsRange) {
                    "bulk.blocks: must be between -2147483648 and 2147483647");
 }
 
+TEST_F(HostileInput, AChainTooLongForMemoryIsRefusedWithItsEstimate) {
+    expect_refused(chain() + " --set bulk.blocks=100000000",
+                   "error: bulk.blocks: blocks = 100000000 nodes would need about");
+}
+
 TEST_F(HostileInput, AResumeReadsRunYamlOnlyIfItIsARegularFile) {
     fs::create_directories(dir_ / "stopped");
     ASSERT_EQ(::mkfifo((dir_ / "stopped" / "run.yaml").c_str(), 0600), 0);

@@ -71,6 +71,21 @@ TEST(Chain1d, DampingEffectsOnlyWhenSwitchedOn) {
     EXPECT_EQ(keys(0, 0), (std::vector<std::string>{"chain_springs"}));
 }
 
+// From the parameters alone, like the lattice: a chain whose memory exceeds what a body may take
+// before its first step is refused with the estimate (100,000,000 blocks ran out of memory).
+TEST(Chain1d, RefusesAChainTooLongForMemoryWithItsEstimate) {
+    Chain1d::Params p;
+    p.blocks = 4294168;
+    EXPECT_EQ(Chain1d::too_large(p), "");
+    p.blocks = 4294169;
+    EXPECT_EQ(
+        Chain1d::too_large(p),
+        "blocks = 4294169 nodes would need about 1.8 GB of memory before the first step; a chain may have at most "
+        "4294168 nodes");
+    p.blocks = 100000000;
+    EXPECT_NE(Chain1d::too_large(p).find("about 42 GB"), std::string::npos) << Chain1d::too_large(p);
+}
+
 TEST(Chain1d, RefusesAChainOfOneBlock) {
     const auto spec = Chain1d::spec();
     for (const auto& info : spec.params()) {
