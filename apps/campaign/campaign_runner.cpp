@@ -21,6 +21,7 @@
 
 #include "frictionlab/campaign_mpi.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/live_line.hpp"
 
 namespace frictionlab {
@@ -32,7 +33,7 @@ using Clock = std::chrono::steady_clock;
 
 /// The child's side: the run and its record, its log in `log_file`; never returns.
 [[noreturn]] void run_case_here(const CampaignCase& c, const fs::path& log_file, const Registry& registry,
-                                bool allow_unstable_step) {
+                                const CampaignOptions& campaign) {
     const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
         ::dup2(fd, STDOUT_FILENO);
@@ -47,12 +48,20 @@ using Clock = std::chrono::steady_clock;
     try {
         // The directory may hold an interrupted or failed attempt: FrictionLab's own, so replaceable;
         // one of this very scene stopped with a checkpoint goes on from it.
-        RunOptions options{true, allow_unstable_step, false};
+        RunOptions options{true, campaign.allow_unstable_step, false};
+        // The flag of the handlers the campaign installed, inherited with them: the campaign passes
+        // its stop signal on to this process, which then stops like `frictionlab run`.
+        options.stop_signal = campaign.stop_signal;
         const auto previous = read_recorded_run(c.scene.output_directory);
         options.resume = previous && previous->resumable() && previous->scene_hash == c.scene.hash;
         if (options.resume) log->info("resuming the interrupted case from its checkpoint");
         record.summary = run_scene(c.scene, registry, *log, options);
         record.status = "done";
+    } catch (const Interrupted& e) {
+        log->warn("run {}", e.what());
+        record.status = "interrupted";
+        record.reason = e.what();
+        code = InterruptSignals::exit_status(e.signal);
     } catch (const std::exception& e) {
         log->error("run failed: {}", e.what());
         record.status = "failed";
@@ -71,23 +80,39 @@ using Clock = std::chrono::steady_clock;
     std::_Exit(code);  // no atexit handlers: they belong to the parent (and MPI)
 }
 
-pid_t start_case(const CampaignCase& c, const fs::path& logs, const Registry& registry, bool allow_unstable_step) {
+pid_t start_case(const CampaignCase& c, const fs::path& logs, const Registry& registry,
+                 const CampaignOptions& options) {
     const pid_t parent = ::getpid();
     const pid_t child = ::fork();
     if (child < 0) throw RunError(fmt::format("cannot start case {}: {}", c.name, std::strerror(errno)));
     if (child == 0) {
-        // A case dies with its campaign (killed, interrupted): a re-run then runs it again.
+        // A case dies with its campaign (killed): a re-run then runs it again.
         ::prctl(PR_SET_PDEATHSIG, SIGKILL);
         if (::getppid() != parent) std::_Exit(exit_code::run_failure);
-        run_case_here(c, logs / (c.name + ".log"), registry, allow_unstable_step);
+        // A process group of its own: a terminal's Ctrl-C reaches the campaign alone, which passes
+        // it on once (a second one would stop the case at once, without its checkpoint).
+        ::setpgid(0, 0);
+        run_case_here(c, logs / (c.name + ".log"), registry, options);
     }
     return child;
 }
 
-int wait_for(pid_t child) {
+bool stopping(const CampaignOptions& options) { return options.stop_signal && options.stop_signal->load() != 0; }
+
+/// Waits for one case's process to end, passing a stop signal received meanwhile on to it.
+int wait_for(pid_t child, const CampaignOptions& options) {
     int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
-    return status;
+    bool passed_on = false;
+    for (;;) {
+        const pid_t ended = ::waitpid(child, &status, options.stop_signal ? WNOHANG : 0);
+        if (ended == child || (ended < 0 && errno != EINTR)) return status;
+        if (stopping(options) && !passed_on) {
+            ::kill(child, options.stop_signal->load());
+            passed_on = true;
+        } else if (ended == 0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    }
 }
 
 /// The record a finished case left, or one saying how its process ended if it left none (a crash,
@@ -164,7 +189,7 @@ void serve(const std::vector<CampaignCase>& cases, const fs::path& logs, const R
     mpi_work::Report report;
     for (int next = mpi_work::report_and_receive(report); next >= 0; next = mpi_work::report_and_receive(report)) {
         const auto& c = cases.at(static_cast<std::size_t>(next));
-        report = {next, wait_for(start_case(c, logs, registry, options.allow_unstable_step))};
+        report = {next, wait_for(start_case(c, logs, registry, options), options)};
     }
 }
 
@@ -203,7 +228,15 @@ std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, con
         progress.finished(cases[i], records[i]);
     };
     const std::size_t jobs = static_cast<std::size_t>(std::max(1, options.jobs));
+    bool passed_on = false;
     while (!queue.empty() || !running.empty() || busy_workers > 0 || idle_workers > 0) {
+        if (stopping(options) && !passed_on) {
+            // No case starts any more; each running one stops with a checkpoint, to go on from when
+            // the campaign runs again. Workers stop theirs (the launcher signals every rank).
+            queue.clear();
+            for (const auto& [child, i] : running) ::kill(child, options.stop_signal->load());
+            passed_on = true;
+        }
         // Idle workers first report (case -1) and then wait; hand them work or send them home.
         int worker = 0;
         mpi_work::Report report;
@@ -226,10 +259,10 @@ std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, con
         while (running.size() < jobs && !queue.empty()) {
             const std::size_t i = queue.front();
             queue.pop_front();
-            running.emplace(start_case(cases[i], logs, registry, options.allow_unstable_step), i);
+            running.emplace(start_case(cases[i], logs, registry, options), i);
             progress.started();
         }
-        if (mpi_size() == 1) {
+        if (mpi_size() == 1 && !options.stop_signal) {
             // Only local children: sleep in waitpid until one ends.
             if (running.empty()) continue;
             int status = 0;
@@ -241,7 +274,7 @@ std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, con
             }
             continue;
         }
-        // Local children and remote ranks: poll both.
+        // Local children and remote ranks, or a stop signal: poll them.
         int status = 0;
         const pid_t child = running.empty() ? 0 : ::waitpid(-1, &status, WNOHANG);
         if (child > 0) {
@@ -250,7 +283,7 @@ std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, con
                 running.erase(it);
             }
         } else {
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            std::this_thread::sleep_for(std::chrono::milliseconds(mpi_size() > 1 ? 2 : 20));
         }
     }
     progress.end();

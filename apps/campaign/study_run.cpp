@@ -11,6 +11,7 @@
 #include "frictionlab/case_outputs.hpp"
 #include "frictionlab/csv_cell.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/provenance.hpp"
 #include "frictionlab/output/output_directory.hpp"
@@ -120,7 +121,12 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
     CampaignOptions campaign;
     campaign.allow_unstable_step = options.allow_unstable_step;
     campaign.reuse_finished = false;
+    campaign.stop_signal = options.stop_signal;
     const auto records = run_campaign(runs, output, registry, log, campaign);
+    if (options.stop_signal && *options.stop_signal != 0)
+        throw Interrupted(fmt::format("interrupted by {}: the study's cases stopped; run it again to start afresh",
+                                      InterruptSignals::name(*options.stop_signal)),
+                          *options.stop_signal);
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const Scene& scene = scenes.at(k);
         StudyRow row;

@@ -264,9 +264,21 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
         log.info(
             "sweep {}: {} cases, {} at a time{}", file.filename().string(), cases.size(), campaign.jobs,
             fl::mpi_size() > 1 ? fmt::format(" on rank 0 and one on each of {} other ranks", fl::mpi_size() - 1) : "");
+    const fl::InterruptSignals signals;
+    campaign.stop_signal = &fl::InterruptSignals::received();
     const auto records = fl::run_campaign(cases, output, registry, log, campaign);
     if (!root) return fl::exit_code::ok;
     fl::write_sweep_tables(spec, cases, records, output);
+    if (const int signal = fl::InterruptSignals::received().load(); signal != 0) {
+        const auto count = [&](const char* status) {
+            return std::count_if(records.begin(), records.end(), [&](const auto& r) { return r.status == status; });
+        };
+        log.warn(
+            "sweep interrupted by {}: {} stopped, {} not started, {} done of {} cases; run the same sweep again to "
+            "go on (a stopped case resumes from its checkpoint)",
+            fl::InterruptSignals::name(signal), count("interrupted"), count("not run"), count("done"), records.size());
+        return fl::InterruptSignals::exit_status(signal);
+    }
     const auto failed = std::count_if(records.begin(), records.end(), [](const auto& r) { return r.status != "done"; });
     const auto reused = std::count_if(records.begin(), records.end(), [](const auto& r) { return r.reused; });
     log.info("sweep: {} cases, {} failed, {} finished earlier; tables in {}", records.size(), failed, reused,

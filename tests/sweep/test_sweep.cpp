@@ -1,7 +1,8 @@
 // `frictionlab sweep` as a user runs it: a tiny grid x seeds through the real command, its tables
 // read back against each case's own files and against a plain `frictionlab run` of one case; the
 // same outputs at -j 1, -j 2 and under mpirun; a killed sweep re-run completes only what is
-// missing; a failing case is recorded while the others finish.
+// missing; Ctrl-C stops its cases with a checkpoint to go on from; a failing case is recorded while
+// the others finish.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -224,6 +225,31 @@ void write_fine_and_unstable_sweep(const fs::path& file) {
     out << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
         << "cases:\n  - name: fine\n    set: [\"stages[1].duration=1.0e-3\"]\n"
         << "  - name: unstable\n    set: [\"integrator.dt=2.0e-5\"]\n";
+}
+
+TEST(Sweep, CtrlCStopsTheRunningCaseWithACheckpointAndTheSweepRunAgainGoesOn) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    frictionlab::testing::BackgroundCli sweep({"sweep", SWEEP_FILES "/resumable_sweep.yaml", "-o", "out", "-j", "1"},
+                                              dir);
+    const fs::path case_dir = dir / "out" / "cases" / "seed-3";
+    ASSERT_TRUE(frictionlab::testing::wait_until([&] { return fs::exists(case_dir / "checkpoint.bin"); }, 120))
+        << sweep.output();
+    sweep.signal(SIGINT);
+    ASSERT_EQ(sweep.wait(60), 130) << sweep.output();
+    EXPECT_NE(sweep.output().find("sweep interrupted by SIGINT: 1 stopped, 0 not started, 0 done of 1 cases"),
+              std::string::npos)
+        << sweep.output();
+    // The case stopped as `frictionlab run` does: after a whole step, with a checkpoint, recorded.
+    const std::string log = read_text(dir / "out" / "logs" / "seed-3.log");
+    EXPECT_NE(log.find("SIGINT received: finishing the current step"), std::string::npos) << log;
+    EXPECT_NE(read_text(case_dir / "run.yaml").find("status: interrupted"), std::string::npos);
+    EXPECT_EQ(sweep_rows(dir / "out" / "sweep.csv").at("seed-3").at("status"), "interrupted");
+
+    const auto rerun = frictionlab("sweep " SWEEP_FILES "/resumable_sweep.yaml -o out -j 1", dir);
+    ASSERT_EQ(rerun.code, 0) << rerun.output;
+    EXPECT_NE(read_text(dir / "out" / "logs" / "seed-3.log").find("resuming the interrupted case from its checkpoint"),
+              std::string::npos);
+    EXPECT_EQ(sweep_rows(dir / "out" / "sweep.csv").at("seed-3").at("status"), "done");
 }
 
 TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {

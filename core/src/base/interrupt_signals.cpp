@@ -22,11 +22,9 @@ void say(const char* text) {
     (void)ignored;
 }
 
-const char* name_of(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
-
 [[noreturn]] void stop_now(int signal) {
     say("\nfrictionlab: ");
-    say(name_of(signal));
+    say(InterruptSignals::name(signal));
     say(" again: stopped at once; every file written so far is whole, run.yaml still says running\n");
     ::_exit(InterruptSignals::exit_status(signal));
 }
@@ -35,7 +33,7 @@ extern "C" void on_interrupt(int signal) {
     int none = 0;
     if (first_signal.compare_exchange_strong(none, signal)) {
         say("\nfrictionlab: ");
-        say(name_of(signal));
+        say(InterruptSignals::name(signal));
         say(" received: finishing the current step and closing the outputs (send it again to stop at once)\n");
         return;
     }
@@ -65,6 +63,10 @@ InterruptSignals::~InterruptSignals() {
 }
 
 const std::atomic<int>& InterruptSignals::received() { return first_signal; }
+
+const char* InterruptSignals::name(int signal) {
+    return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+}
 
 WholeWrite::WholeWrite() noexcept { writes_in_progress.fetch_add(1); }
 

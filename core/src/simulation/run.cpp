@@ -21,6 +21,7 @@
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/checkpoint_file.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/live_line.hpp"
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/output_directory.hpp"
@@ -314,10 +315,7 @@ private:
         if (signal == 0) return;
         const System& sys = sim_.system();
         throw Interrupted(fmt::format("interrupted by {} after step {} at t = {:.9g} s, in stage '{}'",
-                                      signal == SIGTERM  ? "SIGTERM"
-                                      : signal == SIGINT ? "SIGINT"
-                                                         : "a signal",
-                                      sys.step_index(), sys.time(), stage.name),
+                                      InterruptSignals::name(signal), sys.step_index(), sys.time(), stage.name),
                           signal);
     }
 

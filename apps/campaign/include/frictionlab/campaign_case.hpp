@@ -21,8 +21,8 @@ struct CampaignCase {
 };
 
 struct CaseRecord {
-    std::string status = "not run";  // "done", "failed" or "not run"
-    std::string reason;              // why it failed
+    std::string status = "not run";  // "done", "failed", "interrupted" or "not run"
+    std::string reason;              // why it failed or stopped
     std::string scene_hash;
     RunSummary summary;
     bool reused = false;  // finished by an earlier run of the campaign, not run again

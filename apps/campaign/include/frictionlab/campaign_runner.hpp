@@ -5,6 +5,7 @@
 // run at once on this machine; under MPI (campaign_mpi.hpp) rank 0 also hands the cases out one at a
 // time to the other ranks as they become free (dynamic load balancing: cases differ in cost). A case
 // whose directory records it done with the same scene hash is not run again.
+#include <atomic>
 #include <filesystem>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct CampaignOptions {
     bool allow_unstable_step = false;  // as `frictionlab run --allow-unstable-step`
     bool live_progress = false;        // one live progress line on the terminal; else a log line per case
     bool reuse_finished = true;        // skip cases recorded done with the same scene hash
+    /// Set by the command's InterruptSignals: once a signal is received no case starts any more,
+    /// and each running case is passed the signal, stops like `frictionlab run` (with a checkpoint)
+    /// and is recorded "interrupted", to go on from its checkpoint when the campaign runs again.
+    const std::atomic<int>* stop_signal = nullptr;
 };
 
 /// Runs every case (cases/<name> below `output`, each run's log in logs/<name>.log) and returns

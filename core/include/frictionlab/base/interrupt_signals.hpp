@@ -25,6 +25,8 @@ public:
     /// Exit status of a command stopped by `signal`, as a shell reports it: 128 + its number
     /// (130 for SIGINT, 143 for SIGTERM).
     static int exit_status(int signal) { return 128 + signal; }
+    /// "SIGINT", "SIGTERM", or "a signal".
+    static const char* name(int signal);
 };
 
 /// While one is alive, a second signal waits for the write in progress to end before it stops the
