@@ -240,4 +240,17 @@ TEST_F(HostileInput, AFullDiskFailsTheRunCleanlyNamingEnospc) {
     expect_clean_failure(dir_ / "copied", said, "No space left on device (ENOSPC)");
 }
 
+TEST_F(HostileInput, MemoryRunningOutWhileAComponentIsBuiltNamesIt) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit leaves";
+#endif
+    // 3 million nodes, below the lattice's size limit, in 400 MB of address space: its arrays do not fit.
+    const int code = shell(
+        "ulimit -v 400000 && \"$CLI\" run -q " + tiny() + " --set bulk.nx=1000001 --set bulk.length=2500 -o out", dir_);
+    const std::string said = read_text(dir_ / "shell.log");
+    EXPECT_EQ(code, 1) << said;
+    EXPECT_NE(said.find("out of memory while building bulk (spring_lattice_2d, " + tiny() + ":6:3)"), std::string::npos)
+        << said;
+}
+
 }  // namespace

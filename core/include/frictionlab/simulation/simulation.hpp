@@ -4,8 +4,10 @@
 // nothing of outputs; run_scene() drives it with observers, and tests and benchmarks drive it
 // directly.
 #include <memory>
+#include <new>
 #include <vector>
 
+#include <fmt/format.h>
 #include <spdlog/logger.h>
 
 #include "frictionlab/base/diagnostics.hpp"
@@ -22,13 +24,17 @@ class Registry;
 
 /// Runs `make`, which builds the scene component `c`, and reports a refusal it throws (InputError)
 /// at the component's place in the scene: "scene.yaml:16:5: error: loaders[2]: ...". Components
-/// can only judge some set-ups once built (a driving point between node rows, say).
+/// can only judge some set-ups once built (a driving point between node rows, say). Memory running
+/// out while it is built names the component too (a RunError): its sizes are the ones to reduce.
 template <class Make>
 auto located_in_scene(const ComponentSpec& c, Make&& make) -> decltype(make()) {
     try {
         return make();
     } catch (const InputError& e) {
         throw InputError(Diagnostic{c.where, c.path, e.what()}.format());
+    } catch (const std::bad_alloc&) {
+        throw RunError(fmt::format("out of memory while building {} ({}, {}:{}:{}); make the sizes it is given smaller",
+                                   c.path, c.type, c.where.file, c.where.line, c.where.column));
     }
 }
 
