@@ -1,4 +1,5 @@
 // The frictionlab command as a user meets it: exit codes, messages, outputs and their metadata.
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "cli.hpp"
+#include "frictionlab/base/fingerprint.hpp"
 #include "frictionlab/output/output_directory.hpp"
 #include <yaml-cpp/yaml.h>
 
@@ -89,6 +91,28 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     EXPECT_EQ(again.code, 2);
     EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
     EXPECT_EQ(frictionlab("run -q --overwrite " + scene("tiny_lattice.yaml"), dir_).code, 0);
+}
+
+// Which files ran: each plugin of the scene's components by its full path and the checksum of the
+// file as it was loaded, so that a result can be traced to the exact build.
+TEST_F(Cli, RunYamlRecordsEachPluginsFullPathAndChecksum) {
+    const auto r = frictionlab("run -q -o out " + scene("tiny_lattice.yaml"), dir_);
+    ASSERT_EQ(r.code, 0) << r.output;
+    const YAML::Node plugins = YAML::LoadFile((dir_ / "out" / "run.yaml").string())["plugins"];
+    ASSERT_TRUE(plugins.IsSequence());
+    std::vector<std::string> names;
+    for (const auto& p : plugins) {
+        const auto name = p["name"].as<std::string>();
+        names.push_back(name);
+        const fs::path file = p["file"].as<std::string>();
+        EXPECT_EQ(file, fs::path(FRICTIONLAB_PLUGIN_DIR).lexically_normal() / (name + ".so")) << name;
+        EXPECT_EQ(p["fnv1a_64"].as<std::string>(), frictionlab::file_fingerprint(file)) << name;
+        EXPECT_EQ(p["fnv1a_64"].as<std::string>().size(), 16u) << name;
+        EXPECT_FALSE(p["version"].as<std::string>().empty()) << name;
+    }
+    for (const char* expected : {"bulk_spring_lattice_2d", "loader_rigid_base_contact", "loader_normal_load",
+                                 "loader_driving_spring", "integrator_rk4", "observer_loading_curve"})
+        EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
 }
 
 TEST_F(Cli, OverwriteReplacesOnlyWhatFrictionLabCreated) {

@@ -1,8 +1,10 @@
 // Runs that survive interruption: killed (kill -9) at random moments, or stopped by SIGINT and
 // SIGTERM, a run resumed with `run --resume` ends with every output byte-identical to that of a run
-// never interrupted. A damaged checkpoint falls back to the previous one; a changed scene is refused.
+// never interrupted. A damaged checkpoint falls back to the previous one; a changed scene, another
+// FrictionLab and other plugin files are refused.
 #include <signal.h>
 
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "cli.hpp"
+#include "frictionlab/base/fingerprint.hpp"
+#include "frictionlab/base/version.hpp"
 
 namespace {
 
@@ -215,6 +219,57 @@ TEST_F(Resume, IsRefusedForAChangedSceneAndForAFinishedRun) {
     const auto again = resume();
     EXPECT_EQ(again.code, 2) << again.output;
     EXPECT_NE(again.output.find("is complete; nothing to resume"), std::string::npos) << again.output;
+}
+
+/// `file` with its payload's version text replaced by one of the same length that differs, and the
+/// header's length and fingerprint made to match: an intact checkpoint of another FrictionLab.
+void rewrite_as_another_version(const fs::path& file) {
+    const std::string text = read_text(file);
+    std::string payload = text.substr(text.find('\n') + 1);
+    const std::string version = frictionlab::framework_version();
+    const auto at = payload.find(version);
+    ASSERT_LT(at, 64u) << "the version is among the first fields";
+    for (std::size_t i = at; i < at + version.size(); ++i)
+        if (std::isdigit(static_cast<unsigned char>(payload[i]))) payload[i] = payload[i] == '9' ? '0' : payload[i] + 1;
+    std::ofstream(file, std::ios::binary)
+        << "frictionlab-checkpoint 1 " << payload.size() << " " << frictionlab::fnv1a_hex(payload) << "\n"
+        << payload;
+}
+
+TEST_F(Resume, IsRefusedFromAnotherFrictionLabVersionAndWithOtherPluginFiles) {
+    auto cli = start_and_wait(std::chrono::milliseconds(0));
+    cli->signal(SIGINT);
+    ASSERT_EQ(cli->wait(60), 130) << cli->output();
+    const fs::path checkpoint = dir_ / "out" / "checkpoint.bin";
+    const std::string written = read_text(checkpoint);
+
+    rewrite_as_another_version(checkpoint);
+    const auto version = resume();
+    EXPECT_EQ(version.code, 1) << version.output;
+    EXPECT_NE(version.output.find("the checkpoint is of another run: it was written by FrictionLab "),
+              std::string::npos)
+        << version.output;
+    EXPECT_NE(version.output.find(", this is " + frictionlab::framework_version()), std::string::npos)
+        << version.output;
+    std::ofstream(checkpoint, std::ios::binary) << written;
+
+    // Another build of a plugin the run uses, searched first: the same name, other bytes.
+    fs::create_directories(dir_ / "rebuilt");
+    const fs::path rebuilt = dir_ / "rebuilt" / "observer_loading_curve.so";
+    fs::copy_file(fs::path(FRICTIONLAB_PLUGIN_DIR) / "observer_loading_curve.so", rebuilt);
+    std::ofstream(rebuilt, std::ios::binary | std::ios::app) << '\0';
+    const auto plugins = frictionlab("run --resume out --plugin-path rebuilt", dir_);
+    EXPECT_EQ(plugins.code, 1) << plugins.output;
+    EXPECT_NE(plugins.output.find("the checkpoint is of another run: its plugins were ["), std::string::npos)
+        << plugins.output;
+    EXPECT_NE(plugins.output.find("observer_loading_curve " + frictionlab::file_fingerprint(rebuilt)),
+              std::string::npos)
+        << plugins.output;
+
+    // Refused before anything was touched: it resumes as it would have.
+    const auto resumed = resume();
+    ASSERT_EQ(resumed.code, 0) << resumed.output;
+    expect_identical_to_reference();
 }
 
 TEST_F(Resume, ASceneThatAsksForCheckpointsNamesTheComponentsThatCannotGiveThem) {
