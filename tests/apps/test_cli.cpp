@@ -98,17 +98,20 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
 TEST_F(Cli, RunYamlRecordsEachPluginsFullPathAndChecksum) {
     const auto r = frictionlab("run -q -o out " + scene("tiny_lattice.yaml"), dir_);
     ASSERT_EQ(r.code, 0) << r.output;
-    const YAML::Node plugins = YAML::LoadFile((dir_ / "out" / "run.yaml").string())["plugins"];
-    ASSERT_TRUE(plugins.IsSequence());
+    const YAML::Node record = YAML::LoadFile((dir_ / "out" / "run.yaml").string());
+    const YAML::Node files = record["plugin_files"];
+    ASSERT_TRUE(files.IsSequence());
+    // `plugins` is the provenance every output records ("name version, ..."); `plugin_files` where each came from.
+    const auto plugins = record["plugins"].as<std::string>();
     std::vector<std::string> names;
-    for (const auto& p : plugins) {
+    for (const auto& p : files) {
         const auto name = p["name"].as<std::string>();
         names.push_back(name);
         const fs::path file = p["file"].as<std::string>();
         EXPECT_EQ(file, fs::path(FRICTIONLAB_PLUGIN_DIR).lexically_normal() / (name + ".so")) << name;
         EXPECT_EQ(p["fnv1a_64"].as<std::string>(), frictionlab::file_fingerprint(file)) << name;
         EXPECT_EQ(p["fnv1a_64"].as<std::string>().size(), 16u) << name;
-        EXPECT_FALSE(p["version"].as<std::string>().empty()) << name;
+        EXPECT_NE(plugins.find(name + " "), std::string::npos) << name << " has its version in " << plugins;
     }
     for (const char* expected : {"bulk_spring_lattice_2d", "loader_rigid_base_contact", "loader_normal_load",
                                  "loader_driving_spring", "integrator_rk4", "observer_loading_curve"})
