@@ -169,7 +169,10 @@ std::vector<bool> work_accounting_seen(bool with_energy_observer) {
     else
         s.scene.observers = {spec};
     s.scene.output_directory = testing::work_directory() / "out";
-    run_scene(s.scene, s.registry, s.log, RunOptions{true, true, false});
+    RunOptions options;
+    options.overwrite = true;
+    options.allow_unstable_step = true;
+    run_scene(s.scene, s.registry, s.log, options);
     return seen;
 }
 

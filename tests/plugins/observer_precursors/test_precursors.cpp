@@ -92,7 +92,7 @@ protected:
         info_.scene_file = "scene.yaml";
         info_.scene_hash = "feedface";
         info_.seed = 42;
-        info_.plugins = {{"observer_precursors", "0.1.0", "observer_precursors.so"}};
+        info_.plugins = {{"observer_precursors", "0.1.0", "observer_precursors.so", ""}};
         body_ = chain();
         system_ = std::make_unique<System>(body_, 0);
         driving_ = &quantities_.scalar("driving_force", "N", "test");

@@ -125,8 +125,8 @@ protected:
         info_.scene_file = "scene.yaml";
         info_.scene_hash = "0123456789abcdef";
         info_.seed = 18446744073709551557ull;  // beyond a double's exact integers
-        info_.plugins = {{"observer_vtk_series", "0.1.0", "observer_vtk_series.so"},
-                         {"friction_test", "1.2", "friction_test.so"}};
+        info_.plugins = {{"observer_vtk_series", "0.1.0", "observer_vtk_series.so", ""},
+                         {"friction_test", "1.2", "friction_test.so", ""}};
     }
 
     void make_system(bool with_quads = true) {
