@@ -1,5 +1,6 @@
 #include "equilibrium_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -77,17 +78,28 @@ bool EquilibriumSolver::in_equilibrium(System& system, double t, const Eigen::Ve
     return (forces_.array().abs() / diagonal_.array()).maxCoeff() <= tolerance;
 }
 
-bool EquilibriumSolver::steady_velocity(System& system, double t, Eigen::VectorXd& y) {
-    // The drive's rate dF/dt; the later evaluation first, so the quantities the effects publish
-    // describe (t, y) after it.
+void EquilibriumSolver::drive_rate(System& system, double t, const Eigen::VectorXd& y) {
+    // The later evaluation first, so the quantities the effects publish describe (t, y) after it.
     node_forces(system, t + s_.rate_step, y, later_);
     node_forces(system, t, y, forces_);
     rhs_ = (later_ - forces_) / s_.rate_step;
+}
+
+bool EquilibriumSolver::steady_velocity(System& system, double t, Eigen::VectorXd& y) {
+    drive_rate(system, t, y);
     // With a kept K far from the current one the refinement does not contract: then with K anew.
     return refined_velocity(system, t, y) || (refactorise(system, t, y) && refined_velocity(system, t, y));
 }
 
-bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::VectorXd& y) {
+bool EquilibriumSolver::steady_velocity_within(System& system, double t, Eigen::VectorXd& y, double tolerance) {
+    ++counts_.solves;
+    if ((!factorised_ || stale_) && !refactorise(system, t, y)) return false;
+    drive_rate(system, t, y);
+    return refined_velocity(system, t, y, tolerance) ||
+           (refactorise(system, t, y) && refined_velocity(system, t, y, tolerance));
+}
+
+bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::VectorXd& y, double absolute) {
     const Index dof = 2 * system.layout().nodes;
     Eigen::Ref<Eigen::VectorXd> v = y.segment(dof, dof);
     v = ldlt_.solve(rhs_);
@@ -109,7 +121,7 @@ bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::Vector
         const double size = dv_.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(size) || size > contraction * previous) return false;
         v += dv_;
-        if (size <= s_.velocity_tolerance * speed) {
+        if (size <= std::max(s_.velocity_tolerance * speed, absolute)) {
             stale_ = stale_ || it >= s_.slow_after;
             node_forces(system, t, y, forces_);  // the published quantities describe (t, y) again
             return true;

@@ -51,6 +51,10 @@ public:
     /// The steady velocities K^{-1} dF/dt at (t, y), written into y's velocities (call after
     /// equilibrium(), whose factorisation it uses). False if the refinement does not converge.
     bool steady_velocity(System& system, double t, Eigen::VectorXd& y);
+    /// The steady velocities at (t, y) to within `tolerance` (m/s), y's positions as they are (a
+    /// ringing lattice's: the stiffness hardly differs from its balanced state's). Enough to tell
+    /// how far the velocities are from steady, for a fraction of a balance and a full refinement.
+    bool steady_velocity_within(System& system, double t, Eigen::VectorXd& y, double tolerance);
     /// Whether y balances at t: every node's residual force, over its diagonal stiffness, within
     /// `tolerance` (m). False without a factorisation (nothing to compare with).
     bool in_equilibrium(System& system, double t, const Eigen::VectorXd& y, double tolerance);
@@ -91,7 +95,10 @@ private:
     /// Newton from the positions of y with the factorisation as it is; false if it does not contract.
     bool newton(System& system, double t, Eigen::VectorXd& y);
     /// The refinement of the steady velocities with the factorisation as it is.
-    bool refined_velocity(System& system, double t, Eigen::VectorXd& y);
+    /// Converged when the correction is below velocity_tolerance |v| or, if given, below `absolute` (m/s).
+    bool refined_velocity(System& system, double t, Eigen::VectorXd& y, double absolute = 0);
+    /// dF/dt at (t, y), the right-hand side of the steady velocities.
+    void drive_rate(System& system, double t, const Eigen::VectorXd& y);
     /// The position part of the forces at (t, y), into out.
     void node_forces(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& out);
 
