@@ -11,6 +11,7 @@ struct Study {
     std::string title, scene;
     double observe_every = 1.0e-6;
     double profile_every = 1.0e-4;
+    std::vector<double> seeds;
 };
 
 struct StudyCase {
@@ -42,6 +43,10 @@ const std::vector<ParamInfo>& study_params() {
               "stage's duration.")
             .unit("s")
             .greater_than(0);
+        s.add("seeds", &Study::seeds,
+              "Seeds every case, the reference too, runs with (whole numbers >= 0), each compared with the "
+              "reference of its seed: how far a case lands from the reference is then seen over several draws of "
+              "the junctions, not one. Absent: the base scene's seed only.");
         return s;
     }();
     return spec.params();

@@ -12,6 +12,7 @@
 #include "frictionlab/scene/keys.hpp"
 #include "frictionlab/scene/values.hpp"
 #include "frictionlab/scene/yaml.hpp"
+#include "frictionlab/seed_list.hpp"
 
 namespace frictionlab {
 
@@ -19,6 +20,24 @@ std::vector<const StudyCase*> Study::all_cases() const {
     std::vector<const StudyCase*> out{&reference};
     for (const auto& c : cases) out.push_back(&c);
     return out;
+}
+
+std::vector<StudyRun> Study::runs() const {
+    std::vector<StudyRun> out;
+    for (const StudyCase* c : all_cases()) {
+        if (seeds.empty()) out.push_back({c, std::nullopt});
+        for (const auto seed : seeds) out.push_back({c, seed});
+    }
+    return out;
+}
+
+std::string StudyRun::label() const {
+    return seed ? fmt::format("{} (seed {})", spec->name, *seed) : spec->name;
+}
+
+std::filesystem::path StudyRun::directory() const {
+    const auto dir = std::filesystem::path("cases") / spec->name;
+    return seed ? dir / fmt::format("seed_{}", *seed) : dir;
 }
 
 namespace {
@@ -49,12 +68,18 @@ public:
             study.scene = folder / std::get<std::string>(top.values.at("scene"));
             study.scene_where = reporter_.where(scene->site());
         }
+        if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) {
+            study.seeds_where = reporter_.where(seeds->site());
+            study.seeds = detail::read_seed_list(*seeds, reporter_);
+        }
         if (const auto reference = given(top, "reference")) study.reference = read_case(*reference, "reference", true);
         study.reference.name = "reference";
         if (const auto cases = given(top, "cases"))
             study.cases = read_cases(*cases);
         else
             detail::report_missing(root, "cases", "a non-empty list of cases", "", reporter_);
+        if (!study.seeds.empty())
+            for (const StudyCase* c : study.all_cases()) refuse_own_seed(*c);
         if (!top.given.contains("reference"))
             detail::report_missing(root, "reference", "a mapping with `set:`, the overrides of the converged run", "",
                                    reporter_);
@@ -105,6 +130,15 @@ private:
         SourceLocation at = reporter_.where(item);
         if (detail::is_quoted(item) && at.column > 0) ++at.column;
         return at;
+    }
+
+    // With the study's seeds, a case's own seed= would be overridden by each of them in turn.
+    void refuse_own_seed(const StudyCase& c) {
+        for (const auto& o : c.overrides)
+            if (o.text.substr(0, o.text.find('=')) == "seed")
+                reporter_.error(o.origin, "seed",
+                                "a case sets its seed, but the study's seeds: decide every case's seed; drop "
+                                "one or the other");
     }
 
     void check_name(const StudyCase& c, const std::string& path, std::map<std::string, int>& first_line) {
@@ -178,8 +212,10 @@ std::vector<Scene> study_scenes(const Study& study, const std::filesystem::path&
         diagnostics.error(study.scene_where, "scene", problem);
         return scenes;
     }
-    for (const StudyCase* c : study.all_cases()) {
+    for (const StudyRun& run : study.runs()) {
+        const StudyCase* c = run.spec;
         auto overrides = c->overrides;
+        if (run.seed) overrides.push_back({fmt::format("seed={}", *run.seed), study.seeds_where});
         const auto before = diagnostics.list().size();
         Scene scene = SceneDocument::load_located(study.scene, overrides, diagnostics).validate(registry, diagnostics);
         if (diagnostics.list().size() != before) continue;
@@ -187,7 +223,7 @@ std::vector<Scene> study_scenes(const Study& study, const std::filesystem::path&
             diagnostics.error(c->where, c->name, problem);
             continue;
         }
-        const auto extra = study_observers(study, scene, output / "cases" / c->name);
+        const auto extra = study_observers(study, scene, output / run.directory());
         overrides.insert(overrides.end(), extra.begin(), extra.end());
         scenes.push_back(
             SceneDocument::load_located(study.scene, overrides, diagnostics).validate(registry, diagnostics));

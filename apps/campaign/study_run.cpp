@@ -1,5 +1,6 @@
 #include "frictionlab/study_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -73,6 +74,7 @@ std::string value_at(const YAML::Node& root, const std::string& path) {
 /// `integrator={type: ..., rtol: ...}`) stands for each of its keys in every case.
 std::vector<std::string> knob_columns(const Study& study, const std::vector<YAML::Node>& resolved) {
     std::vector<std::string> columns{"integrator.type"};
+    if (!study.seeds.empty()) columns.push_back("seed");
     const auto add = [&](const std::string& key) {
         if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
     };
@@ -98,6 +100,45 @@ double load_start(const Scene& scene) {
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.6g}", v); }
 
+/// The largest and the median of values (NaN, a failed run's, counts as the largest); NaN if none.
+std::pair<double, double> largest_and_median(std::vector<double> values) {
+    if (values.empty()) return {NAN, NAN};
+    if (std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); })) return {NAN, NAN};
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return {values.back(), n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2};
+}
+
+/// Over the study's seeds: per case, each error's largest (and median) value and the median times.
+std::string seeds_table(const StudyResult& result, const Study& study) {
+    std::string text = fmt::format(
+        "\n## Over the {} seeds\n\nEach case against the reference of the same seed: the largest error over "
+        "the seeds (the median in brackets), the median times.\n\n| case | family | wall (s) | CPU (s) |",
+        study.seeds.size());
+    for (const auto& c : error_columns) text += std::string(" ") + c.title + " |";
+    text += "\n|";
+    for (std::size_t i = 0; i < 4 + error_columns.size(); ++i) text += " --- |";
+    text += "\n";
+    const std::size_t per_case = study.seeds.size();
+    for (std::size_t first = per_case; first + per_case <= result.rows.size(); first += per_case) {
+        const auto column = [&](auto value) {
+            std::vector<double> values;
+            for (std::size_t k = first; k < first + per_case; ++k) values.push_back(value(result.rows[k]));
+            return largest_and_median(values);
+        };
+        const StudyRow& row = result.rows[first];
+        text += fmt::format("| {} | {} | {:.3g} | {:.3g} |", row.name, row.family,
+                            column([](const StudyRow& r) { return r.summary.wall_seconds; }).second,
+                            column([](const StudyRow& r) { return r.summary.cpu_seconds; }).second);
+        for (const auto& c : error_columns) {
+            const auto [largest, median] = column([&](const StudyRow& r) { return r.errors.*c.member; });
+            text += fmt::format(" {:.3g} ({:.3g}) |", largest, median);
+        }
+        text += "\n";
+    }
+    return text;
+}
+
 }  // namespace
 
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
@@ -110,10 +151,11 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
     result.seed = scenes.front().seed;
     result.knob_columns = knob_columns(study, resolved);
     // The same engine as a sweep, one case at a time: the wall times of a study are compared.
-    const auto cases = study.all_cases();
+    const auto cases = study.runs();
     std::vector<CampaignCase> runs;
     for (std::size_t k = 0; k < cases.size(); ++k) {
-        CampaignCase run{cases[k]->name, {}, scenes.at(k)};
+        const auto& c = cases[k];
+        CampaignCase run{c.seed ? fmt::format("{}.seed_{}", c.spec->name, *c.seed) : c.spec->name, {}, scenes.at(k)};
         for (std::size_t j = 0; j < result.knob_columns.size(); ++j)
             run.values.emplace_back(result.knob_columns[j], value_at(resolved[k], result.knob_columns[j]));
         runs.push_back(std::move(run));
@@ -127,26 +169,29 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
         throw Interrupted(fmt::format("interrupted by {}: the study's cases stopped; run it again to start afresh",
                                       InterruptSignals::name(*options.stop_signal)),
                           *options.stop_signal);
+    // Each run is compared with the reference's run of its seed: those come first, one per seed.
+    const std::size_t per_case = std::max<std::size_t>(1, study.seeds.size());
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const Scene& scene = scenes.at(k);
         StudyRow row;
-        row.name = cases[k]->name;
+        row.name = cases[k].spec->name;
+        row.label = cases[k].label();
         row.scene_hash = scene.hash;
         for (const auto& [key, value] : runs[k].values) row.knobs.push_back(value);
-        row.family = cases[k]->family.empty() ? row.knobs.front() : cases[k]->family;
+        row.family = cases[k].spec->family.empty() ? row.knobs.front() : cases[k].spec->family;
         row.summary = records[k].summary;
         const auto files = rupture_files(scene);
         if (records[k].status != "done" || !files) {
             const std::string reason = records[k].status != "done" ? records[k].reason : "no precursors observer";
-            if (k == 0) throw RunError(fmt::format("the reference run failed: {}", reason));
+            if (k < per_case) throw RunError(fmt::format("the reference run {} failed: {}", row.label, reason));
             row.errors.note = fmt::format("run failed: {}", reason);
             result.rows.push_back(std::move(row));
             continue;
         }
         row.outcome =
             read_case_outcome(scene.output_directory, *files, scene.stages.front().duration, load_start(scene));
-        row.errors = compare(k == 0 ? row.outcome : result.rows.front().outcome, row.outcome);
-        log.info("study case {}: {:.3g} s wall ({:.3g} s CPU), {} steps, {} evaluations", row.name,
+        row.errors = compare(k < per_case ? row.outcome : result.rows.at(k % per_case).outcome, row.outcome);
+        log.info("study case {}: {:.3g} s wall ({:.3g} s CPU), {} steps, {} evaluations", row.label,
                  row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps, row.summary.evaluations);
         result.rows.push_back(std::move(row));
     }
@@ -157,10 +202,12 @@ void write_study_csv(const StudyResult& result, const Study& study, const std::f
     // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
     write_file_atomically(
         table_sidecar_path(file),
-        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseed: {}\nnote: errors relative to "
-                    "the reference case; the seed unless a case sets it; each case's run.yaml in cases/ records "
-                    "its resolved scene and plugins\n",
-                    framework_version(), study.file.filename().string(), result.seed));
+        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\n{}\nnote: errors relative to "
+                    "the reference case{}; each case's run.yaml in cases/ records its resolved scene and plugins\n",
+                    framework_version(), study.file.filename().string(),
+                    study.seeds.empty() ? fmt::format("seed: {}", result.seed)
+                                        : fmt::format("seeds: [{}]", fmt::join(study.seeds, ", ")),
+                    study.seeds.empty() ? "; the seed unless a case sets it" : " of the same seed"));
     std::string text = "case,family,scene_hash";
     for (const auto& k : result.knob_columns) text += fmt::format(",{}", csv_cell(k));
     text += ",wall_seconds,cpu_seconds,steps,evaluations";
@@ -181,9 +228,10 @@ void write_study_markdown(const StudyResult& result, const Study& study, const s
     const CaseOutcome& ref = result.rows.front().outcome;
     std::string text = fmt::format("# {}\n\n", study.title.empty() ? "Accuracy study" : study.title);
     text += fmt::format(
-        "Study `{}` on `{}`. Reference: first precursor {} s after loading began at F_S = {} N; "
+        "Study `{}` on `{}`. Reference{}: first precursor {} s after loading began at F_S = {} N; "
         "global F_S/F_N = {}. Errors are relative (profiles: relative L2 on x/L).\n\n",
-        study.file.filename().string(), study.scene.filename().string(), number(ref.first_precursor_time),
+        study.file.filename().string(), study.scene.filename().string(),
+        study.seeds.empty() ? "" : fmt::format(" (seed {})", study.seeds.front()), number(ref.first_precursor_time),
         number(ref.first_precursor_force), number(ref.global_static_coefficient));
     text += "| case | family |";
     for (const auto& k : result.knob_columns) text += " " + k + " |";
@@ -193,13 +241,14 @@ void write_study_markdown(const StudyResult& result, const Study& study, const s
     for (std::size_t i = 0; i < 7 + result.knob_columns.size() + error_columns.size(); ++i) text += " --- |";
     text += "\n";
     for (const auto& row : result.rows) {
-        text += "| " + row.name + " | " + row.family + " |";
+        text += "| " + row.name + " | " + row.family + " |";  // the seed, if any, is a knob column
         for (const auto& v : row.knobs) text += " " + v + " |";
         text += fmt::format(" {:.3g} | {:.3g} | {} | {} |", row.summary.wall_seconds, row.summary.cpu_seconds,
                             row.summary.steps, row.summary.evaluations);
         for (const auto& c : error_columns) text += fmt::format(" {} |", number(row.errors.*c.member));
         text += " " + row.errors.note + " |\n";
     }
+    if (study.seeds.size() > 1) text += seeds_table(result, study);
     write_file_atomically(file, text);
 }
 

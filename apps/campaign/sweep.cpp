@@ -13,6 +13,7 @@
 #include "frictionlab/campaign_keys.hpp"
 #include "frictionlab/scene/values.hpp"
 #include "frictionlab/scene/yaml.hpp"
+#include "frictionlab/seed_list.hpp"
 
 namespace frictionlab {
 
@@ -52,7 +53,10 @@ public:
             sweep.scene = file.parent_path() / std::get<std::string>(top.values.at("scene"));
             sweep.scene_where = reporter_.where(scene->site());
         }
-        if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) read_seeds(*seeds, sweep);
+        if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) {
+            sweep.seeds_where = reporter_.where(seeds->site());
+            sweep.seeds = detail::read_seed_list(*seeds, reporter_);
+        }
         if (const auto grid = given(top, "grid")) sweep.grid = read_grid(*grid);
         if (const auto cases = given(top, "cases")) sweep.cases = read_cases(*cases);
         if (!top.given.contains("grid") && !top.given.contains("cases") && !top.given.contains("seeds"))
@@ -62,21 +66,6 @@ public:
     }
 
 private:
-    void read_seeds(const Entry& entry, Sweep& sweep) {
-        sweep.seeds_where = reporter_.where(entry.site());
-        for (std::size_t i = 0; i < entry.value.size(); ++i) {
-            const double seed = entry.value[i].as<double>();
-            if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) {
-                reporter_.error(entry.value[i], detail::index_path("seeds", i),
-                                "expected a whole number >= 0, got " + detail::quote(entry.value[i].Scalar()));
-                continue;
-            }
-            sweep.seeds.push_back(static_cast<std::int64_t>(seed));
-        }
-        if (sweep.seeds.empty() && entry.value.size() == 0)
-            reporter_.error(entry.site(), "seeds", "expected a non-empty list of seeds, got an empty list");
-    }
-
     std::vector<SweepAxis> read_grid(const Entry& grid) {
         std::vector<SweepAxis> axes;
         if (!grid.value.IsMap() || grid.value.size() == 0) {

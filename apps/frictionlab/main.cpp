@@ -324,8 +324,8 @@ int study(const std::filesystem::path& file, std::string output, const fl::RunOp
     if (!diagnostics.empty()) return report_errors(diagnostics, file);
     if (check_only) {
         std::vector<std::pair<std::string, const fl::Scene*>> cases;
-        const auto specs = spec.all_cases();
-        for (std::size_t i = 0; i < scenes.size(); ++i) cases.emplace_back(specs.at(i)->name, &scenes[i]);
+        const auto runs = spec.runs();
+        for (std::size_t i = 0; i < scenes.size(); ++i) cases.emplace_back(runs.at(i).label(), &scenes[i]);
         const std::size_t above = check_case_steps(cases, false, common, registry, diagnostics);
         std::cout << file.string() << ": ok (study of " << scenes.size() << " scenes"
                   << (above > 0 ? fmt::format("; {} above the stable step", above) : "") << ")\n";

@@ -1,5 +1,6 @@
 // `frictionlab study` as a user runs it: a tiny study through the real command, its table, its
 // errors against the reference, its plot, and the errors of a bad study file.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "cli.hpp"
@@ -131,6 +133,63 @@ TEST(Study, TinyStudyThroughTheCommand) {
     EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
 }
 
+/// The row of a case at a seed in a study over seeds.
+const Row& row_at(const StudyTable& table, const std::string& name, const std::string& seed) {
+    for (const auto& r : table.rows())
+        if (r.at("case") == name && r.at("seed") == seed) return r;
+    throw std::runtime_error("no row " + name + " at seed " + seed);
+}
+
+// Over seeds, each case is compared with the reference of its own seed, not of the first: a case
+// run as the reference is has no error at any seed, and a coarser step's errors stay those of
+// the step, far below the difference between two seeds' runs.
+TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const auto result = frictionlab("study -q " STUDY_FILES "/tiny_seeds_study.yaml -o out", dir);
+    ASSERT_EQ(result.code, 0) << result.output;
+    const StudyTable table(dir / "out" / "study.csv");
+    ASSERT_EQ(table.rows().size(), 6u);
+    const std::vector<std::pair<std::string, std::string>> order{{"reference", "1"},  {"reference", "2"},
+                                                                 {"rk4_coarse", "1"}, {"rk4_coarse", "2"},
+                                                                 {"as_reference", "1"}, {"as_reference", "2"}};
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        EXPECT_EQ(table.rows()[k].at("case"), order[k].first) << k;
+        EXPECT_EQ(table.rows()[k].at("seed"), order[k].second) << k;
+    }
+    for (const char* seed : {"1", "2"}) {
+        // Each run writes into a folder of its own, and its run.yaml records the seed.
+        const std::string record = read_text(dir / "out" / "cases" / "rk4_coarse" / (std::string("seed_") + seed) /
+                                             "run.yaml");
+        EXPECT_NE(record.find(std::string("seed: ") + seed), std::string::npos) << record.substr(0, 400);
+        EXPECT_EQ(row_at(table, "as_reference", seed).at("scene_hash"), row_at(table, "reference", seed).at("scene_hash"));
+        for (const auto& e : errors) EXPECT_EQ(row_at(table, "as_reference", seed).at(e), "0") << e << " seed " << seed;
+    }
+    EXPECT_NE(row_at(table, "reference", "1").at("scene_hash"), row_at(table, "reference", "2").at("scene_hash"));
+
+    // The seeds draw other junctions: the first seed's reference against the second's differs far
+    // more than the coarse step does from the reference of its seed.
+    const auto value = [&](const std::string& name, const std::string& seed, const std::string& column) {
+        return std::stod(row_at(table, name, seed).at(column));
+    };
+    for (const char* seed : {"1", "2"})
+        for (const char* e : {"err_settled_friction_force", "err_first_precursor_force", "err_event_slip"}) {
+            EXPECT_GT(value("rk4_coarse", seed, e), 0) << e;
+            EXPECT_LT(value("rk4_coarse", seed, e), 1e-2) << e << " seed " << seed;
+        }
+
+    // study.md adds the largest error over the seeds (the median in brackets) and the sidecar the seeds.
+    const std::string md = read_text(dir / "out" / "study.md");
+    const auto over = md.find("## Over the 2 seeds");
+    ASSERT_NE(over, std::string::npos) << md;
+    const double largest = std::max(value("rk4_coarse", "1", "err_event_slip"), value("rk4_coarse", "2", "err_event_slip"));
+    const auto line = md.find("| rk4_coarse | rk4 |", over);
+    ASSERT_NE(line, std::string::npos) << md;
+    EXPECT_NE(md.substr(line, md.find('\n', line) - line).find(fmt::format(" {:.3g} (", largest)), std::string::npos)
+        << md.substr(line, 400);
+    EXPECT_NE(read_text(dir / "out" / "study.csv.meta.yaml").find("seeds: [1, 2]"), std::string::npos);
+    frictionlab::testing::expect_figure(dir / "out", "work_precision");
+}
+
 class BadStudy : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -140,6 +199,13 @@ protected:
     frictionlab::testing::CliResult study(const std::string& text) {
         std::ofstream(dir_ / "bad.yaml") << text;
         return frictionlab("study -q bad.yaml -o out", dir_);
+    }
+    /// The study is refused with each message, and nothing is written.
+    void expect_refused(const frictionlab::testing::CliResult& r, std::initializer_list<const char*> messages) {
+        EXPECT_EQ(r.code, 2) << r.output;
+        for (const char* message : messages)
+            EXPECT_NE(r.output.find(message), std::string::npos) << message << "\n" << r.output;
+        EXPECT_FALSE(fs::exists(dir_ / "out"));
     }
     fs::path dir_;
 };
@@ -156,16 +222,29 @@ TEST_F(BadStudy, EveryErrorOfTheStudyFileAtItsLineAndColumn) {
         "  - name: a\n"
         "  - name: Bad/name\n"
         "  - {set: [integrator.dt=1e-7]}\n");
-    EXPECT_EQ(r.code, 2) << r.output;
-    for (const char* message :
-         {"bad.yaml:2:1: error: observe_evry: unknown key 'observe_evry'; did you mean 'observe_every'?",
-          "bad.yaml:3:16: error: profile_every: must be > 0, got -1",
-          "bad.yaml:8:5: error: cases[1].name: duplicate case name 'a', first used at line 7",
-          "bad.yaml:9:5: error: cases[2].name: expected a name of a-z, 0-9, _, . and -, starting with a letter, got "
-          "'Bad/name'",
-          "bad.yaml:10:5: error: cases[3].name: required key is missing"})
-        EXPECT_NE(r.output.find(message), std::string::npos) << message << "\n" << r.output;
-    EXPECT_FALSE(fs::exists(dir_ / "out"));
+    expect_refused(r, {"bad.yaml:2:1: error: observe_evry: unknown key 'observe_evry'; did you mean 'observe_every'?",
+                       "bad.yaml:3:16: error: profile_every: must be > 0, got -1",
+                       "bad.yaml:8:5: error: cases[1].name: duplicate case name 'a', first used at line 7",
+                       "bad.yaml:9:5: error: cases[2].name: expected a name of a-z, 0-9, _, . and -, starting with a "
+                       "letter, got 'Bad/name'",
+                       "bad.yaml:10:5: error: cases[3].name: required key is missing"});
+}
+
+TEST_F(BadStudy, SeedsAreWholeNumbersAndDecideEveryCasesSeed) {
+    const auto r = study(
+        "scene: tiny_scene.yaml\n"
+        "seeds: [1, -2, 2.5]\n"
+        "reference:\n"
+        "  set: [integrator.dt=1.0e-7]\n"
+        "cases:\n"
+        "  - name: other\n"
+        "    set: [integrator.dt=2.0e-7, seed=7]\n");
+    expect_refused(r, {"bad.yaml:2:12: error: seeds[1]: expected a whole number >= 0, got '-2'",
+                       "bad.yaml:2:16: error: seeds[2]: expected a whole number >= 0, got '2.5'",
+                       "bad.yaml:7:33: error: seed: a case sets its seed, but the study's seeds: decide every "
+                       "case's seed"});
+    expect_refused(study("scene: tiny_scene.yaml\nseeds: []\nreference: {set: []}\ncases: [{name: a}]\n"),
+                   {"bad.yaml:2:8: error: seeds: expected a non-empty list of seeds, got an empty list"});
 }
 
 TEST_F(BadStudy, ErrorsInACaseOverridePointIntoTheStudyFile) {

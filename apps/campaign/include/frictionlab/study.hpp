@@ -4,7 +4,9 @@
 // size), each case a list of `--set` overrides. The format is in share/docs/scene-format.md
 // ("Accuracy studies"); `frictionlab study` runs it (study_run.hpp). Reading is two-pass like a
 // scene's: the study's own keys first, then every case's scene against the registry.
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,16 @@ struct StudyCase {
     std::vector<SceneOverride> overrides;  // each located in the study file
 };
 
+/// One run of a study: a case with one of the study's seeds (none: the scene's own seed).
+struct StudyRun {
+    const StudyCase* spec;
+    std::optional<std::int64_t> seed;
+    /// "hybrid", or "hybrid (seed 2)" where the study has seeds.
+    std::string label() const;
+    /// Where it writes, below the study's output: cases/<name>, or cases/<name>/seed_<seed>.
+    std::filesystem::path directory() const;
+};
+
 struct Study {
     std::filesystem::path file;
     std::string title;
@@ -31,16 +43,20 @@ struct Study {
     double profile_every = 1.0e-4;  // s, cadence of the interface profiles
     StudyCase reference;
     std::vector<StudyCase> cases;
+    std::vector<std::int64_t> seeds;  // empty: the base scene's seed only
+    SourceLocation seeds_where;
     /// The reference first, then the cases in file order.
     std::vector<const StudyCase*> all_cases() const;
+    /// Every case of all_cases() with each seed in turn (the reference's runs first, one per seed).
+    std::vector<StudyRun> runs() const;
 };
 
 /// The study's own keys, with file:line:column errors; the base scene is not read yet.
 Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics);
 
-/// The scene of each case of all_cases(): the base scene with the case's overrides, checked like
-/// any scene (errors in an override point at the study file), writing into
-/// `output/cases/<name>` and observed as the study needs (its observers replace the scene's).
+/// The scene of each run of runs(): the base scene with the case's overrides and the run's seed,
+/// checked like any scene (errors in an override point at the study file), writing into
+/// `output/` its directory() and observed as the study needs (its observers replace the scene's).
 std::vector<Scene> study_scenes(const Study& study, const std::filesystem::path& output, const Registry& registry,
                                 Diagnostics& diagnostics);
 

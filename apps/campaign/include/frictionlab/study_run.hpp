@@ -19,6 +19,7 @@ namespace frictionlab {
 
 struct StudyRow {
     std::string name, family;
+    std::string label;               // the name, with the seed where the study has seeds
     std::string scene_hash;          // of the case's resolved scene (seed included), as its run.yaml records it
     std::vector<std::string> knobs;  // one value per StudyResult::knob_columns ("" where it does not apply)
     RunSummary summary;
@@ -29,7 +30,7 @@ struct StudyRow {
 struct StudyResult {
     /// integrator.type, then every key path the study's overrides set, in order of first use.
     std::vector<std::string> knob_columns;
-    std::vector<StudyRow> rows;  // the reference first
+    std::vector<StudyRow> rows;  // as Study::runs(): the reference's first
     std::uint64_t seed = 0;      // the base scene's (a case may set its own)
 };
 
