@@ -142,7 +142,7 @@ std::string seeds_table(const StudyResult& result, const Study& study) {
 }  // namespace
 
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
-                      const Registry& registry, spdlog::logger& log, const RunOptions& options) {
+                      const Registry& registry, spdlog::logger& log, const RunOptions& options, int jobs) {
     prepare_output_directory(output, options.overwrite, {study.scene});
     std::filesystem::create_directories(output / "cases");
     std::vector<YAML::Node> resolved;
@@ -150,7 +150,7 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
     StudyResult result;
     result.seed = scenes.front().seed;
     result.knob_columns = knob_columns(study, resolved);
-    // The same engine as a sweep, one case at a time: the wall times of a study are compared.
+    // The same engine as a sweep, by default one case at a time: the wall times of a study are compared.
     const auto cases = study.runs();
     std::vector<CampaignCase> runs;
     for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -161,6 +161,7 @@ StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, cons
         runs.push_back(std::move(run));
     }
     CampaignOptions campaign;
+    campaign.jobs = jobs;
     campaign.allow_unstable_step = options.allow_unstable_step;
     campaign.reuse_finished = false;
     campaign.stop_signal = options.stop_signal;

@@ -310,7 +310,7 @@ std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
 }
 
 /// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
-int study(const std::filesystem::path& file, std::string output, const fl::RunOptions& options, bool check_only,
+int study(const std::filesystem::path& file, std::string output, int jobs, const fl::RunOptions& options, bool check_only,
           const Common& common, fl::Registry& registry, spdlog::logger& log) {
     fl::Diagnostics diagnostics;
     const auto spec = fl::read_study(file, diagnostics);
@@ -334,7 +334,7 @@ int study(const std::filesystem::path& file, std::string output, const fl::RunOp
     const fl::InterruptSignals signals;
     fl::RunOptions study_options = options;
     study_options.stop_signal = &fl::InterruptSignals::received();
-    const auto result = fl::run_study(spec, scenes, output, registry, log, study_options);
+    const auto result = fl::run_study(spec, scenes, output, registry, log, study_options, jobs);
     fl::write_study_csv(result, spec, std::filesystem::path(output) / "study.csv");
     fl::write_study_markdown(result, spec, std::filesystem::path(output) / "study.md");
     log.info("study: {} cases; table in {}", result.rows.size(), (std::filesystem::path(output) / "study.md").string());
@@ -425,6 +425,12 @@ int main(int argc, char** argv) {
         study_cmd->add_option("-o,--output", output, "Output directory (default: out/<study file name>)");
     bool check_only = false;
     study_cmd->add_flag("--check", check_only, "Only validate the study and the scene of every case");
+    int study_jobs = 1;
+    study_cmd
+        ->add_option("-j,--jobs", study_jobs,
+                     "Cases at once (default 1: each case alone on the machine, so that their times compare; up "
+                     "to one per core keeps them comparable on an otherwise idle machine)")
+        ->check(CLI::PositiveNumber);
     attach_run_flags(*study_cmd, options, removed_force);
     common.attach(*study_cmd);
 
@@ -473,7 +479,7 @@ int main(int argc, char** argv) {
     try {
         fl::Registry registry;
         if (*check && fl::campaign_file_kind(scene_file) == fl::CampaignFileKind::study)
-            return study(scene_file, output, options, true, common, registry, *log);
+            return study(scene_file, output, 1, options, true, common, registry, *log);
         if (*check && fl::campaign_file_kind(scene_file) == fl::CampaignFileKind::sweep)
             return sweep(scene_file, output, 0, options, true, common, registry, *log);
         if (*sweep_cmd) return sweep(sweep_file, output, jobs, options, check_only, common, registry, *log);
@@ -519,7 +525,7 @@ int main(int argc, char** argv) {
         if (*plot_cmd) return plot(runs, output);
         if (*study_cmd) {
             options.command_line.assign(argv, argv + argc);
-            return study(study_file, output, options, check_only, common, registry, *log);
+            return study(study_file, output, study_jobs, options, check_only, common, registry, *log);
         }
         fl::load_plugins(registry, common.directories({}), *log);
         if (*list) {

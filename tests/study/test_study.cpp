@@ -145,10 +145,18 @@ const Row& row_at(const StudyTable& table, const std::string& name, const std::s
 // the step, far below the difference between two seeds' runs.
 TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
     const fs::path dir = frictionlab::testing::work_directory();
-    const auto result = frictionlab("study -q " STUDY_FILES "/tiny_seeds_study.yaml -o out", dir);
+    const auto result = frictionlab("study -q -j 2 " STUDY_FILES "/tiny_seeds_study.yaml -o out", dir);
     ASSERT_EQ(result.code, 0) << result.output;
     const StudyTable table(dir / "out" / "study.csv");
     ASSERT_EQ(table.rows().size(), 6u);
+    // Two cases at once or one at a time, every run and so every error is the same.
+    ASSERT_EQ(frictionlab("study -q " STUDY_FILES "/tiny_seeds_study.yaml -o one_at_a_time", dir).code, 0);
+    const StudyTable alone(dir / "one_at_a_time" / "study.csv");
+    ASSERT_EQ(alone.rows().size(), table.rows().size());
+    for (std::size_t k = 0; k < table.rows().size(); ++k) {
+        EXPECT_EQ(alone.rows()[k].at("scene_hash"), table.rows()[k].at("scene_hash")) << k;
+        for (const auto& e : errors) EXPECT_EQ(alone.rows()[k].at(e), table.rows()[k].at(e)) << e << " row " << k;
+    }
     const std::vector<std::pair<std::string, std::string>> order{{"reference", "1"},  {"reference", "2"},
                                                                  {"rk4_coarse", "1"}, {"rk4_coarse", "2"},
                                                                  {"as_reference", "1"}, {"as_reference", "2"}};

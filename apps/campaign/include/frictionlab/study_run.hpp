@@ -1,8 +1,8 @@
 #pragma once
 // Runs an accuracy study (study.hpp): the reference and every case one after another, each an
 // ordinary run into <output>/cases/<name>, then the errors of each case against the reference
-// (study_metrics.hpp) into <output>/study.csv and <output>/study.md. One case at a time keeps
-// the wall times comparable and each run bit-reproducible.
+// (study_metrics.hpp) into <output>/study.csv and <output>/study.md. One case at a time (the
+// default) keeps the wall times comparable; each run is bit-reproducible however many run at once.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -38,7 +38,7 @@ struct StudyResult {
 /// into a new directory below it, above the estimated stable step with `options.allow_unstable_step`. A case that fails
 /// is a row of NaN errors with the reason in its note; a failing reference throws RunError.
 StudyResult run_study(const Study& study, const std::vector<Scene>& scenes, const std::filesystem::path& output,
-                      const Registry& registry, spdlog::logger& log, const RunOptions& options);
+                      const Registry& registry, spdlog::logger& log, const RunOptions& options, int jobs = 1);
 
 /// study.csv: case, family, knobs, wall_seconds, cpu_seconds, steps, evaluations, the errors, note.
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);
