@@ -31,9 +31,7 @@ std::vector<StudyRun> Study::runs() const {
     return out;
 }
 
-std::string StudyRun::label() const {
-    return seed ? fmt::format("{} (seed {})", spec->name, *seed) : spec->name;
-}
+std::string StudyRun::label() const { return seed ? fmt::format("{} (seed {})", spec->name, *seed) : spec->name; }
 
 std::filesystem::path StudyRun::directory() const {
     const auto dir = std::filesystem::path("cases") / spec->name;

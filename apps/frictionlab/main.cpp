@@ -310,8 +310,8 @@ std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
 }
 
 /// Runs an accuracy study: every case, study.csv, study.md and the work-precision plot.
-int study(const std::filesystem::path& file, std::string output, int jobs, const fl::RunOptions& options, bool check_only,
-          const Common& common, fl::Registry& registry, spdlog::logger& log) {
+int study(const std::filesystem::path& file, std::string output, int jobs, const fl::RunOptions& options,
+          bool check_only, const Common& common, fl::Registry& registry, spdlog::logger& log) {
     fl::Diagnostics diagnostics;
     const auto spec = fl::read_study(file, diagnostics);
     std::vector<fl::Scene> scenes;

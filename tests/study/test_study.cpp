@@ -157,8 +157,8 @@ TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
         EXPECT_EQ(alone.rows()[k].at("scene_hash"), table.rows()[k].at("scene_hash")) << k;
         for (const auto& e : errors) EXPECT_EQ(alone.rows()[k].at(e), table.rows()[k].at(e)) << e << " row " << k;
     }
-    const std::vector<std::pair<std::string, std::string>> order{{"reference", "1"},  {"reference", "2"},
-                                                                 {"rk4_coarse", "1"}, {"rk4_coarse", "2"},
+    const std::vector<std::pair<std::string, std::string>> order{{"reference", "1"},    {"reference", "2"},
+                                                                 {"rk4_coarse", "1"},   {"rk4_coarse", "2"},
                                                                  {"as_reference", "1"}, {"as_reference", "2"}};
     for (std::size_t k = 0; k < order.size(); ++k) {
         EXPECT_EQ(table.rows()[k].at("case"), order[k].first) << k;
@@ -166,10 +166,11 @@ TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
     }
     for (const char* seed : {"1", "2"}) {
         // Each run writes into a folder of its own, and its run.yaml records the seed.
-        const std::string record = read_text(dir / "out" / "cases" / "rk4_coarse" / (std::string("seed_") + seed) /
-                                             "run.yaml");
+        const std::string record =
+            read_text(dir / "out" / "cases" / "rk4_coarse" / (std::string("seed_") + seed) / "run.yaml");
         EXPECT_NE(record.find(std::string("seed: ") + seed), std::string::npos) << record.substr(0, 400);
-        EXPECT_EQ(row_at(table, "as_reference", seed).at("scene_hash"), row_at(table, "reference", seed).at("scene_hash"));
+        EXPECT_EQ(row_at(table, "as_reference", seed).at("scene_hash"),
+                  row_at(table, "reference", seed).at("scene_hash"));
         for (const auto& e : errors) EXPECT_EQ(row_at(table, "as_reference", seed).at(e), "0") << e << " seed " << seed;
     }
     EXPECT_NE(row_at(table, "reference", "1").at("scene_hash"), row_at(table, "reference", "2").at("scene_hash"));
@@ -189,7 +190,8 @@ TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
     const std::string md = read_text(dir / "out" / "study.md");
     const auto over = md.find("## Over the 2 seeds");
     ASSERT_NE(over, std::string::npos) << md;
-    const double largest = std::max(value("rk4_coarse", "1", "err_event_slip"), value("rk4_coarse", "2", "err_event_slip"));
+    const double largest =
+        std::max(value("rk4_coarse", "1", "err_event_slip"), value("rk4_coarse", "2", "err_event_slip"));
     const auto line = md.find("| rk4_coarse | rk4 |", over);
     ASSERT_NE(line, std::string::npos) << md;
     EXPECT_NE(md.substr(line, md.find('\n', line) - line).find(fmt::format(" {:.3g} (", largest)), std::string::npos)
