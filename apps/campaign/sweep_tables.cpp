@@ -71,12 +71,13 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cas
         for (const auto& key : columns) {
             const auto it =
                 std::find_if(c.values.begin(), c.values.end(), [&](const auto& v) { return v.first == key; });
-            text += "," + csv_cell(it == c.values.end() ? std::string() : it->second);
+            text += fmt::format(",{}", csv_cell(it == c.values.end() ? std::string() : it->second));
         }
         return text;
     };
     std::string header = "case";
-    for (const auto& key : columns) header += "," + csv_cell(key);
+    // fmt, not "," + a temporary string: GCC 12 reports a false -Wrestrict on that.
+    for (const auto& key : columns) header += fmt::format(",{}", csv_cell(key));
 
     const std::string comment =
         fmt::format("# frictionlab sweep {}{}: each case's run.yaml in cases/ records its resolved scene\n",

@@ -10,6 +10,7 @@
 #include "frictionlab/model/effect.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/system.hpp"
+#include "equilibrium_solver.hpp"
 #include "oscillator.hpp"
 #include "quasi_static_hybrid.hpp"
 #include "rk4.hpp"
@@ -100,6 +101,44 @@ TEST(QuasiStaticHybrid, QuietPhaseGivesTheExactSteadyResponseWithItsViscousLag) 
     }
     // Steps of max_quiet_step = 10 ms, each ending early on the next target time only.
     EXPECT_LE(system.step_index() - steps, 140 + 3);
+}
+
+/// k (V t - x) - k3 x^3 - c vx on x, a stiffening spring: K = k + 3 k3 x^2 on x, k on z.
+class StiffeningNode final : public Effect {
+public:
+    static constexpr double k3 = 1e9;  // N/m^3: at x = 1 mm the stiffness is 1.3 k
+    std::string describe() const override { return "stiffening node"; }
+    void add_forces(const StageView& s, ForceView& f) override {
+        f.fx(0) += k * (V * s.t - s.x(0)) - k3 * s.x(0) * s.x(0) * s.x(0) - c * s.vx(0);
+        f.fz(0) -= k * s.z(0);
+    }
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& K) const override {
+        K.emplace_back(0, 0, k + 3 * k3 * s.x(0) * s.x(0));
+        K.emplace_back(1, 1, k);
+    }
+};
+
+// A check for calm takes the steady velocities at the ringing positions as they are, to the
+// tolerance it asks: K v = dF/dt with the stiffness there, refined against it from a factorisation
+// kept from elsewhere; the positions are not balanced first.
+TEST(EquilibriumSolver, SteadyVelocityWithinTakesThePositionsAsTheyAreToTheToleranceAsked) {
+    Body body = one_node();
+    System system(body, 0);
+    system.add_effect(std::make_unique<StiffeningNode>());
+    EquilibriumSolver solver({.position_tolerance = 1e-13, .rate_step = 1e-4});
+    Eigen::VectorXd y = system.y();
+    ASSERT_TRUE(solver.equilibrium(system, 0, y));  // balanced at the origin: K = k factorised
+    // Later, off balance at x = 1 mm (k3 x^3 = 1 N, against k (V t - x) = 0), moving: the stiffness
+    // there is 1.3 k, so a solve with the kept K alone is 30 % off the steady V / 1.3.
+    y(0) = 1e-3, y(2) = 0.5 * V;
+    const double tolerance = 1e-3 * V;
+    ASSERT_TRUE(solver.steady_velocity_within(system, 1.0, y, tolerance));
+    EXPECT_EQ(y(0), 1e-3);  // not balanced
+    EXPECT_NEAR(y(2), V / 1.3, tolerance);
+    // A tighter tolerance refines further.
+    ASSERT_TRUE(solver.steady_velocity_within(system, 1.0, y, 1e-9 * V));
+    EXPECT_NEAR(y(2), V / 1.3, 1e-8 * V);
 }
 
 TEST(QuasiStaticHybrid, StepsWithinASolvedSpanLandOnTheExactResponseWithoutASolve) {

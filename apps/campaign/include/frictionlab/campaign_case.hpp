@@ -1,8 +1,9 @@
 #pragma once
 // One case of a campaign (a sweep or an accuracy study): an ordinary scene, run like `frictionlab
-// run` into <campaign>/cases/<name>, and what became of it. The record is written beside the run's
-// outputs (case.yaml) so that a campaign run again into the same directory can tell a finished case
-// (same scene hash, status done) from one that failed or was interrupted.
+// run` into its scene's output directory below <campaign>/cases/, and what became of it. The
+// record is written beside the run's outputs (case.yaml) so that a campaign run again into the same
+// directory can tell a finished case (same scene hash, status done) from one that failed or was
+// interrupted.
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -14,10 +15,12 @@
 namespace frictionlab {
 
 struct CampaignCase {
-    std::string name;  // its directory below cases/
+    std::string name;  // unique; its log is logs/<name>.log
     /// The values that make this case: key path (or "seed") and value as written, in column order.
     std::vector<std::pair<std::string, std::string>> values;
-    Scene scene;  // validated; its output directory is <campaign>/cases/<name>
+    /// Validated; its output directory is <campaign>/cases/<name> (over a study's seeds,
+    /// cases/<case>/seed_<seed>).
+    Scene scene;
 };
 
 struct CaseRecord {

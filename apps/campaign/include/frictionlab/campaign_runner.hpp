@@ -28,9 +28,9 @@ struct CampaignOptions {
     const std::atomic<int>* stop_signal = nullptr;
 };
 
-/// Runs every case (cases/<name> below `output`, each run's log in logs/<name>.log) and returns
-/// their records in the order of `cases`. On MPI ranks other than 0 it serves rank 0 and returns
-/// no records.
+/// Runs every case (into its scene's output directory below `output`/cases, each run's log in
+/// logs/<name>.log) and returns their records in the order of `cases`. On MPI ranks other than 0
+/// it serves rank 0 and returns no records.
 std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, const std::filesystem::path& output,
                                      const Registry& registry, spdlog::logger& log, const CampaignOptions& options);
 

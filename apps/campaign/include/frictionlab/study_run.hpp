@@ -1,8 +1,9 @@
 #pragma once
 // Runs an accuracy study (study.hpp): the reference and every case one after another, each an
-// ordinary run into <output>/cases/<name>, then the errors of each case against the reference
-// (study_metrics.hpp) into <output>/study.csv and <output>/study.md. One case at a time (the
-// default) keeps the wall times comparable; each run is bit-reproducible however many run at once.
+// ordinary run into <output>/cases/<name> (cases/<name>/seed_<seed> over seeds), then the errors
+// of each case against the reference (study_metrics.hpp) into <output>/study.csv and
+// <output>/study.md. One case at a time (the default) keeps the wall times comparable; each run is
+// bit-reproducible however many run at once.
 #include <cstdint>
 #include <filesystem>
 #include <string>
