@@ -48,7 +48,9 @@ using Clock = std::chrono::steady_clock;
     try {
         // The directory may hold an interrupted or failed attempt: FrictionLab's own, so replaceable;
         // one of this very scene stopped with a checkpoint goes on from it.
-        RunOptions options{true, campaign.allow_unstable_step, false};
+        RunOptions options;
+        options.overwrite = true;
+        options.allow_unstable_step = campaign.allow_unstable_step;
         // The flag of the handlers the campaign installed, inherited with them: the campaign passes
         // its stop signal on to this process, which then stops like `frictionlab run`.
         options.stop_signal = campaign.stop_signal;
