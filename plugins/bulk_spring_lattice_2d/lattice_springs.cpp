@@ -30,53 +30,56 @@ template <RestVector R = RestVector::any>
     return squared_stretch<R>(dx, dz, c.ref_x, c.ref_z, c.rest_defect, inverse_l2[i]);
 }
 
-/// t of bond i with the series for k (1 - l/r); flags in `beyond` a |delta| over the series' bound
-/// (those bonds are then redone by exact_beyond_bound()).
+/// Whether the series cannot serve a bond's delta (NaN included: it then takes the exact form too).
+inline bool beyond_bound(double delta) { return !(std::abs(delta) <= series_bound); }
+
+/// t of bond i with the series for k (1 - l/r); counts in `beyond` a |delta| over the series' bound
+/// (those bonds are then redone by redo_beyond_bound()).
 template <RestVector R = RestVector::any>
 [[gnu::always_inline]] inline double series_tension(const double* x, const double* z, const double* inverse_l2,
                                                     Index offset, Index i, const SeriesFamily& c,
                                                     std::int64_t& beyond) {
     const double delta = bond_delta<R>(x, z, inverse_l2, offset, i, c);
-    beyond |= !(std::abs(delta) <= series_bound);  // NaN counts as beyond
+    beyond += beyond_bound(delta);
     return c.tension(delta);
 }
 
-/// The series form for every bond. Returns whether some |delta| exceeds the bound.
+/// The series form for every bond. Returns how many |delta| exceed the bound.
 FRICTIONLAB_HOT_KERNEL
-bool geometric_series(const double* __restrict x, const double* __restrict z, const double* __restrict inverse_l2,
-                      Index offset, Index count, SeriesFamily c, double* __restrict fx, double* __restrict fz) {
+Index geometric_series(const double* __restrict x, const double* __restrict z, const double* __restrict inverse_l2,
+                       Index offset, Index count, SeriesFamily c, double* __restrict fx, double* __restrict fz) {
     std::int64_t beyond = 0;  // as wide as a double, so the vectorised reduction needs no lane shuffles
     for (Index i = 0; i < count; ++i) {
         const double t = series_tension(x, z, inverse_l2, offset, i, c, beyond);
         fx[i] = t * (x[i + offset] - x[i]);
         fz[i] = t * (z[i + offset] - z[i]);
     }
-    return beyond != 0;
+    return beyond;
 }
 
 /// The same with each bond's full-vector dashpot added: t Delta + eta_i (v_j - v_i), eta_i the
 /// bond's coefficient (0 on masked pairs, BondDamping). The hot loop of a run: one version per
 /// RestVector, each cloned per ISA (the body is inlined into each clone).
 template <RestVector R>
-[[gnu::always_inline]] inline bool series_damped(const double* __restrict x, const double* __restrict z,
-                                                 const double* __restrict vx, const double* __restrict vz,
-                                                 const double* __restrict inverse_l2, const double* __restrict dashpot,
-                                                 Index offset, Index count, const SeriesFamily& c,
-                                                 double* __restrict fx, double* __restrict fz) {
+[[gnu::always_inline]] inline Index series_damped(const double* __restrict x, const double* __restrict z,
+                                                  const double* __restrict vx, const double* __restrict vz,
+                                                  const double* __restrict inverse_l2, const double* __restrict dashpot,
+                                                  Index offset, Index count, const SeriesFamily& c,
+                                                  double* __restrict fx, double* __restrict fz) {
     std::int64_t beyond = 0;
     for (Index i = 0; i < count; ++i) {
         const double t = series_tension<R>(x, z, inverse_l2, offset, i, c, beyond);
         fx[i] = t * (x[i + offset] - x[i]) + dashpot[i] * (vx[i + offset] - vx[i]);
         fz[i] = t * (z[i + offset] - z[i]) + dashpot[i] * (vz[i + offset] - vz[i]);
     }
-    return beyond != 0;
+    return beyond;
 }
 
-#define FRICTIONLAB_SERIES_DAMPED(name, rest_vector)                                                          \
-    FRICTIONLAB_HOT_KERNEL                                                                                    \
-    bool name(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2, \
-              const double* dashpot, Index offset, Index count, SeriesFamily c, double* fx, double* fz) {     \
-        return series_damped<rest_vector>(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);       \
+#define FRICTIONLAB_SERIES_DAMPED(name, rest_vector)                                                           \
+    FRICTIONLAB_HOT_KERNEL                                                                                     \
+    Index name(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2, \
+               const double* dashpot, Index offset, Index count, SeriesFamily c, double* fx, double* fz) {     \
+        return series_damped<rest_vector>(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);        \
     }
 FRICTIONLAB_SERIES_DAMPED(series_damped_along_x, RestVector::along_x)
 FRICTIONLAB_SERIES_DAMPED(series_damped_along_z, RestVector::along_z)
@@ -84,9 +87,9 @@ FRICTIONLAB_SERIES_DAMPED(series_damped_any, RestVector::any)
 #undef FRICTIONLAB_SERIES_DAMPED
 
 /// geometric_series() with the dashpots, in the version for the family's rest vector.
-bool geometric_series_damped(const double* x, const double* z, const double* vx, const double* vz,
-                             const double* inverse_l2, const double* dashpot, Index offset, Index count,
-                             const SeriesFamily& c, double* fx, double* fz) {
+Index geometric_series_damped(const double* x, const double* z, const double* vx, const double* vz,
+                              const double* inverse_l2, const double* dashpot, Index offset, Index count,
+                              const SeriesFamily& c, double* fx, double* fz) {
     switch (rest_vector_of(c.ref_x, c.ref_z, c.rest_defect)) {
         case RestVector::along_x:
             return series_damped_along_x(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
@@ -98,22 +101,41 @@ bool geometric_series_damped(const double* x, const double* z, const double* vx,
     return series_damped_any(x, z, vx, vz, inverse_l2, dashpot, offset, count, c, fx, fz);
 }
 
-/// The bonds the series could not do, with a square root and a division each (and their dashpots
-/// again if `dashpot` is given). They are few (a point load's neighbourhood at high load): a second
-/// pass finds them by their delta.
-void exact_beyond_bound(const double* x, const double* z, const double* vx, const double* vz, const double* inverse_l2,
-                        const double* dashpot, Index offset, Index count, const SeriesFamily& c, double k, double* fx,
-                        double* fz) {
-    for (Index i = 0; i < count; ++i) {
+/// What redoing a bond beyond the series' bound needs of one family's evaluation.
+struct ExactPass {
+    const double *x, *z, *vx, *vz, *inverse_l2, *dashpot;  // dashpot: nullptr without the dashpots
+    Index offset;
+    const SeriesFamily& c;
+    double k;
+    double *fx, *fz;
+
+    /// Bond i with a square root and a division (and its dashpot again), if the series could not
+    /// do it. Returns whether it did so.
+    bool redo_if_beyond(Index i) const {
         const double delta = bond_delta(x, z, inverse_l2, offset, i, c);
-        if (std::abs(delta) <= series_bound) continue;
+        if (!beyond_bound(delta)) return false;
         const double t = k * tension_factor_exact(delta);
         fx[i] = t * (x[i + offset] - x[i]);
         fz[i] = t * (z[i + offset] - z[i]);
-        if (!dashpot) continue;
-        fx[i] = fx[i] + dashpot[i] * (vx[i + offset] - vx[i]);
-        fz[i] = fz[i] + dashpot[i] * (vz[i + offset] - vz[i]);
+        if (dashpot) {
+            fx[i] = fx[i] + dashpot[i] * (vx[i + offset] - vx[i]);
+            fz[i] = fz[i] + dashpot[i] * (vz[i + offset] - vz[i]);
+        }
+        return true;
     }
+};
+
+/// Redoes the `beyond` bonds the series could not do. They are few (a point load's
+/// neighbourhood at high load) and mostly the same from one evaluation to the next: the bonds in
+/// `last` are tried first, and only if they are not all of them does a second pass over the
+/// family find the rest (and `last` becomes the new list). Each bond's result is the same either way.
+void redo_beyond_bound(const ExactPass& pass, Index count, Index beyond, std::vector<Index>& last) {
+    Index found = 0;
+    for (const Index i : last) found += pass.redo_if_beyond(i);
+    if (found == beyond) return;
+    last.clear();
+    for (Index i = 0; i < count; ++i)
+        if (pass.redo_if_beyond(i)) last.push_back(i);
 }
 
 /// Linearised: t = k (Delta . e - l) along the reference direction e (Delta_u . e, as the rest Delta is l e).
@@ -177,10 +199,12 @@ void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damp
         const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, TensionSeries(k)};
         const double* dashpot = damping ? damping->coefficients(n) : nullptr;
         const double* inverse_l2 = inverse_l2_[n].data();
-        const bool beyond =
+        const Index beyond =
             dashpot ? geometric_series_damped(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, px, pz)
                     : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
-        if (beyond) exact_beyond_bound(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, k, px, pz);
+        if (beyond > 0)
+            redo_beyond_bound({x, z, vx, vz, inverse_l2, dashpot, b.offset, c, k, px, pz}, b.count, beyond,
+                              beyond_bound_[n]);
     }
     pair_.add_to(f.fx.data(), f.fz.data());
 }

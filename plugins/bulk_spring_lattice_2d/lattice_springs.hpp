@@ -64,8 +64,9 @@ private:
     std::array<BondFamily, 4> families_;
     double stiffness_;
     Law law_;
-    PairForces pair_;                                // scratch: this evaluation's per-bond forces
-    std::array<std::vector<double>, 4> inverse_l2_;  // per family: 1/l^2 of each bond, 0 on masked pairs
+    PairForces pair_;                                 // scratch: this evaluation's per-bond forces
+    std::array<std::vector<double>, 4> inverse_l2_;   // per family: 1/l^2 of each bond, 0 on masked pairs
+    std::array<std::vector<Index>, 4> beyond_bound_;  // per family: the bonds beyond the series' bound last time
 };
 
 }  // namespace frictionlab

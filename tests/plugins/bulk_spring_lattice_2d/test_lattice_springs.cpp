@@ -157,6 +157,34 @@ TEST(LatticeSprings, BondFamiliesEqualThePerBondLoopOnAnotherShape) {
     EXPECT_LE((F - ref).cwiseAbs().maxCoeff(), 1e-12 * ref.cwiseAbs().maxCoeff());
 }
 
+/// Bonds beyond the series' bound are remembered from one evaluation to the next: whether they
+/// stay, move elsewhere, grow in number or vanish, every evaluation gives the same bits as a fresh
+/// lattice's (which has none to remember) and the exact law.
+TEST(LatticeSprings, BondsBeyondTheSeriesBoundAreFoundWhereverTheyMove) {
+    LatticeFixture f;
+    const double l = f.body().spacing;
+    // Every node within 1.5 l of (xc, zc) moved by 5 % of l: its bonds strain far beyond the bound.
+    auto poked = [&](std::initializer_list<std::pair<double, double>> centres) {
+        Eigen::VectorXd y = randomly_deformed(f, 3e-4 * l, 5);
+        for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = 1e-3 * std::cos(0.11 * static_cast<double>(i));
+        for (const auto& [xc, zc] : centres)
+            for (Index i = 0; i < f.nodes(); ++i)
+                if (std::hypot(f.body().x0(i) - xc, f.body().z0(i) - zc) < 1.5 * l) y(i) += 0.05 * l;
+        return y;
+    };
+    const double left = 0.1 * f.body().length, right = 0.8 * f.body().length, mid = f.body().height / 2;
+    for (const auto& y : {poked({{left, mid}}), poked({{left, mid}}), poked({{right, mid}}),
+                          poked({{left, mid}, {right, mid}}), poked({}), poked({{right, mid}})}) {
+        LatticeFixture fresh;
+        EXPECT_EQ(f.forces(f.springs(), y), fresh.forces(fresh.springs(), y));
+        EXPECT_EQ(f.bond_forces(y), fresh.bond_forces(y));
+        const Eigen::VectorXd ref = per_bond_reference(f, y, true);
+        // The reference's r - l carries the round-off of the positions.
+        EXPECT_LE((f.forces(f.springs(), y) - ref).cwiseAbs().maxCoeff(),
+                  1e-12 * ref.cwiseAbs().maxCoeff() + position_roundoff_force(f.body().bond_stiffness, 0.12));
+    }
+}
+
 /// Springs and full-vector dashpots in one pass over the bonds give the two effects' sum, where the
 /// series serves (small strain) and where bonds take the exact law (strains of ~10 %).
 TEST(LatticeSprings, InOnePassWithTheBondDampingEqualsBothPasses) {
