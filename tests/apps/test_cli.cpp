@@ -256,7 +256,7 @@ TEST_F(Cli, AMistypedCommandGetsADidYouMean) {
 }
 
 TEST_F(Cli, SharedOptionsGoBeforeOrAfterTheCommand) {
-    for (const std::string args :
+    for (const std::string& args :
          {"-q check " + scene("tiny_lattice.yaml"), "--log-level warn check " + scene("tiny_lattice.yaml"),
           "check -q " + scene("tiny_lattice.yaml")}) {
         auto r = frictionlab(args, dir_);

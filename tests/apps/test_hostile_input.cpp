@@ -204,7 +204,9 @@ void expect_clean_failure(const fs::path& out, const std::string& output, const 
     EXPECT_EQ(record["status"].as<std::string>(), "failed");
     for (const auto& entry : fs::directory_iterator(out)) {
         EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
-        if (entry.path().extension() == ".csv") EXPECT_GE(whole_rows(entry.path()), 0) << entry.path();
+        if (entry.path().extension() == ".csv") {
+            EXPECT_GE(whole_rows(entry.path()), 0) << entry.path();
+        }
     }
 }
 

@@ -90,8 +90,11 @@ TEST_F(Interrupt, ASecondCtrlCStopsAtOnceLeavingEveryFileWhole) {
     cli->signal(SIGINT);
     ASSERT_EQ(cli->wait(60), 130) << cli->output();
     // Whichever came first, the finished step or the second signal, no file is cut mid-write.
-    for (const auto& entry : fs::directory_iterator(dir_ / "out"))
-        if (entry.path().extension() == ".csv") EXPECT_GE(whole_rows(entry.path()), 0) << entry.path();
+    for (const auto& entry : fs::directory_iterator(dir_ / "out")) {
+        if (entry.path().extension() == ".csv") {
+            EXPECT_GE(whole_rows(entry.path()), 0) << entry.path();
+        }
+    }
     EXPECT_NO_THROW(YAML::LoadFile((dir_ / "out" / "run.yaml").string()));
 }
 

@@ -42,8 +42,9 @@ TEST(Conformance, EveryTypeAndKeyIsDocumented) {
             EXPECT_FALSE(t->summary.empty()) << t->type;
             for (const auto& p : t->params) {
                 EXPECT_FALSE(p.doc.empty()) << t->type << "." << p.key;
-                if (p.type == ValueType::real || p.type == ValueType::real_list)
+                if (p.type == ValueType::real || p.type == ValueType::real_list) {
                     EXPECT_FALSE(p.unit.empty()) << t->type << "." << p.key << " is a number without a unit";
+                }
             }
         }
     EXPECT_GE(shipped().types(Kind::friction_law).size(), 5u);

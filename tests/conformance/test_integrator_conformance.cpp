@@ -99,7 +99,7 @@ TEST_P(EveryIntegrator, ShortensAStepToLandOnTheStageEnd) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Conformance, EveryIntegrator, ::testing::ValuesIn(integrator_types()),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& param_info) { return param_info.param; });
 
 }  // namespace
 }  // namespace frictionlab

@@ -114,8 +114,9 @@ TEST_F(Docs, EveryDocumentedCommandRuns) {
                 const auto scene = source / "tests/apps/scenes/tiny_lattice.yaml";
                 std::istringstream words(args.substr(5));
                 for (std::string word; words >> word;)
-                    if (word.rfind("out/", 0) == 0)
+                    if (word.rfind("out/", 0) == 0) {
                         ASSERT_EQ(frictionlab("run " + scene.string() + " -q -o " + word, dir_).code, 0) << word;
+                    }
                 const auto r = frictionlab(args, dir_);
                 EXPECT_EQ(r.code, 0) << f.file << ":" << f.line << ": " << line << "\n" << r.output;
                 continue;

@@ -39,8 +39,9 @@ inline void expect_stable_and_balanced(const HardCase& c) {
         for (const auto& [column, values] : *table)
             for (double v : values)
                 // Two ratios are NaN by definition while their denominator is 0 (glossary).
-                if (column != "relative_residual" && column != "driving_force_over_normal_load")
+                if (column != "relative_residual" && column != "driving_force_over_normal_load") {
                     ASSERT_TRUE(std::isfinite(v)) << column;
+                }
     const double input = energy["input"].back();
     double worst = 0;
     for (double residual : energy["residual"]) worst = std::max(worst, std::abs(residual));

@@ -31,7 +31,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "the far end reverses every 1 ms (5 times, 150 um strokes, theory.md B.22): junctions near the "
                  "driven edge break forwards at each crest (F_S ~ 84 N), relax while dislocated on the way back, "
                  "and break backwards at each trough, where F_S turns negative"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 INSTANTIATE_TEST_SUITE_P(
     Numerics, HardCases,
@@ -42,7 +42,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "--set bulk.nx=101 --set bulk.nz=21 --set stages[0].duration=0.002 --set "
                  "stages[1].duration=0.002",
                  "close to RK4's damping limit at dt = 2e-7 s"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 INSTANTIATE_TEST_SUITE_P(
     Junctions, HardCases,
@@ -53,7 +53,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "mu_d tan(phi0) = 0.99: dislocated force 100x mu_d p; its clamps put kinks in the force law "
                  "within steps, which cost RK4 its order (measured 2.7e-5)",
                  1e-4}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 /// The adaptive integrator on the cases that stress its step control most: its error test, not a
 /// fixed step, must keep the run stable (theory.md B.21), and it must land on the reversal events.
@@ -68,7 +68,7 @@ INSTANTIATE_TEST_SUITE_P(
                                "dormand_prince with ~2600 junctions per block breaking while settling"},
                       HardCase{"adaptive_zero_damping", "--set bulk.damping_factor=0" + adaptive,
                                "dormand_prince on an undamped, ringing lattice"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 /// The quasi-static hybrid on the cases where quiet phases meet the hard parts: a detaching edge, a
 /// heavy load settled with junctions breaking, drive reversals, an undamped lattice that never calms,
@@ -88,7 +88,7 @@ INSTANTIATE_TEST_SUITE_P(
                                "the hybrid on an undamped lattice, which never calms: dynamic throughout"},
                       HardCase{"hybrid_soft_many_junctions", "--set friction.contact_radius=3.0e-6" + hybrid,
                                "the hybrid with ~1150 soft junctions per block"}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& param_info) { return param_info.param.name; });
 
 /// Cases refused as bad input before anything runs.
 TEST(HardCasesRefused, ALatticeBeyondTheDampingLimitAndASingularAngle) {

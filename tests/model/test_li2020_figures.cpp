@@ -52,7 +52,9 @@ TEST(Li2020Figures, Fig7PrecursorsGrowFromTheDrivenEdgeUpToTheGlobalSlip) {
     for (std::size_t k = 0; k < g; ++k) {
         EXPECT_LE(r.events.at("nucleation_block")[k], 1.0) << "precursor " << k;
         EXPECT_GT(length[k], 1.5 / 40) << "precursor " << k << " is a one-block nucleation";
-        if (k > 0) EXPECT_GT(length[k], length[k - 1]) << "precursor " << k << " is not longer";
+        if (k > 0) {
+            EXPECT_GT(length[k], length[k - 1]) << "precursor " << k << " is not longer";
+        }
     }
     EXPECT_GT(length[g - 1], 0.5);
     EXPECT_NEAR(r.events.at("force_ratio")[g], 0.40, 0.04);

@@ -65,7 +65,7 @@ TEST_P(StableStepOfEachScheme, SeparatesRunsJustBelowFromRunsJustAbove) {
 INSTANTIATE_TEST_SUITE_P(Integrators, StableStepOfEachScheme,
                          ::testing::Values(Scheme{"rk4", 5.78e-7}, Scheme{"semi_implicit_euler", 3.73e-7},
                                            Scheme{"velocity_verlet", 4.02e-7}),
-                         [](const auto& info) { return info.param.integrator; });
+                         [](const auto& param_info) { return param_info.param.integrator; });
 
 }  // namespace
 }  // namespace frictionlab
