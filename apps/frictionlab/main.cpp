@@ -358,6 +358,10 @@ void attach_run_flags(CLI::App& cmd, fl::RunOptions& options, bool& removed_forc
 }  // namespace
 
 int main(int argc, char** argv) {
+    // VTK's writers split their arrays over a thread pool whose threads then spin between frames:
+    // for lattices of a few thousand points that costs more than it saves, and a sweep already runs
+    // one case per core. Before any thread or VTK call; a user's own choice stands.
+    setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 0);
     CLI::App app{
         "FrictionLab: simulations of the onset of frictional sliding.\n"
         "Scenes are YAML files naming a bulk model, friction law, loaders, integrator, stages and observers."};
