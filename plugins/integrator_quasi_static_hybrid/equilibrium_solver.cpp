@@ -27,15 +27,6 @@ bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::Vecto
     return factorised_;
 }
 
-void EquilibriumSolver::node_forces(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& out) {
-    const Index dof = 2 * system.layout().nodes;
-    all_forces_.resize(system.layout().size() - dof);
-    // Outside a time step: not a cost of the stepping, no work.
-    all_forces_.setZero();
-    system.add_forces(t, y, all_forces_, Evaluation::outside_step());
-    out = all_forces_.head(dof);
-}
-
 bool EquilibriumSolver::equilibrium(System& system, double t, Eigen::VectorXd& y) {
     ++counts_.solves;
     const Index dof = 2 * system.layout().nodes;
@@ -57,7 +48,7 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < s_.max_iterations; ++it) {
         ++counts_.iterations;
-        node_forces(system, t, y, forces_);
+        node_forces(system, t, y, all_forces_, forces_);
         dq_ = ldlt_.solve(forces_);
         const double size = dq_.lpNorm<Eigen::Infinity>();
         // Not contracting (a K far off, a contact flipping in and out): give up rather than wander.
@@ -74,14 +65,14 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
 
 bool EquilibriumSolver::in_equilibrium(System& system, double t, const Eigen::VectorXd& y, double tolerance) {
     if (!factorised_) return false;
-    node_forces(system, t, y, forces_);
+    node_forces(system, t, y, all_forces_, forces_);
     return (forces_.array().abs() / diagonal_.array()).maxCoeff() <= tolerance;
 }
 
 void EquilibriumSolver::drive_rate(System& system, double t, const Eigen::VectorXd& y) {
     // The later evaluation first, so the quantities the effects publish describe (t, y) after it.
-    node_forces(system, t + s_.rate_step, y, later_);
-    node_forces(system, t, y, forces_);
+    node_forces(system, t + s_.rate_step, y, all_forces_, later_);
+    node_forces(system, t, y, all_forces_, forces_);
     rhs_ = (later_ - forces_) / s_.rate_step;
 }
 
@@ -113,9 +104,9 @@ bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::Vector
         const double e = s_.probe_displacement / speed;
         probe_ = y;
         probe_.head(dof) += e * v;
-        node_forces(system, t, probe_, kv_);
+        node_forces(system, t, probe_, all_forces_, kv_);
         probe_.head(dof) -= (2 * e) * v;
-        node_forces(system, t, probe_, later_);
+        node_forces(system, t, probe_, all_forces_, later_);
         kv_ = (later_ - kv_) / (2 * e);
         dv_ = ldlt_.solve(rhs_ - kv_);
         const double size = dv_.lpNorm<Eigen::Infinity>();
@@ -123,7 +114,7 @@ bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::Vector
         v += dv_;
         if (size <= std::max(s_.velocity_tolerance * speed, absolute)) {
             stale_ = stale_ || it >= s_.slow_after;
-            node_forces(system, t, y, forces_);  // the published quantities describe (t, y) again
+            node_forces(system, t, y, all_forces_, forces_);  // the published quantities describe (t, y) again
             return true;
         }
         previous = size;

@@ -22,8 +22,9 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/simulation/system.hpp"
+#include "node_forces.hpp"
+#include "sparse_archive.hpp"
 
 namespace frictionlab {
 
@@ -67,24 +68,12 @@ public:
     template <class Archive>
     void save(Archive& ar) const {
         ar(counts_.solves, counts_.iterations, counts_.factorisations, factorised_, stale_, pattern_size_);
-        using Indices = std::vector<Eigen::SparseMatrix<double>::StorageIndex>;
-        const auto outer = stiffness_.outerIndexPtr(), inner = stiffness_.innerIndexPtr();
-        const auto nonzeros = static_cast<std::size_t>(stiffness_.nonZeros());
-        ar(static_cast<std::int64_t>(stiffness_.rows()), static_cast<std::int64_t>(stiffness_.cols()),
-           Indices(outer, outer + stiffness_.outerSize() + 1), Indices(inner, inner + nonzeros),
-           std::vector<double>(stiffness_.valuePtr(), stiffness_.valuePtr() + nonzeros));
+        save_sparse(ar, stiffness_);
     }
     template <class Archive>
     void load(Archive& ar) {
         ar(counts_.solves, counts_.iterations, counts_.factorisations, factorised_, stale_, pattern_size_);
-        std::int64_t rows = 0, cols = 0;
-        std::vector<Eigen::SparseMatrix<double>::StorageIndex> outer, inner;
-        std::vector<double> values;
-        ar(rows, cols, outer, inner, values);
-        if (rows < 0 || cols < 0 || outer.size() != static_cast<std::size_t>(cols) + 1 || inner.size() != values.size())
-            throw cereal::Exception("the checkpoint's stiffness matrix is malformed");
-        stiffness_ = Eigen::Map<const Eigen::SparseMatrix<double>>(rows, cols, static_cast<Index>(values.size()),
-                                                                   outer.data(), inner.data(), values.data());
+        load_sparse(ar, stiffness_);
         if (factorised_) ldlt_.analyzePattern(stiffness_), ldlt_.factorize(stiffness_);
         diagonal_ = stiffness_.diagonal();
     }
@@ -99,8 +88,6 @@ private:
     bool refined_velocity(System& system, double t, Eigen::VectorXd& y, double absolute = 0);
     /// dF/dt at (t, y), the right-hand side of the steady velocities.
     void drive_rate(System& system, double t, const Eigen::VectorXd& y);
-    /// The position part of the forces at (t, y), into out.
-    void node_forces(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& out);
 
     Settings s_;
     Counts counts_;
