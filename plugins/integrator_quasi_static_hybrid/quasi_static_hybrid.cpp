@@ -48,6 +48,8 @@ constexpr int full_check_every = 10;
 /// A check for calm finds the steady velocities to this fraction of quiet_speed: its verdict then
 /// differs from an exact one's only for velocities within that of the bound.
 constexpr double check_accuracy = 1e-2;
+/// Creep steps resume once every node is slower than this fraction of creep_speed: the hysteresis.
+constexpr double creep_resume = 0.5;
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<Integrator> dynamic_scheme(const Params& p, const Context& ctx) {
@@ -66,6 +68,15 @@ std::string hold_rule(const Params& p) {
             "quiet_hold = {:g} s must be at least check_interval = {:g} s (the calm is judged at "
             "the checks)",
             p.quiet_hold, p.check_interval);
+    return {};
+}
+
+std::string creep_rule(const Params& p) {
+    if (p.creep_step > 0 && p.creep_step <= p.dt)
+        return fmt::format(
+            "creep_step = {:g} s must be 0 (no creep steps) or longer than dt = {:g} s (an implicit step "
+            "as short as the explicit one gains nothing)",
+            p.creep_step, p.dt);
     return {};
 }
 
@@ -117,7 +128,17 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
           "Newton converges when its largest position correction is below this.")
         .unit("m")
         .greater_than(0);
+    s.add("creep_step", &Params::creep_step,
+          "Length of the implicit creep steps (the trapezoidal rule) the dynamic phase takes while every node "
+          "moves slower than creep_speed; 0: none, the explicit scheme takes every dynamic step.")
+        .unit("s")
+        .at_least(0);
+    s.add("creep_speed", &Params::creep_speed,
+          "Creep steps are taken while every node moves slower than this, and resume below half of it.")
+        .unit("m/s")
+        .greater_than(0);
     s.rule("quiet_hold", hold_rule);
+    s.rule("creep_step", creep_rule);
     return s;
 }
 
@@ -125,10 +146,13 @@ QuasiStaticHybrid::QuasiStaticHybrid(const Params& p, const Context& ctx)
     : p_(spec().checked(p)),
       log_(ctx.log),
       dynamic_(dynamic_scheme(p, ctx)),
-      solver_({.position_tolerance = p.position_tolerance, .rate_step = p.dt}) {}
+      solver_({.position_tolerance = p.position_tolerance, .rate_step = p.dt}),
+      creep_({.step = p.creep_step, .position_tolerance = p.position_tolerance, .event_overshoot = p.event_overshoot}) {
+}
 
 QuasiStaticHybrid::~QuasiStaticHybrid() {
-    const double total = quiet_time_ + dynamic_time_, wall = seconds(quiet_wall_ + dynamic_wall_);
+    const double total = quiet_time_ + dynamic_time_ + creep_time_,
+                 wall = seconds(quiet_wall_ + dynamic_wall_ + creep_wall_);
     if (total > 0)
         log_.info(
             "quasi_static_hybrid: quiet {:.4g} % of simulated time ({} steps), {:.4g} % of wall time; dynamic "
@@ -137,14 +161,25 @@ QuasiStaticHybrid::~QuasiStaticHybrid() {
             100 * quiet_time_ / total, quiet_steps_, wall > 0 ? 100 * seconds(quiet_wall_) / wall : 0.0, dynamic_steps_,
             to_quiet_, to_dynamic_, solver_.counts().solves, solver_.counts().iterations,
             solver_.counts().factorisations);
+    if (creep_.counts().steps > 0)
+        log_.info(
+            "quasi_static_hybrid: creep steps {:.4g} % of simulated time ({} steps, {} Newton iterations, {} "
+            "factorisations), {:.4g} % of wall time",
+            100 * creep_time_ / total, creep_.counts().steps, creep_.counts().iterations,
+            creep_.counts().factorisations, wall > 0 ? 100 * seconds(creep_wall_) / wall : 0.0);
 }
 
 std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() const {
-    const double total = quiet_time_ + dynamic_time_, wall = seconds(quiet_wall_ + dynamic_wall_);
+    const double total = quiet_time_ + dynamic_time_ + creep_time_,
+                 wall = seconds(quiet_wall_ + dynamic_wall_ + creep_wall_);
     return {{"quiet_fraction_of_simulated_time", total > 0 ? quiet_time_ / total : 0.0},
             {"quiet_fraction_of_wall_time", wall > 0 ? seconds(quiet_wall_) / wall : 0.0},
+            {"creep_fraction_of_simulated_time", total > 0 ? creep_time_ / total : 0.0},
+            {"creep_fraction_of_wall_time", wall > 0 ? seconds(creep_wall_) / wall : 0.0},
             {"quiet_seconds_wall", seconds(quiet_wall_)},
             {"dynamic_seconds_wall", seconds(dynamic_wall_)},
+            {"creep_seconds_wall", seconds(creep_wall_)},
+            {"creep_steps", static_cast<double>(creep_.counts().steps)},
             {"quiet_steps", static_cast<double>(quiet_steps_)},
             {"quiet_spans", static_cast<double>(spans_)},
             {"dynamic_steps", static_cast<double>(dynamic_steps_)},
@@ -181,9 +216,11 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
         calm_since_ = std::numeric_limits<double>::quiet_NaN();
         next_check_ = system.time() + p_.check_interval;
     }
-    const double h = dynamic_->step(system, max_dt);
-    ++dynamic_steps_;
-    dynamic_time_ += h;
+    const double t = system.time();
+    const bool creep = creep_step(system, max_dt);
+    const double h = creep ? system.time() - t : dynamic_->step(system, max_dt);
+    (creep ? creep_time_ : dynamic_time_) += h;
+    if (!creep) ++dynamic_steps_;
     if (system.time() >= next_check_) {
         next_check_ = system.time() + p_.check_interval;
         if (may_turn_quiet(system)) {
@@ -191,8 +228,16 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
             log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
         }
     }
-    dynamic_wall_ += Clock::now() - start;
+    (creep ? creep_wall_ : dynamic_wall_) += Clock::now() - start;
     return h;
+}
+
+bool QuasiStaticHybrid::creep_step(System& system, double max_dt) {
+    if (p_.creep_step == 0) return false;
+    const Index n = system.layout().nodes;
+    const double speed = system.y().segment(2 * n, 2 * n).lpNorm<Eigen::Infinity>();
+    creeping_ = speed <= (creeping_ ? 1 : creep_resume) * p_.creep_speed;
+    return creeping_ && creep_.step(system, max_dt);
 }
 
 bool QuasiStaticHybrid::may_turn_quiet(System& system) {

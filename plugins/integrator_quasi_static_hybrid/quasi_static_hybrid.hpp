@@ -6,6 +6,7 @@
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
+#include "creep_stepper.hpp"
 #include "equilibrium_solver.hpp"
 
 namespace frictionlab {
@@ -40,6 +41,12 @@ namespace frictionlab {
 /// that keeps a marginal case (a ringing lattice, a junction close to its threshold) from switching
 /// at every check. On return the residual vibration (speeds below quiet_speed) is projected away;
 /// its kinetic energy shows in the energy observer's residual, bounded by 1/2 M quiet_speed^2.
+///
+/// Creep steps (creep_step > 0): within the dynamic phase, while every node moves slower than
+/// creep_speed, the steps are implicit ones of creep_step (CreepStepper, the trapezoidal rule)
+/// rather than the explicit scheme's, but for the spans of less than creep_step before an event,
+/// an observation or the stage's end; the explicit scheme takes over above creep_speed and hands
+/// back below half of it (the hysteresis).
 class QuasiStaticHybrid final : public Integrator {
 public:
     /// The explicit scheme of the dynamic phase.
@@ -57,6 +64,8 @@ public:
         double max_quiet_step = 1e-3;
         double event_overshoot = 1e-12;
         double position_tolerance = 1e-13;
+        double creep_step = 0;
+        double creep_speed = 1e-3;
     };
     static constexpr std::string_view type = "quasi_static_hybrid";
     static ParamSpec<Params> spec();
@@ -71,12 +80,14 @@ public:
     void restore_state(StateIn& in) override;
     template <class Archive>
     void serialize(Archive& ar) {
-        auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count();
-        ar(solver_, y_, start_, span_end_, span_start_time_, span_end_time_, in_span_, spans_, quiet_, projected_,
-           next_check_, calm_since_, steady_, checks_since_full_, to_quiet_, to_dynamic_, quiet_steps_, dynamic_steps_,
-           jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall, dynamic_wall);
+        auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count(), creep_wall = creep_wall_.count();
+        ar(solver_, creep_, creeping_, creep_time_, creep_wall, y_, start_, span_end_, span_start_time_, span_end_time_,
+           in_span_, spans_, quiet_, projected_, next_check_, calm_since_, steady_, checks_since_full_, to_quiet_,
+           to_dynamic_, quiet_steps_, dynamic_steps_, jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall,
+           dynamic_wall);
         quiet_wall_ = std::chrono::steady_clock::duration(quiet_wall);
         dynamic_wall_ = std::chrono::steady_clock::duration(dynamic_wall);
+        creep_wall_ = std::chrono::steady_clock::duration(creep_wall);
     }
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
@@ -97,12 +108,16 @@ public:
     /// Quiet spans solved; the quiet steps within them land on the line between the span's ends.
     long long quiet_spans() const { return spans_; }
     long long jumps_solved() const { return jumps_; }
+    const CreepStepper::Counts& creep_counts() const { return creep_.counts(); }
 
 private:
     /// One quiet step, or false (nothing done) if the system must be stepped dynamically now.
     bool quiet_step(System& system, double max_dt, double& h);
     /// One step within the solved span: to its end, or to the observation max_dt ahead on the line to it.
     bool span_step(System& system, double max_dt, double& h);
+    /// A creep step, if creep steps are on, every node is slow enough (with the hysteresis) and the
+    /// creep stepper takes it; false (nothing done) for the explicit scheme to step.
+    bool creep_step(System& system, double max_dt);
     /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis).
     bool may_turn_quiet(System& system);
     /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
@@ -120,6 +135,8 @@ private:
     spdlog::logger& log_;
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
+    CreepStepper creep_;
+    bool creeping_ = false;         // below creep_speed (with the hysteresis)
     Eigen::VectorXd y_;             // the quiet solution being formed
     Eigen::VectorXd start_, mean_;  // a quiet span's start, and its start with the span's mean velocity
     Eigen::VectorXd span_end_;      // the quiet span's solved end
@@ -134,9 +151,9 @@ private:
     Eigen::VectorXd steady_;     // the steady velocities of the last full check for calm
     int checks_since_full_ = 0;  // checks since it
     long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0, jumps_ = 0;
-    int short_steps_ = 0;                       // quiet steps in a row shorter than dt
-    double quiet_time_ = 0, dynamic_time_ = 0;  // simulated, s
-    std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{};
+    int short_steps_ = 0;                                        // quiet steps in a row shorter than dt
+    double quiet_time_ = 0, dynamic_time_ = 0, creep_time_ = 0;  // simulated, s
+    std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{}, creep_wall_{};
 };
 
 }  // namespace frictionlab

@@ -90,6 +90,25 @@ INSTANTIATE_TEST_SUITE_P(
                                "the hybrid with ~1150 soft junctions per block"}),
     [](const auto& param_info) { return param_info.param.name; });
 
+/// The hybrid's creep steps (implicit, ten explicit steps long) where slow motion meets the hard
+/// parts: drive reversals, an undamped lattice, many soft junctions, a heavy load settling. The
+/// trapezoidal rule's work must keep the balance as the explicit scheme's does.
+const std::string creep = " --set 'integrator={type: quasi_static_hybrid, creep_step: 2.0e-6, dt: 2.0e-7}'";
+
+INSTANTIATE_TEST_SUITE_P(
+    Creep, HardCases,
+    ::testing::Values(HardCase{"creep_velocity_reversals",
+                               "--set loaders[2].velocity=0.15 --set loaders[2].reversal_period=0.002" + creep,
+                               "creep steps through five drive reversals"},
+                      HardCase{"creep_zero_damping",
+                               "--set bulk.damping_factor=0" + creep + " --set integrator.creep_speed=1",
+                               "creep steps on an undamped lattice (no dashpots to probe), however fast it rings"},
+                      HardCase{"creep_soft_many_junctions", "--set friction.contact_radius=3.0e-6" + creep,
+                               "creep steps with ~1150 soft junctions per block"},
+                      HardCase{"creep_normal_2kN", "--set loaders[1].total_force=2000" + heavy_settle + creep,
+                               "creep steps settling a heavy load through junction breaks"}),
+    [](const auto& param_info) { return param_info.param.name; });
+
 /// Cases refused as bad input before anything runs.
 TEST(HardCasesRefused, ALatticeBeyondTheDampingLimitAndASingularAngle) {
     const auto dir = testing::work_directory();

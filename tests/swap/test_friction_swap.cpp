@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -276,14 +277,20 @@ TEST(FrictionSwap, EveryLawReachesItsFirstEventWithTheQuasiStaticHybridWithinRk4
     for (const char* law : {"coulomb", "slip_weakening", "two_state_junctions", "three_state_junctions"}) {
         const LawRun rk4 = run_with(law, " --set 'integrator={type: rk4, dt: 2.0e-7}'");
         const LawRun halved = run_with(law, " --set 'integrator={type: rk4, dt: 1.0e-7}'");
-        const LawRun hybrid = run_with(law, " --set 'integrator={type: quasi_static_hybrid, dt: 2.0e-7}'");
-        const YAML::Node stats = YAML::LoadFile((hybrid.out / "run.yaml").string())["integrator_statistics"];
-        EXPECT_GE(stats["quiet_steps"].as<double>(), 100) << law << ": no stuck span crossed quietly";
-        for (const auto& [column, slack] : {std::pair{"t_start", 1.01e-5}, std::pair{"force_ratio", 1e-4 * 0.2},
-                                            std::pair{"extent_over_length", 1.01 / (blocks - 1)}}) {
-            const double a = first_event(rk4, column), b = first_event(halved, column);
-            EXPECT_GE(first_event(hybrid, column), std::min(a, b) - slack) << law << " " << column;
-            EXPECT_LE(first_event(hybrid, column), std::max(a, b) + slack) << law << " " << column;
+        // Without and with creep steps (implicit, ten explicit steps long) in the slow dynamic spans.
+        for (const double creep_step : {0.0, 2e-6}) {
+            const LawRun hybrid = run_with(law, fmt::format(" --set 'integrator={{type: quasi_static_hybrid, dt: "
+                                                            "2.0e-7, creep_step: {}}}'",
+                                                            creep_step));
+            const YAML::Node stats = YAML::LoadFile((hybrid.out / "run.yaml").string())["integrator_statistics"];
+            EXPECT_GE(stats["quiet_steps"].as<double>(), 100) << law << ": no stuck span crossed quietly";
+            EXPECT_EQ(stats["creep_steps"].as<double>() > 0, creep_step > 0) << law;
+            for (const auto& [column, slack] : {std::pair{"t_start", 1.01e-5}, std::pair{"force_ratio", 1e-4 * 0.2},
+                                                std::pair{"extent_over_length", 1.01 / (blocks - 1)}}) {
+                const double a = first_event(rk4, column), b = first_event(halved, column);
+                EXPECT_GE(first_event(hybrid, column), std::min(a, b) - slack) << law << " " << column << creep_step;
+                EXPECT_LE(first_event(hybrid, column), std::max(a, b) + slack) << law << " " << column << creep_step;
+            }
         }
     }
 }
