@@ -44,7 +44,7 @@ bool CreepStepper::refactorise(System& system) {
     diagonal_ = jacobian_.diagonal();
     ++counts_.factorisations;
     stale_ = false;
-    factorised_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0).all();
+    factorised_ = ldlt_.positive_definite();
     return factorised_;
 }
 

@@ -8,7 +8,7 @@
 //
 // Newton on q1 with J = K + (2/h) C + (4/h^2) M, K = -dF/dq assembled from the effects
 // (Effect::add_stiffness), C = -dF/dv found once by probing the forces along each velocity (the
-// dashpots are linear), M the masses; J is factorised by a sparse LDL^T and kept from step to step
+// dashpots are linear), M the masses; J is factorised by a sparse LDL^T (SparseLdlt) and kept from step to step
 // (its residual is always exact, so the solution is too) until a step needs more than slow_after
 // iterations. A step ends exactly where it was asked to: a step is refused (nothing done, the
 // explicit scheme takes over) when an event is due within it (a junction clock, a threshold the
@@ -16,12 +16,12 @@
 // observation). Forces and their work are those of the trapezoidal rule: the energy balance closes.
 #include <limits>
 
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include "frictionlab/simulation/system.hpp"
 #include "node_forces.hpp"
 #include "sparse_archive.hpp"
+#include "sparse_ldlt.hpp"
 
 namespace frictionlab {
 
@@ -75,7 +75,7 @@ private:
     Counts counts_;
     Eigen::ArrayXd mass_;  // per degree of freedom
     Eigen::SparseMatrix<double> damping_, jacobian_;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+    SparseLdlt ldlt_;
     Eigen::VectorXd diagonal_;
     bool factorised_ = false, stale_ = false;
     double blocked_until_ = -std::numeric_limits<double>::infinity();  // a foreseen event's time

@@ -15,13 +15,13 @@ constexpr int max_renewals = 3;
 
 bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::VectorXd& y) {
     system.assemble_stiffness(view_of(y, system.layout(), t), stiffness_);
-    // The symbolic analysis (AMD ordering, elimination tree) only when the pattern may have changed.
+    // The symbolic analysis (fill-reducing ordering, elimination tree) only when the pattern may have changed.
     if (stiffness_.nonZeros() != pattern_size_) ldlt_.analyzePattern(stiffness_), pattern_size_ = stiffness_.nonZeros();
     ldlt_.factorize(stiffness_);
     diagonal_ = stiffness_.diagonal();
     ++counts_.factorisations;
     // A singular or indefinite stiffness (a body mode nothing holds) has no stable static equilibrium.
-    factorised_ = ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0).all();
+    factorised_ = ldlt_.positive_definite();
     stale_ = false;
     if (!factorised_) pattern_size_ = -1;
     return factorised_;
@@ -108,7 +108,8 @@ bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::Vector
         probe_.head(dof) -= (2 * e) * v;
         node_forces(system, t, probe_, all_forces_, later_);
         kv_ = (later_ - kv_) / (2 * e);
-        dv_ = ldlt_.solve(rhs_ - kv_);
+        residual_ = rhs_ - kv_;
+        dv_ = ldlt_.solve(residual_);
         const double size = dv_.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(size) || size > contraction * previous) return false;
         v += dv_;

@@ -5,7 +5,7 @@
 //
 //   Newton:   K dq = F(q, v, t),  q <- q + dq,  until max |dq| <= position_tolerance, with
 //             K = -dF/dq assembled from the effects (Effect::add_stiffness) and factorised by a
-//             sparse LDL^T (Eigen::SimplicialLDLT, AMD ordering). The factorisation is kept from
+//             sparse LDL^T (SparseLdlt: CHOLMOD's). The factorisation is kept from
 //             solve to solve: while the set of pinned junctions and contacts is unchanged and the
 //             geometric springs barely turn, K hardly changes, and Newton with the kept K (its
 //             residual always evaluated exactly, so the solution is exact) converges in an
@@ -19,12 +19,12 @@
 //             correction is below velocity_tolerance times |v|. Holding that v in F(q, v, t) = 0 is
 //             the viscous lag of the driven lattice: its dashpots carry C v, as in the dynamic
 //             run's stuck phase.
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include "frictionlab/simulation/system.hpp"
 #include "node_forces.hpp"
 #include "sparse_archive.hpp"
+#include "sparse_ldlt.hpp"
 
 namespace frictionlab {
 
@@ -92,10 +92,10 @@ private:
     Settings s_;
     Counts counts_;
     Eigen::SparseMatrix<double> stiffness_;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+    SparseLdlt ldlt_;
     bool factorised_ = false, stale_ = false;
     Index pattern_size_ = -1;
-    Eigen::VectorXd guess_, all_forces_, forces_, later_, rhs_, dq_, probe_, kv_, dv_;
+    Eigen::VectorXd guess_, all_forces_, forces_, later_, rhs_, dq_, probe_, kv_, dv_, residual_;
     Eigen::VectorXd diagonal_;  // of the stiffness factorised
 };
 
