@@ -23,8 +23,9 @@ const std::vector<std::string> event_columns{
     "event",          "finished",       "t_start",          "t_end",        "duration",    "driving_force",
     "normal_load",    "force_ratio",    "nucleation_block", "nucleation_x", "extent",      "extent_over_length",
     "min_ruptured_x", "max_ruptured_x", "ruptured_blocks",  "global",       "front_speed", "crossing_speed",
-    "max_slip"};
+    "max_slip",       "out_of_contact"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay"};
+const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
 
 }  // namespace
 
@@ -32,6 +33,7 @@ namespace {
 std::vector<OutputName> outputs(const Precursors::Params& p) {
     auto out = table_outputs("events_file", p.events_file, p.format);
     for (auto& o : table_outputs("fronts_file", p.fronts_file, p.format)) out.push_back(std::move(o));
+    for (auto& o : table_outputs("contact_file", p.contact_file, p.format)) out.push_back(std::move(o));
     out.push_back({"summary_file", p.summary_file});
     return out;
 }
@@ -45,8 +47,8 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     s.choice("criterion", &Params::criterion,
              {{"pinned_fraction", Criterion::pinned_fraction}, {"slip", Criterion::slip}},
              "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
-             "pinned, or it has none; needs the junction-count fields) or 'slip' (it slipped more than "
-             "slip_threshold within quiet_time).");
+             "pinned; needs the junction-count fields) or 'slip' (it slipped more than slip_threshold within "
+             "quiet_time). Either way a block out of contact (lifted off) is not ruptured.");
     s.add("ruptured_fraction", &Params::ruptured_fraction,
           "Criterion pinned_fraction: fraction of a block's junctions that must be sliding or dislocated.")
         .unit("1")
@@ -78,6 +80,9 @@ ParamSpec<Precursors::Params> Precursors::spec() {
           "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
           "CSV file of the fronts: per event and block, when the block first ruptured.");
+    s.add("contact_file", &Params::contact_file,
+          "File of the blocks' lift-offs and re-contacts, one row each (in_contact 0: lifted off, 1: in contact "
+          "again); a block is in contact while it has junctions, or without junction counts a normal force.");
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
     add_table_format_param(s, &Params::format);
     add_outputs(s, outputs);
@@ -106,6 +111,16 @@ void Precursors::begin(const RunView& view) {
         RuptureEventDetector::Options{params_.global_span, params_.nucleation_window_quiet_times * params_.quiet_time});
 
     const Quantities& q = view.quantities;
+    if (!counts_) counts_ = JunctionCounts::find(q, n);
+    if (!counts_) {
+        const Quantities::Field* f = q.find_field("normal_force");
+        if (f && f->node_set == "interface" && f->values.size() == n)
+            normal_force_ = &f->values;
+        else
+            view.log.warn(
+                "precursors: neither junction counts nor 'normal_force' over the interface; every block "
+                "is taken to be in contact");
+    }
     if (const auto* s = q.find_scalar("driving_force"))
         driving_force_ = &s->value;
     else
@@ -117,9 +132,12 @@ void Precursors::begin(const RunView& view) {
 
     slip_.resize(n);
     ruptured_.resize(n);
+    contact_ = BlockMask::Constant(n, true);
     const TableFormat format = params_.format;
     events_ = open_table(view.output_directory / params_.events_file, event_columns, view.info, format, view.resuming);
     fronts_ = open_table(view.output_directory / params_.fronts_file, front_columns, view.info, format, view.resuming);
+    contact_table_ =
+        open_table(view.output_directory / params_.contact_file, contact_columns, view.info, format, view.resuming);
     row_.reserve(event_columns.size());
     if (!view.resuming) write_summary(view, false);
 }
@@ -130,17 +148,28 @@ void Precursors::observe(const RunView& view) {
         const Index node = interface_[i];
         slip_(static_cast<Index>(i)) = view.state.x(node) - view.body.x0(node);
     }
-    if (counts_)
+    if (params_.criterion == Criterion::pinned_fraction)
         ruptured_by_pinned_fraction(*counts_->pinned, *counts_->sliding, *counts_->dislocated,
                                     params_.ruptured_fraction, ruptured_);
     else
         slip_criterion_->apply(view.state.t, slip_, ruptured_);
+    observe_contact(view);
     const double f_s = driving_force_ ? *driving_force_ : nan;
     const double f_n = normal_load_ ? *normal_load_ : nan;
-    if (auto ended = detector_->observe(view.state.t, ruptured_, slip_, f_s, f_n)) {
+    if (auto ended = detector_->observe(view.state.t, ruptured_, contact_, slip_, f_s, f_n)) {
         write(*ended);
         write_summary(view, false);
     }
+}
+
+void Precursors::observe_contact(const RunView& view) {
+    if (counts_)
+        in_contact_by_junctions(*counts_->pinned, *counts_->sliding, *counts_->dislocated, contact_);
+    else if (normal_force_)
+        in_contact_by_normal_force(*normal_force_, contact_);
+    const auto& changes = contact_changes_.observe(view.state.t, contact_);
+    for (const ContactChange& c : changes)
+        contact_table_->row({c.t, double(c.block), detector_->interface().x(c.block), c.in_contact ? 1.0 : 0.0});
 }
 
 void Precursors::end(const RunView& view) {
@@ -150,10 +179,26 @@ void Precursors::end(const RunView& view) {
 }
 
 void Precursors::write(const RuptureEvent& e) {
-    row_.assign({double(e.index), e.finished ? 1.0 : 0.0, e.t_start, e.t_end, e.duration(), e.driving_force,
-                 e.normal_load, e.force_ratio(), double(e.nucleation), e.nucleation_x, e.extent, e.extent_over_length,
-                 e.min_x, e.max_x, double(e.ruptured_blocks), e.global ? 1.0 : 0.0, e.front_speed, e.crossing_speed,
-                 e.max_slip});
+    row_.assign({double(e.index),
+                 e.finished ? 1.0 : 0.0,
+                 e.t_start,
+                 e.t_end,
+                 e.duration(),
+                 e.driving_force,
+                 e.normal_load,
+                 e.force_ratio(),
+                 double(e.nucleation),
+                 e.nucleation_x,
+                 e.extent,
+                 e.extent_over_length,
+                 e.min_x,
+                 e.max_x,
+                 double(e.ruptured_blocks),
+                 e.global ? 1.0 : 0.0,
+                 e.front_speed,
+                 e.crossing_speed,
+                 e.max_slip,
+                 double(e.out_of_contact)});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
@@ -164,7 +209,8 @@ void Precursors::write(const RuptureEvent& e) {
     }
 }
 
-std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& info, bool run_ended) {
+std::string Precursors::summary_text(const RuptureSummary& s, const ContactChanges& contact, const RunInfo& info,
+                                     bool run_ended) {
     std::string out;
     auto line = [&](std::string_view key, const std::string& value) { out += fmt::format("{}: {}\n", key, value); };
     out += "# Rupture events (theory.md B.19, B.20). Numbers in SI units; null: not (yet) observed.\n";
@@ -178,6 +224,9 @@ std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& inf
     line("global_static_coefficient", yaml_number(s.global_seen ? s.global_static_coefficient() : nan));
     line("peak_driving_force", yaml_number(s.peak_driving_force));
     line("peak_driving_force_time", yaml_number(s.peak_time));
+    line("lift_offs", std::to_string(contact.lift_offs()));
+    line("re_contacts", std::to_string(contact.re_contacts()));
+    line("blocks_out_of_contact", std::to_string(contact.out_of_contact()));
     out += "run:\n";
     out += Provenance::of(info).yaml(2);
     return out;
@@ -186,7 +235,7 @@ std::string Precursors::summary_text(const RuptureSummary& s, const RunInfo& inf
 void Precursors::write_summary(const RunView& view, bool run_ended) const {
     // A reader (or a run killed mid-write) never sees half a summary.
     write_file_atomically(view.output_directory / params_.summary_file,
-                          summary_text(detector_->summary(), view.info, run_ended));
+                          summary_text(detector_->summary(), contact_changes_, view.info, run_ended));
 }
 
 }  // namespace frictionlab

@@ -11,6 +11,7 @@
 #include "frictionlab/base/param_spec.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/simulation/run.hpp"
+#include "contact_changes.hpp"
 #include "rupture_criterion.hpp"
 #include "rupture_event_detector.hpp"
 
@@ -23,8 +24,12 @@ namespace frictionlab {
 ///
 /// At each observation (cadence ≤ 10 µs, B.19) every interface block is judged ruptured or not:
 ///
-///     pinned_fraction:  (N_s + N_d) > ruptured_fraction (N_p + N_s + N_d), or no junction at all
+///     pinned_fraction:  (N_s + N_d) > ruptured_fraction (N_p + N_s + N_d)
 ///     slip:             u = x - x0 grew by more than slip_threshold within quiet_time
+///
+/// A block out of contact (B.19b: no junctions, or without junction counts no normal force: it has
+/// lifted off) is neither, takes no part in rupture decisions, and its lift-off and re-contact are
+/// reported on their own.
 ///
 /// and RuptureEventDetector groups the ruptured blocks into events (start, end, nucleation block,
 /// extent l = min(L, x_max + l_s/2) with x_max the farthest ruptured block from the trailing edge,
@@ -38,6 +43,7 @@ namespace frictionlab {
 ///     precursors.csv             one row per event, written when the event ends; at the end of
 ///                                the run an open event is written with finished = 0
 ///     precursor_fronts.csv       per event and ruptured block: when it first ruptured
+///     contact_changes.csv        per block that lifts off or touches down again: when
 ///     precursors_summary.yaml    precursors before the first global slip, the global static
 ///                                coefficient F_S/F_N at its start (B.20), the peak F_S, the number
 ///                                of events, run metadata; rewritten atomically after each event
@@ -52,7 +58,7 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(as_built(detector_), as_built(slip_criterion_), ruptured_);
+        ar(as_built(detector_), as_built(slip_criterion_), ruptured_, contact_changes_);
     }
     enum class Criterion { pinned_fraction, slip };
     struct Params {
@@ -65,6 +71,7 @@ public:
         std::string stage = "load";
         std::string events_file = "precursors.csv";
         std::string fronts_file = "precursor_fronts.csv";
+        std::string contact_file = "contact_changes.csv";
         std::string summary_file = "precursors_summary.yaml";
         TableFormat format = TableFormat::csv;
     };
@@ -78,22 +85,27 @@ public:
     void end(const RunView& view) override;
 
     /// The summary file's text: what the detector found so far and the run's record.
-    static std::string summary_text(const RuptureSummary& s, const RunInfo& info, bool run_ended);
+    static std::string summary_text(const RuptureSummary& s, const ContactChanges& contact, const RunInfo& info,
+                                    bool run_ended);
 
 private:
     void write(const RuptureEvent& e);
+    void observe_contact(const RunView& view);
     void write_summary(const RunView& view, bool run_ended) const;
 
     Params params_;
     std::optional<RuptureEventDetector> detector_;
     std::optional<JunctionCounts> counts_;
     std::optional<SlipRuptureCriterion> slip_criterion_;
+    const Eigen::ArrayXd* normal_force_ = nullptr;  // contact without junction counts; null: always in contact
     std::vector<Index> interface_;
     const double* driving_force_ = nullptr;
     const double* normal_load_ = nullptr;
     Eigen::ArrayXd slip_;
     RuptureMask ruptured_;
-    std::unique_ptr<TableWriter> events_, fronts_;
+    BlockMask contact_;
+    ContactChanges contact_changes_;
+    std::unique_ptr<TableWriter> events_, fronts_, contact_table_;
     std::vector<double> row_;
 };
 

@@ -5,9 +5,15 @@ namespace frictionlab {
 void ruptured_by_pinned_fraction(const Eigen::ArrayXd& pinned, const Eigen::ArrayXd& sliding,
                                  const Eigen::ArrayXd& dislocated, double fraction, RuptureMask& out) {
     const auto not_pinned = sliding + dislocated;
-    const auto total = pinned + not_pinned;
-    out = (total <= 0) || (not_pinned > fraction * total);
+    out = not_pinned > fraction * (pinned + not_pinned);  // 0 > 0 is false: no junctions, not ruptured
 }
+
+void in_contact_by_junctions(const Eigen::ArrayXd& pinned, const Eigen::ArrayXd& sliding,
+                             const Eigen::ArrayXd& dislocated, BlockMask& out) {
+    out = pinned + sliding + dislocated > 0;
+}
+
+void in_contact_by_normal_force(const Eigen::ArrayXd& normal_force, BlockMask& out) { out = normal_force > 0; }
 
 void SlipRuptureCriterion::apply(double t, const Eigen::ArrayXd& slip, RuptureMask& out) {
     if (reference_.size() != slip.size()) {  // first observation: nothing has slipped yet

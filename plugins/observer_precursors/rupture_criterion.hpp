@@ -6,12 +6,22 @@
 namespace frictionlab {
 
 /// One flag per interface block, in the order of the "interface" node set.
-using RuptureMask = Eigen::Array<bool, Eigen::Dynamic, 1>;
+using BlockMask = Eigen::Array<bool, Eigen::Dynamic, 1>;
+using RuptureMask = BlockMask;
 
 /// B.19: a block is ruptured when more than `fraction` of its junctions are not pinned
-/// ((N_s + N_d) > fraction (N_p + N_s + N_d)), or when it has no junction at all.
+/// ((N_s + N_d) > fraction (N_p + N_s + N_d)). A block without junctions has lifted off: it is not
+/// in contact (below), which is neither ruptured nor pinned.
 void ruptured_by_pinned_fraction(const Eigen::ArrayXd& pinned, const Eigen::ArrayXd& sliding,
                                  const Eigen::ArrayXd& dislocated, double fraction, RuptureMask& out);
+
+/// A block is in contact while it has junctions (N_p + N_s + N_d > 0): the count follows the
+/// block's normal force (B.7), so it has none once the base no longer presses it (lift-off).
+void in_contact_by_junctions(const Eigen::ArrayXd& pinned, const Eigen::ArrayXd& sliding,
+                             const Eigen::ArrayXd& dislocated, BlockMask& out);
+
+/// Without junction counts: a block is in contact while the base presses it (normal force > 0).
+void in_contact_by_normal_force(const Eigen::ArrayXd& normal_force, BlockMask& out);
 
 /// B.19's alternative: a block is ruptured when it has slipped forward by more than `threshold`
 /// since its reference position. The reference is re-armed at the current position whenever the

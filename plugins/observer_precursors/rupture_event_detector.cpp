@@ -14,10 +14,12 @@ RuptureEventDetector::RuptureEventDetector(Interface interface, double quiet_tim
     reported_.reserve(3);
 }
 
-std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const RuptureMask& ruptured,
-                                                          const Eigen::ArrayXd& slip, double driving_force,
-                                                          double normal_load) {
+std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const RuptureMask& ruptured_flags,
+                                                          const BlockMask& contact, const Eigen::ArrayXd& slip,
+                                                          double driving_force, double normal_load) {
     if (t <= last_t_) return std::nullopt;
+    ruptured_ = ruptured_flags && contact;
+    const RuptureMask& ruptured = ruptured_;
     if (previous_slip_.size() != slip.size()) previous_slip_ = slip;  // the first observation
     last_t_ = t;
     if (std::isfinite(driving_force) && !(driving_force <= summary_.peak_driving_force)) {
@@ -38,6 +40,7 @@ std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const Ruptur
         settle(finish(true));
     }
     if (open_) {
+        for (Index i = 0; i < contact.size(); ++i) open_->in_contact[i] |= contact(i);
         open_->max_slip = std::max(open_->max_slip, (slip - base_slip_).maxCoeff());
         if (held_) open_slip_since_held_ = std::max(open_slip_since_held_, (slip - held_base_slip_).maxCoeff());
     }
@@ -78,6 +81,7 @@ void RuptureEventDetector::start(double t, const RuptureMask& ruptured, const Ei
     e.driving_force = driving_force;
     e.normal_load = normal_load;
     e.first_rupture.assign(static_cast<std::size_t>(ruptured.size()), nan);
+    e.in_contact.assign(static_cast<std::size_t>(ruptured.size()), 0);
     double most = -std::numeric_limits<double>::infinity();
     for (Index i = 0; i < ruptured.size(); ++i) {
         const double increment = slip(i) - previous_slip_(i);
@@ -110,8 +114,10 @@ void RuptureEventDetector::settle(RuptureEvent e) {
     if (held_ && is_nucleation_of(*held_, e)) {
         RuptureEvent merged = std::move(*held_);
         held_.reset();
-        for (std::size_t i = 0; i < merged.first_rupture.size(); ++i)
+        for (std::size_t i = 0; i < merged.first_rupture.size(); ++i) {
             if (std::isnan(merged.first_rupture[i])) merged.first_rupture[i] = e.first_rupture[i];
+            merged.in_contact[i] |= e.in_contact[i];
+        }
         merged.t_end = e.t_end;
         merged.finished = e.finished;
         merged.max_slip = std::max(merged.max_slip, open_slip_since_held_);
@@ -139,6 +145,18 @@ void RuptureEventDetector::report(RuptureEvent e) {
     reported_.push_back(std::move(e));
 }
 
+template <class Flagged>
+double RuptureEventDetector::span(const Flagged& flagged) const {
+    const Eigen::ArrayXd& x = interface_.x;
+    double first = std::numeric_limits<double>::infinity(), last = -first;
+    for (Index i = 0; i < x.size(); ++i)
+        if (flagged(static_cast<std::size_t>(i))) first = std::min(first, x(i)), last = std::max(last, x(i));
+    if (first > last) return 0;
+    // Each block covers l_s around its position, clipped to the interface [0, L].
+    return std::min(interface_.length, last + 0.5 * interface_.spacing) -
+           std::max(0.0, first - 0.5 * interface_.spacing);
+}
+
 void RuptureEventDetector::measure(RuptureEvent& e) const {
     const Eigen::ArrayXd& x = interface_.x;
     const double x_nucleation = x(e.nucleation);
@@ -158,10 +176,10 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
         if (distance > farthest || (distance == farthest && distance > 0 && t - e.t_start < delay))
             farthest = distance, delay = t - e.t_start;
     }
-    // Each block covers l_s around its position, clipped to the interface [0, L].
-    const double span = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing) -
-                        std::max(0.0, e.min_x - 0.5 * interface_.spacing);
-    e.global = e.ruptured_blocks > 0 && span >= options_.global_span * interface_.length * (1 - 1e-12);
+    const auto ruptured = [&](std::size_t i) { return !std::isnan(e.first_rupture[i]); };
+    const auto in_contact = [&](std::size_t i) { return e.in_contact[i] != 0; };
+    e.out_of_contact = static_cast<int>(std::count(e.in_contact.begin(), e.in_contact.end(), 0));
+    e.global = e.ruptured_blocks > 0 && span(ruptured) >= options_.global_span * span(in_contact) * (1 - 1e-12);
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
     e.front_speed = farthest > 0 && delay > 0 ? farthest / delay : nan;

@@ -24,6 +24,8 @@ struct RuptureEvent {
     int nucleation = 0;             // block first ruptured (index along the interface)
     /// Per block: the time it first ruptured within the event, NaN if it did not.
     std::vector<double> first_rupture;
+    /// Per block: 1 if it was in contact at some observation of the event (B.19b).
+    std::vector<char> in_contact;
     double max_slip = 0;  // m, the largest slip of any block since the event started
 
     // Measures, filled when the event is closed (RuptureEventDetector::measure).
@@ -35,12 +37,13 @@ struct RuptureEvent {
     double extent_over_length = 0;  // l/L
     double front_speed = 0;         // m/s, see RuptureEventDetector; NaN if unresolved
     double crossing_speed = 0;      // m/s, over the far half of the front's path; NaN if unresolved
+    int out_of_contact = 0;         // blocks out of contact at every observation of the event (B.19b)
 
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, max_slip,
-           ruptured_blocks, global, nucleation_x, min_x, max_x, extent, extent_over_length, front_speed,
-           crossing_speed);
+        ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, in_contact, max_slip,
+           ruptured_blocks, global, nucleation_x, min_x, max_x, extent, extent_over_length, front_speed, crossing_speed,
+           out_of_contact);
     }
 
     double duration() const { return t_end - t_start; }
@@ -78,8 +81,12 @@ struct RuptureSummary {
 /// rupture sooner than that belongs to the same event, so two events are always more than
 /// `quiet_time` apart.
 ///
+/// - Contact (B.19b): a block out of contact (lifted off, without junctions) is neither ruptured
+///   nor pinned and takes no part in rupture decisions: an event ends once every block in contact
+///   is pinned again.
 /// - Global (B.19a): the ruptured blocks span, from the trailing edge of the first to the leading
-///   edge of the last (each block covering l_s), at least `global_span` L.
+///   edge of the last (each block covering l_s), at least `global_span` of the span of the blocks
+///   in contact during the event (L while every block is).
 /// - Nucleation (B.19a): an event that is not global, ends at most `nucleation_window` before a
 ///   larger event (more ruptured blocks: a longer precursor or a global slip) starts, and nucleated
 ///   within one block of where that one nucleated, is its nucleation: the two are reported
@@ -111,12 +118,13 @@ public:
 
     RuptureEventDetector(Interface interface, double quiet_time, Options options = {});
 
-    /// Feeds one observation; `slip` is the blocks' x-displacement (any fixed origin). Returns the
-    /// event reported at this observation, if any (at most one; see nucleation_window for why it
-    /// may be reported later than it ended). An observation no later than the previous one (the
-    /// run observes again at stage ends) is ignored.
-    std::optional<RuptureEvent> observe(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip,
-                                        double driving_force, double normal_load);
+    /// Feeds one observation; `slip` is the blocks' x-displacement (any fixed origin); a block
+    /// flagged ruptured but not in `contact` counts as not ruptured. Returns the event reported at
+    /// this observation, if any (at most one; see nucleation_window for why it may be reported later
+    /// than it ended). An observation no later than the previous one (the run observes again at
+    /// stage ends) is ignored.
+    std::optional<RuptureEvent> observe(double t, const RuptureMask& ruptured, const BlockMask& contact,
+                                        const Eigen::ArrayXd& slip, double driving_force, double normal_load);
     /// End of the history: closes the open event as unfinished and returns the events not yet
     /// reported, one per call, in order; nothing once all are.
     std::optional<RuptureEvent> close();
@@ -135,6 +143,9 @@ public:
 private:
     void start(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip, double driving_force,
                double normal_load);
+    /// The span, each block covering l_s clipped to [0, L], from the first to the last block flagged.
+    template <class Flagged>
+    double span(const Flagged& flagged) const;
     RuptureEvent finish(bool finished);
     /// An ended event: merged into the held one, held, or reported.
     void settle(RuptureEvent e);
@@ -156,6 +167,7 @@ private:
     double last_ruptured_t_ = 0;
     Eigen::ArrayXd previous_slip_;  // at the previous observation
     Eigen::ArrayXd base_slip_;      // at the observation before the open event started
+    RuptureMask ruptured_;          // ruptured and in contact, at the latest observation
     int next_index_ = 0;
     RuptureSummary summary_;
 };

@@ -114,11 +114,14 @@ protected:
                        info_,    log_};
     }
 
-    /// Moves to time t with the given blocks sliding (all their junctions), and observes.
-    void observe_at(Precursors& observer, double t, std::initializer_list<Index> sliding) {
+    /// Moves to time t with the given blocks sliding (all their junctions) and the `lifted` ones
+    /// without junctions (out of contact), and observes.
+    void observe_at(Precursors& observer, double t, std::initializer_list<Index> sliding,
+                    std::initializer_list<Index> lifted = {}) {
         pinned_->setConstant(10);
         sliding_->setZero();
         for (Index b : sliding) (*pinned_)(b) = 0, (*sliding_)(b) = 10;
+        for (Index b : lifted) (*pinned_)(b) = 0, (*sliding_)(b) = 0;
         *driving_ = 80 * t;
         Eigen::VectorXd y = system_->y();
         for (Index b : sliding) y(b) += 1e-7;  // a little slip while ruptured
@@ -252,6 +255,43 @@ TEST_F(PrecursorsTest, OnlyTheNamedStageIsObserved) {
     observer.observe(view());
     observer.end(view());
     EXPECT_TRUE(read_csv(dir_ / "precursors.csv").rows.empty());
+}
+
+// B.19b: a block without junctions has lifted off. Its lift-off and re-contact are written as
+// such, and a rupture around it still ends once the blocks in contact are pinned again.
+TEST_F(PrecursorsTest, LiftOffAndReContactAreReportedAndEventsStillEnd) {
+    publish_junctions();
+    Precursors::Params immediate;
+    immediate.nucleation_window_quiet_times = 0;
+    Precursors observer = make(immediate);
+    observer.begin(view());
+    observe_at(observer, 1 * dt, {});
+    observe_at(observer, 2 * dt, {}, {5});
+    observe_at(observer, 3 * dt, {0, 1}, {5});
+    for (int k = 4; k <= 300; ++k) observe_at(observer, k * dt, {}, {5});  // 3 ms: the event ends
+    observe_at(observer, 301 * dt, {});                                    // block 5 touches down
+    observer.end(view());
+
+    CsvFile events = read_csv(dir_ / "precursors.csv");
+    ASSERT_EQ(events.rows.size(), 1u);
+    EXPECT_EQ(column(events, 0, "finished"), 1);
+    EXPECT_DOUBLE_EQ(column(events, 0, "t_start"), 3 * dt);
+    EXPECT_DOUBLE_EQ(column(events, 0, "ruptured_blocks"), 2);
+    EXPECT_DOUBLE_EQ(column(events, 0, "out_of_contact"), 1);
+
+    CsvFile contact = read_csv(dir_ / "contact_changes.csv");
+    EXPECT_TRUE(contact.whole);
+    ASSERT_EQ(contact.rows.size(), 2u);
+    EXPECT_DOUBLE_EQ(column(contact, 0, "time"), 2 * dt);
+    EXPECT_DOUBLE_EQ(column(contact, 0, "block"), 5);
+    EXPECT_DOUBLE_EQ(column(contact, 0, "x"), 5 * ls);
+    EXPECT_EQ(column(contact, 0, "in_contact"), 0) << "lift-off";
+    EXPECT_DOUBLE_EQ(column(contact, 1, "time"), 301 * dt);
+    EXPECT_EQ(column(contact, 1, "in_contact"), 1) << "re-contact";
+
+    const std::string summary = read_text(dir_ / "precursors_summary.yaml");
+    for (const char* expected : {"lift_offs: 1\n", "re_contacts: 1\n", "blocks_out_of_contact: 0\n"})
+        EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
 }
 
 TEST_F(PrecursorsTest, EndWithoutBeginWritesNothing) {

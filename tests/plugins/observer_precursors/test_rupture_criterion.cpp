@@ -6,15 +6,28 @@
 namespace frictionlab {
 namespace {
 
-TEST(PinnedFractionCriterion, MoreThanTheFractionNotPinnedOrNoJunctions) {
+TEST(PinnedFractionCriterion, MoreThanTheFractionNotPinned) {
     Eigen::ArrayXd pinned(5), sliding(5), dislocated(5);
     pinned << 10, 5, 4, 0, 0;
     sliding << 0, 3, 3, 0, 1;
     dislocated << 0, 2, 3, 0, 0;
     RuptureMask out;
     ruptured_by_pinned_fraction(pinned, sliding, dislocated, 0.5, out);
-    // 0/10 not pinned; exactly half (5/10) is not "more than"; 6/10; no junctions; 1/1.
-    EXPECT_EQ(out.cast<int>().matrix().transpose(), (Eigen::RowVectorXi(5) << 0, 0, 1, 1, 1).finished());
+    // 0/10 not pinned; exactly half (5/10) is not "more than"; 6/10; no junctions (lifted off, B.19b); 1/1.
+    EXPECT_EQ(out.cast<int>().matrix().transpose(), (Eigen::RowVectorXi(5) << 0, 0, 1, 0, 1).finished());
+}
+
+TEST(ContactCriterion, InContactWhileItHasJunctionsOrANormalForce) {
+    Eigen::ArrayXd pinned(4), sliding(4), dislocated(4), normal(4);
+    pinned << 10, 0, 0, 0;
+    sliding << 0, 2, 0, 0;
+    dislocated << 0, 0, 1, 0;
+    BlockMask out;
+    in_contact_by_junctions(pinned, sliding, dislocated, out);
+    EXPECT_EQ(out.cast<int>().matrix().transpose(), (Eigen::RowVectorXi(4) << 1, 1, 1, 0).finished());
+    normal << 3.4, 1e-12, 0, -1e-9;
+    in_contact_by_normal_force(normal, out);
+    EXPECT_EQ(out.cast<int>().matrix().transpose(), (Eigen::RowVectorXi(4) << 1, 1, 0, 0).finished());
 }
 
 TEST(SlipCriterion, FlagsFastSlipNotSlowCreep) {

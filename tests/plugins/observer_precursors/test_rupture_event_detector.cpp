@@ -32,31 +32,47 @@ struct Rupture {
     double on, off, slip = 1e-6;
 };
 
-/// Feeds observations every dt from t0 to t1 with the given ruptures; collects ended events.
+/// A block out of contact (lifted off) over [off, on).
+struct LiftOff {
+    int block;
+    double off, on = 1e9;
+};
+
+/// Feeds observations every dt from t0 to t1 with the given ruptures; collects ended events. A
+/// block out of contact is also flagged ruptured, as a criterion that took "no junctions" for
+/// "not pinned" would flag it: the detector must leave it out.
 class History {
 public:
-    explicit History(std::vector<Rupture> ruptures) : ruptures_(std::move(ruptures)) {}
+    explicit History(std::vector<Rupture> ruptures, std::vector<LiftOff> lift_offs = {})
+        : ruptures_(std::move(ruptures)), lift_offs_(std::move(lift_offs)) {}
 
     std::vector<RuptureEvent> run(RuptureEventDetector& d, double t0, double t1) {
         std::vector<RuptureEvent> ended;
         RuptureMask mask(blocks);
+        BlockMask contact(blocks);
         Eigen::ArrayXd slip(blocks);
         for (long k = 0; t0 + k * dt <= t1 + 1e-12; ++k) {
             const double t = t0 + k * dt;
             mask.setConstant(false);
+            contact.setConstant(true);
             slip.setZero();
             for (const Rupture& r : ruptures_) {
                 if (t >= r.on - 1e-12 && t < r.off - 1e-12) mask(r.block) = true;
                 slip(r.block) += r.slip * std::clamp((t - r.on) / (r.off - r.on), 0.0, 1.0);
             }
-            if (auto e = d.observe(t, mask, slip, loading_rate * t, normal_load)) ended.push_back(*e);
+            for (const LiftOff& l : lift_offs_)
+                if (t >= l.off - 1e-12 && t < l.on - 1e-12) contact(l.block) = false, mask(l.block) = true;
+            if (auto e = d.observe(t, mask, contact, slip, loading_rate * t, normal_load)) ended.push_back(*e);
         }
         return ended;
     }
 
 private:
     std::vector<Rupture> ruptures_;
+    std::vector<LiftOff> lift_offs_;
 };
+
+const BlockMask all_in_contact = BlockMask::Constant(blocks, true);
 
 /// Blocks first..last rupture one per observation from t0 on (a front from `first`), each for `hold`.
 std::vector<Rupture> front(int first, int last, double t0, double hold = 5e-4) {
@@ -188,10 +204,10 @@ TEST(RuptureEventDetector, TheNucleationBlockIsTheOneThatSlippedMostAtTheStart) 
     RuptureEventDetector d(interface41(), quiet);
     RuptureMask mask = RuptureMask::Constant(blocks, false);
     Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
-    d.observe(0.0, mask, slip, 0, normal_load);
+    d.observe(0.0, mask, all_in_contact, slip, 0, normal_load);
     mask(3) = mask(4) = mask(5) = true;
     slip(3) = 1e-7, slip(4) = 3e-7, slip(5) = 2e-7;
-    d.observe(dt, mask, slip, 0, normal_load);
+    d.observe(dt, mask, all_in_contact, slip, 0, normal_load);
     ASSERT_NE(d.open_event(), nullptr);
     EXPECT_EQ(d.open_event()->nucleation, 4);
 }
@@ -216,8 +232,8 @@ TEST(RuptureEventDetector, ARepeatedObservationIsIgnored) {
     RuptureMask none = RuptureMask::Constant(blocks, false), one = none;
     one(2) = true;
     const Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
-    d.observe(0.1, none, slip, 1, normal_load);
-    d.observe(0.1, one, slip, 1, normal_load);  // the same state observed again at a stage end
+    d.observe(0.1, none, all_in_contact, slip, 1, normal_load);
+    d.observe(0.1, one, all_in_contact, slip, 1, normal_load);  // the same state observed again at a stage end
     EXPECT_EQ(d.open_event(), nullptr);
 }
 
@@ -227,8 +243,8 @@ TEST(RuptureEventDetector, SparseObservationsStillSeparateEvents) {
     RuptureMask one = RuptureMask::Constant(blocks, false);
     one(0) = true;
     const Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
-    EXPECT_FALSE(d.observe(0.0, one, slip, 1, normal_load));
-    auto ended = d.observe(0.01, one, slip, 2, normal_load);
+    EXPECT_FALSE(d.observe(0.0, one, all_in_contact, slip, 1, normal_load));
+    auto ended = d.observe(0.01, one, all_in_contact, slip, 2, normal_load);
     ASSERT_TRUE(ended);
     EXPECT_EQ(ended->index, 0);
     ASSERT_NE(d.open_event(), nullptr);
@@ -360,6 +376,59 @@ TEST(RuptureEventDetector, AHeldEventIsReportedAfterItsWindowAndAtClose) {
     EXPECT_FALSE(second->finished) << "the event still open at the end";
     EXPECT_EQ(second->index, 1);
     EXPECT_FALSE(e.close());
+}
+
+// B.19b: at 161 x 33 the driving spring's moment lifts the driven edge off. A block without
+// junctions must neither open an event nor keep one open.
+TEST(RuptureEventDetector, ABlockOutOfContactOutsideARuptureTakesNoPart) {
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1;
+    auto events = History(front(0, 9, t0), {{blocks - 1, 0.05}}).run(d, 0.04, t0 + 0.01);
+    ASSERT_EQ(events.size(), 1u) << "the lifted block alone is no event";
+    const RuptureEvent& e = events[0];
+    EXPECT_TRUE(e.finished) << "the precursor ends once every block in contact is pinned again";
+    EXPECT_NEAR(e.t_start, t0, 1e-12);
+    EXPECT_EQ(e.ruptured_blocks, 10);
+    EXPECT_TRUE(std::isnan(e.first_rupture[blocks - 1]));
+    EXPECT_EQ(e.out_of_contact, 1);
+    EXPECT_FALSE(e.global);
+    EXPECT_EQ(d.open_event(), nullptr);
+}
+
+TEST(RuptureEventDetector, ABlockOutOfContactInsideARuptureLeavesItGlobal) {
+    // Blocks 0 and 1 at the trailing edge lifted off; every block in contact ruptures. With
+    // global_span 1 (every block), the slip is global over the interface still in contact.
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1;
+    auto events = History(front(2, blocks - 1, t0), {{0, 0.05}, {1, 0.05}}).run(d, 0.04, t0 + 0.01);
+    ASSERT_EQ(events.size(), 1u);
+    const RuptureEvent& e = events[0];
+    EXPECT_TRUE(e.finished);
+    EXPECT_TRUE(e.global);
+    EXPECT_EQ(e.out_of_contact, 2);
+    EXPECT_EQ(e.nucleation, 2);
+    EXPECT_TRUE(d.summary().global_seen);
+    EXPECT_EQ(d.summary().precursors_before_global, 0);
+
+    // Block 20 lifts off mid-rupture and touches down before the end: it was in contact during the
+    // event, so the ruptured blocks 2..40 still span what was in contact, and it is not counted out.
+    RuptureEventDetector mid(interface41(), quiet);
+    auto mid_events = History(front(2, blocks - 1, t0), {{0, 0.05}, {1, 0.05}, {20, t0 + 2 * dt, t0 + 1e-3}})
+                          .run(mid, 0.04, t0 + 0.01);
+    ASSERT_EQ(mid_events.size(), 1u);
+    EXPECT_TRUE(mid_events[0].global);
+    EXPECT_EQ(mid_events[0].out_of_contact, 2);
+}
+
+TEST(RuptureEventDetector, ARupturedBlockThatLiftsOffEndsItsPartInTheEvent) {
+    // Block 3 ruptures and lifts off while still flagged ruptured: the event ends when the others heal.
+    RuptureEventDetector d(interface41(), quiet);
+    const double t0 = 0.1, hold = 5e-4;
+    auto events = History(front(0, 5, t0, hold), {{3, t0 + 2e-4}}).run(d, 0.099, 0.2);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_TRUE(events[0].finished);
+    EXPECT_NEAR(events[0].t_end, t0 + 5 * dt + hold - dt, 1e-9);
+    EXPECT_EQ(events[0].out_of_contact, 0) << "block 3 was in contact at the event's start";
 }
 
 }  // namespace
