@@ -39,9 +39,6 @@ constexpr double jump_residual = 100;
 constexpr double transient_path_time = 1e-9;
 /// An undamped mode overshoots a step in its load to twice the static response; dashpots only lessen it.
 constexpr double transient_overshoot = 2;
-/// Why a quiet step is refused when the steady velocities change at once by more than that.
-constexpr const char* lagging =
-    "the steady velocities changed at once (a drive started or changed): the masses lag, and ring";
 /// A check that the velocities are far (10 quiet_speed) from the steady ones of the last full check
 /// needs no static solve; a full one is made at least every this many checks all the same.
 constexpr int full_check_every = 10;
@@ -320,10 +317,8 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     const bool projected = std::exchange(projected_, false);
     const StateLayout& layout = system.layout();
     const double t = system.time();
-    if (!system.quasi_static_regime(view_of(y_, layout, t)))
-        return why_dynamic_ = "an effect left its quasi-static regime", false;
-    if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system))
-        return why_dynamic_ = "a scheduled event is pending", false;
+    if (!system.quasi_static_regime(view_of(y_, layout, t))) return refuse("an effect left its quasi-static regime");
+    if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system)) return refuse("a scheduled event is pending");
     // The last commit may have changed the forces at fixed positions (a junction broke, entered the
     // dislocated state or was removed): the static response to that change, a jump, comes first.
     // If its new loads bring another junction to its threshold, the next step is a short one to it.
@@ -331,9 +326,9 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     bool jumped = false;
     if (!projected && !solver_.in_equilibrium(system, t, y_, jump_residual * p_.position_tolerance)) {
         jumped = true;
-        if (!quasi_static_state(system, t)) return why_dynamic_ = "no static solution", false;
+        if (!quasi_static_state(system, t)) return refuse("no static solution");
         if (p_.jumps == Jumps::checked && transient_reaches_event(system, t))
-            return why_dynamic_ = "the transient of a jump could trigger an event", false;
+            return refuse("the transient of a jump could trigger an event");
         ++jumps_;
     }
     // Scheduled events at or before t have been judged by the last commit.
@@ -347,7 +342,7 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // response): then the span is redone to it. For a linear response the mean velocity is exact.
     double span = 0;
     for (int attempt = 0;; ++attempt) {
-        if (attempt == max_attempts) return why_dynamic_ = "events foreseen ever earlier", false;
+        if (attempt == max_attempts) return refuse("events foreseen ever earlier");
         // Not shorter than the slack: an event foreseen ever a little later (a count change whose
         // foresight lags the normal force's rate) would otherwise be chased in ever shorter spans.
         span = std::min(
@@ -355,7 +350,7 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
         const double t1 = t + span;
         y_ = start_;
         y_.head(dof) += span * start_.segment(dof, dof);  // the linear response as the first guess
-        if (!solver_.equilibrium(system, t1, y_)) return why_dynamic_ = "no static solution", false;
+        if (!solver_.equilibrium(system, t1, y_)) return refuse("no static solution");
         // From a balanced start the response to the drive is (near) linear: its secant over the
         // span is the steady velocity (a jump or the turn to quiet solved for it at the start).
         // Over a span shorter than the dynamic step (to an event) the secant would carry Newton's
@@ -363,7 +358,8 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
         if (span >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
         // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
         if (span * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(start_, y_, dof))
-            return why_dynamic_ = lagging, false;
+            return refuse(
+                "the steady velocities changed at once (a drive started or changed): the masses lag, and ring");
         mean_ = start_;
         mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
         const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
@@ -375,7 +371,7 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // Events closer together than the dynamic step (a cascade of breaks spreading, the clocks of
     // many junctions running out): the dynamic scheme takes them as the reference does, cheaper.
     short_steps_ = span < p_.dt ? short_steps_ + 1 : 0;
-    if (short_steps_ > max_short_steps) return why_dynamic_ = "events closer together than the dynamic step", false;
+    if (short_steps_ > max_short_steps) return refuse("events closer together than the dynamic step");
     span_end_.swap(y_);
     span_start_time_ = t, span_end_time_ = t + span, in_span_ = true;
     ++spans_;

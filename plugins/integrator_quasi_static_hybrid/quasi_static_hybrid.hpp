@@ -130,6 +130,11 @@ private:
     bool transient_reaches_event(const System& system, double t);
     /// Whether no effect has a scheduled event pending (no junction clock runs).
     static bool no_scheduled_event(const System& system);
+    /// A quiet step refused (false: nothing done), with its reason kept for the log of the switch.
+    bool refuse(const char* reason) {
+        why_dynamic_ = reason;
+        return false;
+    }
 
     Params p_;
     spdlog::logger& log_;
