@@ -76,8 +76,6 @@ std::string creep_rule(const Params& p) {
             p.creep_step, p.dt);
     return {};
 }
-
-double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 }  // namespace
 
 ParamSpec<Params> QuasiStaticHybrid::spec() {
@@ -147,44 +145,10 @@ QuasiStaticHybrid::QuasiStaticHybrid(const Params& p, const Context& ctx)
       creep_({.step = p.creep_step, .position_tolerance = p.position_tolerance, .event_overshoot = p.event_overshoot}) {
 }
 
-QuasiStaticHybrid::~QuasiStaticHybrid() {
-    const double total = quiet_time_ + dynamic_time_ + creep_time_,
-                 wall = seconds(quiet_wall_ + dynamic_wall_ + creep_wall_);
-    if (total > 0)
-        log_.info(
-            "quasi_static_hybrid: quiet {:.4g} % of simulated time ({} steps), {:.4g} % of wall time; dynamic "
-            "{} steps; {} switches to quiet, {} to dynamic; {} static solves, {} Newton iterations, {} "
-            "factorisations",
-            100 * quiet_time_ / total, quiet_steps_, wall > 0 ? 100 * seconds(quiet_wall_) / wall : 0.0, dynamic_steps_,
-            to_quiet_, to_dynamic_, solver_.counts().solves, solver_.counts().iterations,
-            solver_.counts().factorisations);
-    if (creep_.counts().steps > 0)
-        log_.info(
-            "quasi_static_hybrid: creep steps {:.4g} % of simulated time ({} steps, {} Newton iterations, {} "
-            "factorisations), {:.4g} % of wall time",
-            100 * creep_time_ / total, creep_.counts().steps, creep_.counts().iterations,
-            creep_.counts().factorisations, wall > 0 ? 100 * seconds(creep_wall_) / wall : 0.0);
-}
+QuasiStaticHybrid::~QuasiStaticHybrid() { statistics_.log_summary(log_, solver_.counts(), creep_.counts()); }
 
 std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() const {
-    const double total = quiet_time_ + dynamic_time_ + creep_time_,
-                 wall = seconds(quiet_wall_ + dynamic_wall_ + creep_wall_);
-    return {{"quiet_fraction_of_simulated_time", total > 0 ? quiet_time_ / total : 0.0},
-            {"quiet_fraction_of_wall_time", wall > 0 ? seconds(quiet_wall_) / wall : 0.0},
-            {"creep_fraction_of_simulated_time", total > 0 ? creep_time_ / total : 0.0},
-            {"creep_fraction_of_wall_time", wall > 0 ? seconds(creep_wall_) / wall : 0.0},
-            {"quiet_seconds_wall", seconds(quiet_wall_)},
-            {"dynamic_seconds_wall", seconds(dynamic_wall_)},
-            {"creep_seconds_wall", seconds(creep_wall_)},
-            {"creep_steps", static_cast<double>(creep_.counts().steps)},
-            {"quiet_steps", static_cast<double>(quiet_steps_)},
-            {"quiet_spans", static_cast<double>(spans_)},
-            {"dynamic_steps", static_cast<double>(dynamic_steps_)},
-            {"switches_to_quiet", static_cast<double>(to_quiet_)},
-            {"switches_to_dynamic", static_cast<double>(to_dynamic_)},
-            {"quiet_jumps", static_cast<double>(jumps_)},
-            {"static_solves", static_cast<double>(solver_.counts().solves)},
-            {"factorisations", static_cast<double>(solver_.counts().factorisations)}};
+    return statistics_.table(solver_.counts(), creep_.counts());
 }
 
 void QuasiStaticHybrid::save_state(StateOut& out) const {
@@ -202,13 +166,13 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     if (quiet_) {
         double h = 0;
         if (quiet_step(system, max_dt, h)) {
-            ++quiet_steps_;
-            quiet_time_ += h;
-            quiet_wall_ += Clock::now() - start;
+            ++statistics_.quiet_steps;
+            statistics_.quiet_time += h;
+            statistics_.quiet_wall += Clock::now() - start;
             return h;
         }
         quiet_ = false;
-        ++to_dynamic_;
+        ++statistics_.switches_to_dynamic;
         log_.debug("quasi_static_hybrid: dynamic from t = {:.9g} s: {}", system.time(), why_dynamic_);
         calm_since_ = std::numeric_limits<double>::quiet_NaN();
         next_check_ = system.time() + p_.check_interval;
@@ -216,16 +180,16 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     const double t = system.time();
     const bool creep = creep_step(system, max_dt);
     const double h = creep ? system.time() - t : dynamic_->step(system, max_dt);
-    (creep ? creep_time_ : dynamic_time_) += h;
-    if (!creep) ++dynamic_steps_;
+    (creep ? statistics_.creep_time : statistics_.dynamic_time) += h;
+    if (!creep) ++statistics_.dynamic_steps;
     if (system.time() >= next_check_) {
         next_check_ = system.time() + p_.check_interval;
         if (may_turn_quiet(system)) {
-            quiet_ = true, ++to_quiet_, short_steps_ = 0;
+            quiet_ = true, ++statistics_.switches_to_quiet, short_steps_ = 0;
             log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
         }
     }
-    (creep ? creep_wall_ : dynamic_wall_) += Clock::now() - start;
+    (creep ? statistics_.creep_wall : statistics_.dynamic_wall) += Clock::now() - start;
     return h;
 }
 
@@ -329,7 +293,7 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
         if (!quasi_static_state(system, t)) return refuse("no static solution");
         if (p_.jumps == Jumps::checked && transient_reaches_event(system, t))
             return refuse("the transient of a jump could trigger an event");
-        ++jumps_;
+        ++statistics_.jumps_solved;
     }
     // Scheduled events at or before t have been judged by the last commit.
     const double scheduled = system.next_event_time();
@@ -374,7 +338,7 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     if (short_steps_ > max_short_steps) return refuse("events closer together than the dynamic step");
     span_end_.swap(y_);
     span_start_time_ = t, span_end_time_ = t + span, in_span_ = true;
-    ++spans_;
+    ++statistics_.quiet_spans;
     return span_step(system, max_dt, h);
 }
 

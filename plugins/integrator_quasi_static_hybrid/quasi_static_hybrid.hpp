@@ -1,5 +1,4 @@
 #pragma once
-#include <chrono>
 #include <memory>
 #include <string>
 
@@ -8,6 +7,7 @@
 
 #include "creep_stepper.hpp"
 #include "equilibrium_solver.hpp"
+#include "phase_statistics.hpp"
 
 namespace frictionlab {
 
@@ -80,14 +80,8 @@ public:
     void restore_state(StateIn& in) override;
     template <class Archive>
     void serialize(Archive& ar) {
-        auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count(), creep_wall = creep_wall_.count();
-        ar(solver_, creep_, creeping_, creep_time_, creep_wall, y_, start_, span_end_, span_start_time_, span_end_time_,
-           in_span_, spans_, quiet_, projected_, next_check_, calm_since_, steady_, checks_since_full_, to_quiet_,
-           to_dynamic_, quiet_steps_, dynamic_steps_, jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall,
-           dynamic_wall);
-        quiet_wall_ = std::chrono::steady_clock::duration(quiet_wall);
-        dynamic_wall_ = std::chrono::steady_clock::duration(dynamic_wall);
-        creep_wall_ = std::chrono::steady_clock::duration(creep_wall);
+        ar(solver_, creep_, creeping_, y_, start_, span_end_, span_start_time_, span_end_time_, in_span_, quiet_,
+           projected_, next_check_, calm_since_, steady_, checks_since_full_, short_steps_, statistics_);
     }
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
@@ -102,12 +96,7 @@ public:
     std::vector<std::pair<std::string, double>> statistics() const override;
 
     bool quiet() const { return quiet_; }
-    long long switches_to_quiet() const { return to_quiet_; }
-    long long switches_to_dynamic() const { return to_dynamic_; }
-    long long quiet_steps() const { return quiet_steps_; }
-    /// Quiet spans solved; the quiet steps within them land on the line between the span's ends.
-    long long quiet_spans() const { return spans_; }
-    long long jumps_solved() const { return jumps_; }
+    const PhaseStatistics& phase_statistics() const { return statistics_; }
     const CreepStepper::Counts& creep_counts() const { return creep_.counts(); }
 
 private:
@@ -147,7 +136,6 @@ private:
     Eigen::VectorXd span_end_;      // the quiet span's solved end
     double span_start_time_ = 0, span_end_time_ = 0;
     bool in_span_ = false;  // steps land within a solved span
-    long long spans_ = 0;
     bool quiet_ = false;
     const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
     bool projected_ = false;        // y_ holds the quasi-static state the first quiet step starts from
@@ -155,10 +143,8 @@ private:
     double calm_since_ = std::numeric_limits<double>::quiet_NaN();  // start of the current calm spell
     Eigen::VectorXd steady_;     // the steady velocities of the last full check for calm
     int checks_since_full_ = 0;  // checks since it
-    long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0, jumps_ = 0;
-    int short_steps_ = 0;                                        // quiet steps in a row shorter than dt
-    double quiet_time_ = 0, dynamic_time_ = 0, creep_time_ = 0;  // simulated, s
-    std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{}, creep_wall_{};
+    int short_steps_ = 0;        // quiet steps in a row shorter than dt
+    PhaseStatistics statistics_;
 };
 
 }  // namespace frictionlab
