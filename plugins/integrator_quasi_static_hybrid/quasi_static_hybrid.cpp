@@ -1,7 +1,6 @@
 #include "quasi_static_hybrid.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -174,16 +173,14 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
         quiet_ = false;
         ++statistics_.switches_to_dynamic;
         log_.debug("quasi_static_hybrid: dynamic from t = {:.9g} s: {}", system.time(), why_dynamic_);
-        calm_since_ = std::numeric_limits<double>::quiet_NaN();
-        next_check_ = system.time() + p_.check_interval;
+        calm_.restart(system.time(), p_.check_interval);
     }
     const double t = system.time();
     const bool creep = creep_step(system, max_dt);
     const double h = creep ? system.time() - t : dynamic_->step(system, max_dt);
     (creep ? statistics_.creep_time : statistics_.dynamic_time) += h;
     if (!creep) ++statistics_.dynamic_steps;
-    if (system.time() >= next_check_) {
-        next_check_ = system.time() + p_.check_interval;
+    if (calm_.check_due(system.time(), p_.check_interval)) {
         if (may_turn_quiet(system)) {
             quiet_ = true, ++statistics_.switches_to_quiet, short_steps_ = 0;
             log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
@@ -210,27 +207,22 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system) {
     const auto velocities = system.y().segment(2 * n, 2 * n);
     // While the lattice still rings far from the steady velocities of the last full check, the
     // static solves of a full check would only confirm it.
-    if (calm && steady_.size() == velocities.size() && ++checks_since_full_ < full_check_every &&
-        (velocities - steady_).lpNorm<Eigen::Infinity>() > 10 * p_.quiet_speed)
+    if (calm && calm_.steady.size() == velocities.size() && ++calm_.checks_since_full < full_check_every &&
+        (velocities - calm_.steady).lpNorm<Eigen::Infinity>() > 10 * p_.quiet_speed)
         calm = false;
     else if (calm) {
         // The steady velocities of this time, which the current ones must be close to: to a
         // hundredth of quiet_speed, at the ringing positions (the projection balances them).
-        checks_since_full_ = 0;
+        calm_.checks_since_full = 0;
         y_ = system.y();
         if (solver_.steady_velocity_within(system, t, y_, check_accuracy * p_.quiet_speed)) {
-            steady_ = y_.segment(2 * n, 2 * n);
-            calm = (velocities - steady_).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
+            calm_.steady = y_.segment(2 * n, 2 * n);
+            calm = (velocities - calm_.steady).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
         } else {
-            steady_.resize(0), calm = false;  // no quasi-static state to compare with
+            calm_.steady.resize(0), calm = false;  // no quasi-static state to compare with
         }
     }
-    if (!calm) {
-        calm_since_ = std::numeric_limits<double>::quiet_NaN();
-        return false;
-    }
-    if (std::isnan(calm_since_)) calm_since_ = t;
-    if (t - calm_since_ < p_.quiet_hold * (1 - 1e-9)) return false;
+    if (!calm_.held_for(p_.quiet_hold, t, calm)) return false;
     // Turning quiet: the first quiet step starts from the quasi-static state of this time (the
     // projection), equilibrium with the steady velocities held.
     projected_ = quasi_static_state(system, t);
@@ -272,10 +264,10 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // Within a solved span the response is linear in time: an observation inside it is on the line
     // between the span's ends, as long as no commit on the way has changed the forces (a count
     // change the foresight missed): the state at the span's last sample must still balance.
-    if (in_span_ && !projected_ &&
+    if (span_.open && !projected_ &&
         solver_.in_equilibrium(system, system.time(), system.y(), jump_residual * p_.position_tolerance))
         return span_step(system, max_dt, h);
-    in_span_ = false;
+    span_.open = false;
     // From the projected state just after turning quiet (y_ then holds it), else from the accepted one.
     if (!projected_) y_ = system.y();
     const bool projected = std::exchange(projected_, false);
@@ -299,33 +291,33 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     const double scheduled = system.next_event_time();
     double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
                             system.foreseen_event_time(view_of(y_, layout, t)));
-    start_ = y_;
+    span_.start = y_;
     system.begin_step();  // the effects' step-start references (B.17) for the solves of the span
     // The events are foreseen at the start's velocities; the span's own mean velocity (q1 - q0)/H
     // may foresee an earlier one (the drive changed at a stage start, junction counts changed the
     // response): then the span is redone to it. For a linear response the mean velocity is exact.
-    double span = 0;
+    double length = 0;  // the span's, H
     for (int attempt = 0;; ++attempt) {
         if (attempt == max_attempts) return refuse("events foreseen ever earlier");
         // Not shorter than the slack: an event foreseen ever a little later (a count change whose
         // foresight lags the normal force's rate) would otherwise be chased in ever shorter spans.
-        span = std::min(
+        length = std::min(
             {system.stage_end() - t, p_.max_quiet_step, std::max(event + p_.event_overshoot - t, event_slack * p_.dt)});
-        const double t1 = t + span;
-        y_ = start_;
-        y_.head(dof) += span * start_.segment(dof, dof);  // the linear response as the first guess
+        const double t1 = t + length;
+        y_ = span_.start;
+        y_.head(dof) += length * span_.start.segment(dof, dof);  // the linear response as the first guess
         if (!solver_.equilibrium(system, t1, y_)) return refuse("no static solution");
         // From a balanced start the response to the drive is (near) linear: its secant over the
         // span is the steady velocity (a jump or the turn to quiet solved for it at the start).
         // Over a span shorter than the dynamic step (to an event) the secant would carry Newton's
         // tolerance divided by the span: the velocities then stay as they were.
-        if (span >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
+        if (length >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - span_.start.head(dof)) / length;
         // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
-        if (span * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(start_, y_, dof))
+        if (length * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(span_.start, y_, dof))
             return refuse(
                 "the steady velocities changed at once (a drive started or changed): the masses lag, and ring");
-        mean_ = start_;
-        mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
+        mean_ = span_.start;
+        mean_.segment(dof, dof) = (y_.head(dof) - span_.start.head(dof)) / length;
         const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
         if (foreseen + p_.event_overshoot + event_slack * p_.dt >= t1) break;
         log_.trace("quasi_static_hybrid: span from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
@@ -334,30 +326,27 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     }
     // Events closer together than the dynamic step (a cascade of breaks spreading, the clocks of
     // many junctions running out): the dynamic scheme takes them as the reference does, cheaper.
-    short_steps_ = span < p_.dt ? short_steps_ + 1 : 0;
+    short_steps_ = length < p_.dt ? short_steps_ + 1 : 0;
     if (short_steps_ > max_short_steps) return refuse("events closer together than the dynamic step");
-    span_end_.swap(y_);
-    span_start_time_ = t, span_end_time_ = t + span, in_span_ = true;
+    span_.end.swap(y_);
+    span_.start_time = t, span_.end_time = t + length, span_.open = true;
     ++statistics_.quiet_spans;
     return span_step(system, max_dt, h);
 }
 
 bool QuasiStaticHybrid::span_step(System& system, double max_dt, double& h) {
-    const double t = system.time(), t1 = span_end_time_;
-    const Index dof = 2 * system.layout().nodes;
+    const double t = system.time(), t1 = span_.end_time;
     system.begin_step();
     // The span's end, or the observation within it that the run asks the step to land on.
     if (max_dt >= (t1 - t) * (1 - 1e-12)) {
         h = t1 - t;
-        in_span_ = false;
-        system.add_straight_path_work(t1, span_end_);
-        system.accept(t1, span_end_);
+        span_.open = false;
+        system.add_straight_path_work(t1, span_.end);
+        system.accept(t1, span_.end);
         return true;
     }
     h = max_dt;
-    const double along = (t + h - span_start_time_) / (t1 - span_start_time_);
-    y_ = span_end_;
-    y_.head(dof) = start_.head(dof) + along * (span_end_.head(dof) - start_.head(dof));
+    span_.state_at(t + h, y_, 2 * system.layout().nodes);
     system.add_straight_path_work(t + h, y_);
     system.accept(t + h, y_);
     return true;

@@ -5,9 +5,11 @@
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
+#include "calm_detector.hpp"
 #include "creep_stepper.hpp"
 #include "equilibrium_solver.hpp"
 #include "phase_statistics.hpp"
+#include "quiet_span.hpp"
 
 namespace frictionlab {
 
@@ -74,14 +76,14 @@ public:
     ~QuasiStaticHybrid() override;
 
     double step(System& system, double max_dt) override;
-    // Checkpoints: the phase and its clocks, the solver's factorisation, the dynamic scheme's state.
+    // Checkpoints: the phase, the current span, the calm detector, the statistics, the solvers' matrices
+    // (factorised again on restore) and the dynamic scheme's state.
     bool checkpointable() const override { return dynamic_->checkpointable(); }
     void save_state(StateOut& out) const override;
     void restore_state(StateIn& in) override;
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(solver_, creep_, creeping_, y_, start_, span_end_, span_start_time_, span_end_time_, in_span_, quiet_,
-           projected_, next_check_, calm_since_, steady_, checks_since_full_, short_steps_, statistics_);
+        ar(solver_, creep_, quiet_, creeping_, projected_, y_, short_steps_, span_, calm_, statistics_);
     }
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
@@ -130,21 +132,16 @@ private:
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
     CreepStepper creep_;
-    bool creeping_ = false;         // below creep_speed (with the hysteresis)
-    Eigen::VectorXd y_;             // the quiet solution being formed
-    Eigen::VectorXd start_, mean_;  // a quiet span's start, and its start with the span's mean velocity
-    Eigen::VectorXd span_end_;      // the quiet span's solved end
-    double span_start_time_ = 0, span_end_time_ = 0;
-    bool in_span_ = false;  // steps land within a solved span
     bool quiet_ = false;
-    const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
-    bool projected_ = false;        // y_ holds the quasi-static state the first quiet step starts from
-    double next_check_ = -std::numeric_limits<double>::infinity();
-    double calm_since_ = std::numeric_limits<double>::quiet_NaN();  // start of the current calm spell
-    Eigen::VectorXd steady_;     // the steady velocities of the last full check for calm
-    int checks_since_full_ = 0;  // checks since it
-    int short_steps_ = 0;        // quiet steps in a row shorter than dt
+    bool creeping_ = false;   // below creep_speed (with the hysteresis)
+    bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
+    int short_steps_ = 0;     // quiet steps in a row shorter than dt
+    QuietSpan span_;
+    CalmDetector calm_;
     PhaseStatistics statistics_;
+    Eigen::VectorXd y_;             // the quiet solution being formed
+    Eigen::VectorXd mean_;          // a state with the velocities of a path, for the events they foresee
+    const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
 };
 
 }  // namespace frictionlab
