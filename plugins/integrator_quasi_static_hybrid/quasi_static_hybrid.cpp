@@ -29,14 +29,13 @@ constexpr int max_short_steps = 4;
 /// settled slider's secants wander by ~1e-7 m/s, a drive starting or a ramp ending changes them all.
 constexpr double lag_fraction = 1e-2, lag_floor = 10;
 /// A residual (|F_i| / K_ii) within this many times Newton's tolerance is what a solve with a kept
-/// factorisation leaves, and the next span's solve takes it up; above it a commit has changed the
-/// forces at fixed positions: a jump (a junction breaking, a clock ending, a loaded junction
-/// removed: 1e-11 to 1e-9 m on the paper's slider, against the 1e-13 m tolerance).
+/// factorisation leaves, and the next span's solve takes it up; above it the last commit made a jump
+/// (the class comment; 1e-11 to 1e-9 m on the paper's slider, against the 1e-13 m tolerance).
 constexpr double jump_residual = 100;
 /// A jump's transient is checked along the straight path from the state before the jump, run in
 /// this (arbitrary, short) time: events the clock schedules, which do not move with it, stay beyond.
 constexpr double transient_path_time = 1e-9;
-/// An undamped mode overshoots a step in its load to twice the static response; dashpots only lessen it.
+/// How far a jump's transient may reach, in static jumps: an undamped mode's overshoot (the class comment).
 constexpr double transient_overshoot = 2;
 /// A check that the velocities are far (10 quiet_speed) from the steady ones of the last full check
 /// needs no static solve; a full one is made at least every this many checks all the same.
@@ -87,13 +86,12 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
              "Explicit scheme of the dynamic phase.");
     s.choice("jumps", &Params::jumps,
              {{"dynamic", Jumps::dynamic}, {"checked", Jumps::checked}, {"quasi_static", Jumps::quasi_static}},
-             "A jump is a commit's change of the forces at fixed positions (a junction breaking, a clock ending, a "
-             "loaded junction removed). 'checked': solved statically unless the transient it excites could trigger "
-             "an event (an effect foresees one on the path to twice the static jump, an undamped mode's overshoot), "
-             "then integrated by the dynamic scheme as the reference does; spans with junction clocks running are "
-             "crossed quietly. 'dynamic': every span with a clock running is integrated dynamically (the most "
-             "conservative). 'quasi_static': every jump solved statically (the fastest; share/docs/quasi-static.md "
-             "gives each one's measured accuracy).");
+             "How a jump (a commit's change of the forces at fixed positions: a junction breaking, a clock ending, a "
+             "loaded junction removed) is taken. 'checked': statically, unless the transient it excites could "
+             "trigger an event, then by the dynamic scheme; spans with junction clocks running are crossed quietly. "
+             "'dynamic': every span with a clock running is integrated dynamically (the most conservative). "
+             "'quasi_static': every jump statically (the fastest). share/docs/quasi-static.md (\"Jumps\") explains "
+             "them and gives each one's measured accuracy.");
     s.add("dt", &Params::dt, "Time step of the dynamic phase.").unit("s").greater_than(0);
     s.add("quiet_speed", &Params::quiet_speed,
           "The dynamic phase may turn quiet while every node's velocity is within this of the quasi-static "
@@ -247,10 +245,9 @@ bool QuasiStaticHybrid::quasi_static_state(System& system, double t) {
 }
 
 bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) {
-    // y_ holds the static response to the jump, the system the state before it: the masses follow
-    // with a transient about y_ that overshoots it (twice the jump, for an undamped mode). Events
-    // the effects foresee anyway (a count change due from the normal force's rate) are not the
-    // transient's: only one the path brings earlier than the state at rest counts.
+    // y_ holds the static response to the jump, the system the state before it. Events the effects
+    // foresee anyway (a count change due from the normal force's rate) are not the transient's:
+    // only one the path brings earlier than the state at rest counts.
     const Index dof = 2 * system.layout().nodes;
     mean_ = system.y();
     mean_.segment(dof, dof).setZero();
@@ -275,9 +272,9 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     const double t = system.time();
     if (!system.quasi_static_regime(view_of(y_, layout, t))) return refuse("an effect left its quasi-static regime");
     if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system)) return refuse("a scheduled event is pending");
-    // The last commit may have changed the forces at fixed positions (a junction broke, entered the
-    // dislocated state or was removed): the static response to that change, a jump, comes first.
-    // If its new loads bring another junction to its threshold, the next step is a short one to it.
+    // The last commit may have made a jump (a junction broke, entered the dislocated state or was
+    // removed): its static response comes first. If its new loads bring another junction to its
+    // threshold, the next step is a short one to it.
     const Index dof = 2 * layout.nodes;
     bool jumped = false;
     if (!projected && !solver_.in_equilibrium(system, t, y_, jump_residual * p_.position_tolerance)) {

@@ -26,12 +26,12 @@ namespace frictionlab {
 /// straight line between the span's solved ends, without a solve, and are committed like any step.
 /// A span to a foreseen event overshoots it by event_overshoot so the strict threshold is crossed.
 ///
-/// Jumps: a commit that changes the forces at fixed positions (a junction broke, a clock ended)
-/// is followed by the static response to it, unless (jumps: checked) the transient it excites
-/// could trigger an event: an effect foresees one on the straight path from the state before the
-/// jump to twice the static jump (an undamped mode's overshoot). The dynamic scheme then takes it
-/// as the reference does. jumps: dynamic integrates every span with a junction clock running;
-/// jumps: quasi_static solves every jump statically.
+/// Jumps: a commit that changes the forces at fixed positions (a junction broke, a clock ended, a
+/// loaded junction was removed) is followed by the static response to it, unless the transient it
+/// excites could trigger an event: an effect foresees one on the straight path from the state
+/// before the jump to twice the static jump (an undamped mode's overshoot). The dynamic scheme then
+/// takes it as the reference does. Which jumps are checked so, and whether spans with a junction
+/// clock running may be quiet, is the `jumps` choice (spec(); share/docs/quasi-static.md, "Jumps").
 ///
 /// Dynamic phase: the scene's explicit scheme (rk4 or velocity_verlet) at its step dt. It starts
 /// when an effect leaves its regime, a jump's transient could trigger an event (or, with jumps:
@@ -53,8 +53,7 @@ class QuasiStaticHybrid final : public Integrator {
 public:
     /// The explicit scheme of the dynamic phase.
     enum class Dynamic { rk4, velocity_verlet };
-    /// How a jump (a commit's change of the forces at fixed positions: a junction breaking, a clock
-    /// ending) is taken, and whether spans with junction clocks running may be quiet.
+    /// How jumps (the class comment) are taken: the `jumps` choice, documented in spec().
     enum class Jumps { dynamic, checked, quasi_static };
     struct Params {
         Dynamic dynamic = Dynamic::rk4;
