@@ -1,5 +1,5 @@
 """Runs from Python: equal to the command line's, every table in both formats, h5py attributes,
-Ctrl-C, the plot script and the examples."""
+Ctrl-C, the plotting package's command line and the examples."""
 import os
 import shutil
 import signal
@@ -182,15 +182,14 @@ def test_a_run_stopped_by_ctrl_c_resumes_from_python_to_the_same_outputs(tmp_pat
             open(os.path.join(whole.directory, name)).read(), name
 
 
-def test_the_plot_script_reads_hdf5_runs_and_renders_the_lattice_with_vtk_without_a_display(hdf5_run, source_dir):
+def test_the_plot_command_reads_hdf5_runs_and_renders_the_lattice_with_vtk_without_a_display(hdf5_run):
     from PIL import Image  # python3-pil, which python3-matplotlib depends on
 
-    script = os.path.join(source_dir, "share", "scripts", "frictionlab_plot.py")
     out = os.path.join(hdf5_run.directory, "plots")
-    # As on a batch node: no X server, so the script renders under a private Xvfb.
+    # As on a batch node: no X server, so the lattice is rendered under a private Xvfb.
     no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
-    result = subprocess.run([sys.executable, script, hdf5_run.directory], capture_output=True, text=True,
-                            env=no_display)
+    result = subprocess.run([sys.executable, "-m", "frictionlab.plot", hdf5_run.directory], capture_output=True,
+                            text=True, env=no_display)
     assert result.returncode == 0, result.stderr
     assert "matplotlib instead" not in result.stderr, result.stderr
     for figure in ("loading_curve", "spacetime", "fronts", "four_phase_3"):
@@ -203,16 +202,15 @@ def test_the_plot_script_reads_hdf5_runs_and_renders_the_lattice_with_vtk_withou
     assert len(colours) > 1000, len(colours)  # the colour map, the text's anti-aliasing: not a blank render
 
 
-def test_plots_started_together_each_render_the_lattice_under_their_own_xvfb(hdf5_run, source_dir, tmp_path):
+def test_plots_started_together_each_render_the_lattice_under_their_own_xvfb(hdf5_run, tmp_path):
     # An X server resets when its last client leaves and refuses connections meanwhile; VTK connects
     # twice in a row (SupportsOpenGL, then the render), so without -noreset about half of these failed.
     from PIL import Image
 
-    script = os.path.join(source_dir, "share", "scripts", "frictionlab_plot.py")
     no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
     runs = [shutil.copytree(hdf5_run.directory, tmp_path / f"run{k}") for k in range(4)]
-    plots = [subprocess.Popen([sys.executable, script, run], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                              text=True, env=no_display) for run in runs]
+    plots = [subprocess.Popen([sys.executable, "-m", "frictionlab.plot", run], stdout=subprocess.DEVNULL,
+                              stderr=subprocess.PIPE, text=True, env=no_display) for run in runs]
     for run, plot in zip(runs, plots):
         stderr = plot.communicate(timeout=300)[1]
         assert plot.returncode == 0, stderr

@@ -44,8 +44,6 @@ std::optional<std::filesystem::path> shipped_plugin_directory() {
     return exe ? shipped_plugin_directory(*exe) : std::nullopt;
 }
 
-std::optional<std::filesystem::path> shipped_data_directory() { return shipped_directory("share/frictionlab"); }
-
 std::optional<std::filesystem::path> shipped_directory(const std::filesystem::path& subdir) {
     const auto exe = running_executable();
     return exe ? under_prefix(*exe, subdir) : std::nullopt;
