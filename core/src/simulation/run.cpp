@@ -14,16 +14,14 @@
 #include <sstream>
 
 #include <fmt/format.h>
-#include <spdlog/details/null_mutex.h>
-#include <spdlog/sinks/base_sink.h>
 
 #include "frictionlab/output/checkpoint_file.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
-#include "frictionlab/base/live_line.hpp"
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/output_directory.hpp"
 #include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/progress_line.hpp"
 #include "frictionlab/simulation/run_record.hpp"
 #include "frictionlab/simulation/simulation.hpp"
 #include "frictionlab/simulation/system.hpp"
@@ -36,66 +34,6 @@ namespace frictionlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Clears the live progress line before a log line is printed over it; the line is drawn again at
-/// the next update.
-class ProgressLineEraser : public spdlog::sinks::base_sink<spdlog::details::null_mutex> {
-public:
-    bool shown = false;
-
-    void erase() {
-        if (shown) clear_live_line();
-        shown = false;
-    }
-
-protected:
-    void sink_it_(const spdlog::details::log_msg&) override { erase(); }
-    void flush_() override {}
-};
-
-/// Live progress on a terminal, periodic log lines otherwise.
-class Progress {
-public:
-    Progress(spdlog::logger& log, bool live) : log_(log), live_(live), start_(Clock::now()), last_(start_) {
-        // First among the logger's sinks, so the line is gone before any of them prints.
-        if (live_) log_.sinks().insert(log_.sinks().begin(), eraser_);
-    }
-    ~Progress() {
-        finish();
-        auto& sinks = log_.sinks();
-        sinks.erase(std::remove(sinks.begin(), sinks.end(), eraser_), sinks.end());
-    }
-    Progress(const Progress&) = delete;
-    Progress& operator=(const Progress&) = delete;
-
-    void update(const StageInfo& stage, double t, long long steps) {
-        const auto now = Clock::now();
-        const double since = std::chrono::duration<double>(now - last_).count();
-        if (since < (live_ ? 0.25 : 10.0)) return;
-        const double wall = std::chrono::duration<double>(now - start_).count();
-        const double done = std::clamp((t - stage.t_start) / stage.duration, 0.0, 1.0);
-        const double rate = static_cast<double>(steps - last_steps_) / since;
-        const double eta = done > 0 ? (1 - done) / done * (wall - stage_wall_) : 0;
-        const std::string line = fmt::format("stage {} ({}): t = {:.6g} s, {:5.1f} %, {:.3g} steps/s, ETA {:.0f} s",
-                                             stage.index + 1, stage.name, t, 100 * done, rate, eta);
-        if (live_)
-            show_live_line(line), eraser_->shown = true;
-        else
-            log_.info(line);
-        last_ = now;
-        last_steps_ = steps;
-    }
-    void stage_started() { stage_wall_ = std::chrono::duration<double>(Clock::now() - start_).count(); }
-    void finish() { eraser_->erase(); }
-
-private:
-    spdlog::logger& log_;
-    std::shared_ptr<ProgressLineEraser> eraser_ = std::make_shared<ProgressLineEraser>();
-    bool live_;
-    Clock::time_point start_, last_;
-    long long last_steps_ = 0;
-    double stage_wall_ = 0;
-};
 
 /// The components of a run that cannot be checkpointed, by their place in the scene. A scene that
 /// asks for checkpoints (a `checkpoint:` section) with any is an InputError naming them; one that
@@ -210,7 +148,7 @@ private:
 
     /// From stage `first`; a resumed run is within it already (its observers begun).
     void run_stages(std::size_t first) {
-        Progress progress(log_, options_.live_progress);
+        ProgressLine progress(log_, options_.live_progress);
         for (std::size_t i = first; i < scene_.stages.size(); ++i) {
             if (i > first || !options_.resume) {
                 if (i > 0) stop_if_asked(last_stage_);
@@ -227,7 +165,7 @@ private:
         observe_due(last_stage_, true);
     }
 
-    void run_stage(const StageInfo& stage, Progress& progress) {
+    void run_stage(const StageInfo& stage, ProgressLine& progress) {
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
         const bool to_observations = sim_.integrator().steps_to_observations();
