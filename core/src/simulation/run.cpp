@@ -1,17 +1,11 @@
 #include "frictionlab/simulation/run.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <memory>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -27,7 +21,6 @@
 #include "frictionlab/simulation/system.hpp"
 #include "observer_slot.hpp"
 #include "run_checkpoint.hpp"
-#include "scene/emit.hpp"
 
 namespace frictionlab {
 
