@@ -8,16 +8,14 @@
 
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/model/junction_counts.hpp"
+#include "point_masses.hpp"
 
 namespace frictionlab {
 namespace {
 
 /// Three interface blocks under a top row of two.
 Body three_blocks() {
-    Body b;
-    b.x0 = Eigen::ArrayXd::Zero(5);
-    b.z0 = Eigen::ArrayXd::Zero(5);
-    b.mass = Eigen::ArrayXd::Ones(5);
+    Body b = testing::point_masses(5, 1.0);
     b.node_sets = {{"interface", {0, 1, 2}}, {"top", {3, 4}}};
     return b;
 }

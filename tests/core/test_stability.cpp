@@ -12,6 +12,7 @@
 #include "frictionlab/model/partitioned_step.hpp"
 #include "frictionlab/simulation/stability.hpp"
 #include "frictionlab/simulation/system.hpp"
+#include "point_masses.hpp"
 
 namespace frictionlab {
 namespace {
@@ -20,38 +21,27 @@ constexpr Index nodes = 3;
 constexpr double mass = 2.0;
 constexpr double rk4_radius = 2.785;  // any radius: the estimate divides it by lambda_max
 
-/// -coefficient * [-1 2 -1] applied to (ux, uz), walls beyond both ends. In x and z alike: a
-/// direction without force would be a free mode, multiplier 1 of a Jordan block in the step map,
-/// which the estimate cannot tell from a slow instability.
-void add_chain_forces(double coefficient, const Eigen::Map<const Eigen::ArrayXd>& ux,
-                      const Eigen::Map<const Eigen::ArrayXd>& uz, ForceView& f) {
-    const auto bonds = [](const Eigen::Map<const Eigen::ArrayXd>& u, Index i) {
-        return 2 * u(i) - (i > 0 ? u(i - 1) : 0.0) - (i + 1 < nodes ? u(i + 1) : 0.0);
-    };
-    for (Index i = 0; i < nodes; ++i) {
-        f.fx(i) -= coefficient * bonds(ux, i);
-        f.fz(i) -= coefficient * bonds(uz, i);
+/// Springs (on positions) or dashpots (on velocities) on every bond, walls beyond both ends:
+/// -coefficient [-1 2 -1] u. In x and z alike: a direction without force would be a free mode,
+/// multiplier 1 of a Jordan block in the step map, which the estimate cannot tell from a slow instability.
+class ChainBonds final : public Effect {
+public:
+    enum Acting { on_positions, on_velocities };
+    ChainBonds(Acting acting, double coefficient) : acting_(acting), coefficient_(coefficient) {}
+    std::string describe() const override { return acting_ == on_positions ? "springs" : "dashpots"; }
+    void add_forces(const StageView& s, ForceView& f) override {
+        const bool velocities = acting_ == on_velocities;
+        add(velocities ? s.vx : s.x, f.fx);
+        add(velocities ? s.vz : s.z, f.fz);
     }
-}
-
-class Springs final : public Effect {
-public:
-    explicit Springs(double k) : k_(k) {}
-    std::string describe() const override { return "springs"; }
-    void add_forces(const StageView& s, ForceView& f) override { add_chain_forces(k_, s.x, s.z, f); }
 
 private:
-    double k_;
-};
-
-class Dashpots final : public Effect {
-public:
-    explicit Dashpots(double c) : c_(c) {}
-    std::string describe() const override { return "dashpots"; }
-    void add_forces(const StageView& s, ForceView& f) override { add_chain_forces(c_, s.vx, s.vz, f); }
-
-private:
-    double c_;
+    void add(const Eigen::Map<const Eigen::ArrayXd>& u, Eigen::Map<Eigen::ArrayXd>& f) const {
+        for (Index i = 0; i < nodes; ++i)
+            f(i) -= coefficient_ * (2 * u(i) - (i > 0 ? u(i - 1) : 0.0) - (i + 1 < nodes ? u(i + 1) : 0.0));
+    }
+    Acting acting_;
+    double coefficient_;
 };
 
 /// -c vx on each mass: local in vx, as friction is, so an integrator implicit in that dependence
@@ -68,19 +58,11 @@ private:
     double c_;
 };
 
-Body chain_body() {
-    Body b;
-    b.x0 = Eigen::ArrayXd::Zero(nodes);
-    b.z0 = Eigen::ArrayXd::Zero(nodes);
-    b.mass = Eigen::ArrayXd::Constant(nodes, mass);
-    return b;
-}
-
 /// The chain with springs k, dashpots c on its bonds and, if `base` > 0, base damping.
 struct Chain {
     Chain(double k, double c, double base = 0) : system(body, 0) {
-        system.add_effect(std::make_unique<Springs>(k));
-        if (c > 0) system.add_effect(std::make_unique<Dashpots>(c));
+        system.add_effect(std::make_unique<ChainBonds>(ChainBonds::on_positions, k));
+        if (c > 0) system.add_effect(std::make_unique<ChainBonds>(ChainBonds::on_velocities, c));
         if (base > 0) system.add_effect(std::make_unique<BaseDamping>(base));
         const double a = 4 * std::pow(std::sin(nodes * std::numbers::pi / (2 * (nodes + 1))), 2);  // a_N
         omega2 = k * a / mass;
@@ -91,7 +73,7 @@ struct Chain {
         const double discriminant = gamma * gamma - 4 * omega2;
         return discriminant >= 0 ? (gamma + std::sqrt(discriminant)) / 2 : std::sqrt(omega2);
     }
-    Body body = chain_body();
+    Body body = testing::point_masses(nodes, mass);
     System system;
     double omega2, gamma;  // k a_N / m and c a_N / m
 };
