@@ -118,7 +118,7 @@ double StickSlipLaw<Strength>::foreseen_event_time(const StageView& s) const {
         const double room = v > 0 ? strength - force : strength + force;
         next = std::min(next, s.t + std::max(0.0, room / (b.stiffness * std::abs(v))));
     }
-    return next;
+    return std::min(next, drift_.foreseen());
 }
 
 template <class Strength>
@@ -154,6 +154,7 @@ void StickSlipLaw<Strength>::commit(const StageView& end, double /*dt*/) {
         const Index node = nodes_[k];
         commit_block(blocks_[k], end.x[node], end.vx[node], (*normal_force_)[static_cast<Index>(k)]);
     }
+    drift_.commit(*normal_force_, end.t);
 }
 
 template <class Strength>

@@ -11,6 +11,7 @@
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
+#include "frictionlab/model/normal_force_drift.hpp"
 #include "frictionlab/model/quantities.hpp"
 
 namespace frictionlab {
@@ -106,7 +107,8 @@ Settings settings_of(const P& p) {
 ///      "after exceeding it" part matters for slip weakening, which breaks with S = mu_s f_N and no
 ///      force drop: a just-broken block is slow and would otherwise re-stick before it slips at all;
 ///   5. k_t follows the end-of-step f_N (default stiffness only); a stuck block is re-anchored so
-///      that its spring force is unchanged.
+///      that its spring force is unchanged. It is frozen through a step, so the law foresees, besides
+///      a stuck block reaching mu_s f_N, f_N moving enough to matter (NormalForceDrift).
 /// Steps 3 and 4 are friction events: while a stage has friction_events false (settling, B.18)
 /// no block breaks or re-sticks; contact and k_t still follow f_N. When events are switched on, a
 /// stuck block above mu_s f_N is a RunError, as in three_state_junctions.
@@ -128,7 +130,7 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(blocks_, events_);
+        ar(blocks_, events_, drift_);
     }
     using Params = typename Strength::Params;
     using Settings = stick_slip::Settings;
@@ -179,6 +181,7 @@ private:
     NodeSet nodes_;
     std::vector<Block> blocks_;
     const Eigen::ArrayXd* normal_force_;
+    NormalForceDrift drift_;  // k_t follows f_N at commits: a quiet span ends before it drifts
     Eigen::ArrayXd* friction_force_;
     bool events_ = true;
 };

@@ -136,7 +136,7 @@ double TwoStateJunctions::foreseen_event_time(const StageView& s) const {
         const double room = v > 0 ? b.f_s - (b.load_max + shift) : -b.f_s - (b.load_min + shift);
         next = std::min(next, std::max(0.0, room / (b.k * v)));
     }
-    return s.t + next;
+    return std::min(s.t + next, drift_.foreseen());
 }
 
 double TwoStateJunctions::potential_energy(const StageView& s) const {
@@ -190,6 +190,7 @@ void TwoStateJunctions::commit(const StageView& end, double /*dt*/) {
         }
         next_event_ = std::min(next_event_, b.next_deadline);
     }
+    drift_.commit(*normal_force_, end.t);
 }
 
 bool TwoStateJunctions::repin_expired(Block& b, double t) const {

@@ -7,6 +7,7 @@
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/kinds.hpp"
+#include "frictionlab/model/normal_force_drift.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
 namespace frictionlab {
@@ -56,7 +57,7 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(blocks_, events_, next_event_);
+        ar(blocks_, events_, next_event_, drift_);
     }
     struct Params {
         int junctions_per_block = 100;
@@ -81,8 +82,9 @@ public:
     double potential_energy(const StageView& s) const override;
     /// Quasi-static regime: always. Within a step a pinned junction is linear in its block's position
     /// (k_i, frozen) and a slipping one carries the constant s f_d. Its stiffness is N_p k_i on the
-    /// block's x; its foreseen event the first pinned junction reaching f_s at the blocks' velocities
-    /// (none while friction events are off); the re-pinnings are scheduled (next_event_time).
+    /// block's x; its foreseen event the first pinned junction reaching f_s at the blocks' velocities,
+    /// or f_N moving enough to matter to k_i and f_s (NormalForceDrift; none while friction events are
+    /// off); the re-pinnings are scheduled (next_event_time).
     bool quasi_static_regime(const StageView&) const override { return true; }
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
     double foreseen_event_time(const StageView& s) const override;
@@ -135,6 +137,7 @@ private:
     NodeSet nodes_;
     std::vector<Block> blocks_;
     const Eigen::ArrayXd* normal_force_;
+    NormalForceDrift drift_;  // k and f_s follow f_N at commits: a quiet span ends before they drift
     Eigen::ArrayXd* friction_force_;
     JunctionCounts::Writable counts_;
     bool events_ = true;

@@ -21,6 +21,7 @@ std::vector<std::pair<std::string, double>> PhaseStatistics::table(const Equilib
             {"creep_steps", static_cast<double>(creep.steps)},
             {"quiet_steps", static_cast<double>(quiet_steps)},
             {"quiet_spans", static_cast<double>(quiet_spans)},
+            {"observations_within_spans", static_cast<double>(observations_within_spans)},
             {"dynamic_steps", static_cast<double>(dynamic_steps)},
             {"switches_to_quiet", static_cast<double>(switches_to_quiet)},
             {"switches_to_dynamic", static_cast<double>(switches_to_dynamic)},

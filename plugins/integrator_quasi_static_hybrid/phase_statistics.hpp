@@ -18,6 +18,7 @@ struct PhaseStatistics {
     using Clock = std::chrono::steady_clock;
 
     long long quiet_steps = 0, quiet_spans = 0, jumps_solved = 0, dynamic_steps = 0;
+    long long observations_within_spans = 0;  // landings on a span's line for an observer, not steps
     long long switches_to_quiet = 0, switches_to_dynamic = 0;
     double quiet_time = 0, dynamic_time = 0, creep_time = 0;  // simulated, s
     Clock::duration quiet_wall{}, dynamic_wall{}, creep_wall{};
@@ -32,8 +33,8 @@ struct PhaseStatistics {
     template <class Archive>
     void serialize(Archive& ar) {
         auto quiet = quiet_wall.count(), dynamic = dynamic_wall.count(), creeping = creep_wall.count();
-        ar(quiet_steps, quiet_spans, jumps_solved, dynamic_steps, switches_to_quiet, switches_to_dynamic, quiet_time,
-           dynamic_time, creep_time, quiet, dynamic, creeping);
+        ar(quiet_steps, quiet_spans, jumps_solved, dynamic_steps, observations_within_spans, switches_to_quiet,
+           switches_to_dynamic, quiet_time, dynamic_time, creep_time, quiet, dynamic, creeping);
         quiet_wall = Clock::duration(quiet), dynamic_wall = Clock::duration(dynamic);
         creep_wall = Clock::duration(creeping);
     }

@@ -162,8 +162,10 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     const auto start = Clock::now();
     if (quiet_) {
         double h = 0;
+        const long long steps_before = system.step_index();
         if (quiet_step(system, max_dt, h)) {
-            ++statistics_.quiet_steps;
+            // An observation within a span is a state on its line, not a step (span_step).
+            ++(system.step_index() > steps_before ? statistics_.quiet_steps : statistics_.observations_within_spans);
             statistics_.quiet_time += h;
             statistics_.quiet_wall += Clock::now() - start;
             return h;
@@ -259,11 +261,8 @@ bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) 
 
 bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // Within a solved span the response is linear in time: an observation inside it is on the line
-    // between the span's ends, as long as no commit on the way has changed the forces (a count
-    // change the foresight missed): the state at the span's last sample must still balance.
-    if (span_.open && !projected_ &&
-        solver_.in_equilibrium(system, system.time(), system.y(), jump_residual * p_.position_tolerance))
-        return span_step(system, max_dt, h);
+    // between the span's ends, and nothing is committed on the way (span_step).
+    if (span_.open && !projected_) return span_step(system, max_dt, h);
     span_.open = false;
     // From the projected state just after turning quiet (y_ then holds it), else from the accepted one.
     if (!projected_) y_ = system.y();
@@ -333,19 +332,22 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
 
 bool QuasiStaticHybrid::span_step(System& system, double max_dt, double& h) {
     const double t = system.time(), t1 = span_.end_time;
-    system.begin_step();
-    // The span's end, or the observation within it that the run asks the step to land on.
-    if (max_dt >= (t1 - t) * (1 - 1e-12)) {
+    // The span's end: the step, one whatever the observers' cadences, committed there. An observation
+    // a millionth of a step short of it is at it (the run's own round-off of a time, Simulation::reached).
+    if (t + max_dt >= t1 - 1e-6 * p_.dt) {
         h = t1 - t;
         span_.open = false;
         system.add_straight_path_work(t1, span_.end);
         system.accept(t1, span_.end);
         return true;
     }
+    // An observation within it that the run asks to land on: a state on the line, shown with the
+    // quantities of the span's ends interpolated, for the observer's sampling alone (no evaluation,
+    // no commit). The first one begins the path from the span's start, the accepted state still.
     h = max_dt;
+    if (!system.on_straight_path()) system.begin_straight_path(t1, span_.end);
     span_.state_at(t + h, y_, 2 * system.layout().nodes);
-    system.add_straight_path_work(t + h, y_);
-    system.accept(t + h, y_);
+    system.move_along_path(t + h, y_);
     return true;
 }
 

@@ -154,6 +154,69 @@ TEST(System, WorkAccountingSplitsACompositeAndChangesNoForce) {
     EXPECT_DOUBLE_EQ(work[2], 0.25 * 0.3);
 }
 
+/// A spring -k x on node 0 that publishes its force as the scalar "spring_force", and counts its
+/// evaluations and commits.
+class PublishingSpring final : public Effect {
+public:
+    explicit PublishingSpring(Quantities& q) : force_(q.scalar("spring_force", "N", "test")) {}
+    std::string describe() const override { return "publishing spring"; }
+    void add_forces(const StageView& s, ForceView& f) override {
+        force_ = -k * s.x(0);
+        f.fx(0) += force_;
+        ++evaluations;
+    }
+    void commit(const StageView&, double) override { ++commits; }
+    double k = 5.0;
+    int evaluations = 0, commits = 0;
+
+private:
+    double& force_;
+};
+
+// A straight path (a quiet span): states on it are shown with the ends' quantities interpolated,
+// not evaluated, and are neither steps nor commits; accepting its end is the step.
+TEST(System, AStraightPathShowsItsStatesWithoutAStepOrAnEvaluation) {
+    Body body = testing::point_masses(1, 2.0);
+    Quantities q;
+    System system(body, 0);
+    system.use_quantities(q);
+    auto spring = std::make_unique<PublishingSpring>(q);
+    PublishingSpring& s = *spring;
+    system.add_effect(std::move(spring));
+    system.enable_work_accounting();
+    Eigen::VectorXd end = system.y();
+    end(0) = 0.4;  // x from 0 to 0.4 over 2 s
+    end(2) = 0.2;  // at the path's velocity
+    system.initial_state()(2) = 0.2;
+    system.begin_step();
+    system.begin_straight_path(2.0, end);
+    EXPECT_EQ(s.evaluations, 2) << "the path's ends";
+    EXPECT_TRUE(system.on_straight_path());
+    Eigen::VectorXd mid = end;
+    mid(0) = 0.1;
+    system.move_along_path(0.5, mid);
+    system.refresh();
+    // Shown, not evaluated: the only evaluations are the work accounting's, the spring alone at the
+    // ends of the path so far (the trapezoid rule).
+    EXPECT_EQ(s.evaluations, 4);
+    EXPECT_EQ(s.commits, 0);
+    EXPECT_EQ(system.step_index(), 0);
+    EXPECT_DOUBLE_EQ(system.time(), 0.5);
+    EXPECT_DOUBLE_EQ(q.find_scalar("spring_force")->value, -5 * 0.1) << "linear: interpolated exactly";
+    EXPECT_DOUBLE_EQ(system.net_force()(0), -5 * 0.1);
+    // The work of the path so far: the trapezoid of F v over x from 0 to 0.1, -k x^2 / 2.
+    EXPECT_NEAR(system.work()[0], -5 * 0.1 * 0.1 / 2, 1e-15);
+    system.add_straight_path_work(2.0, end);
+    system.accept(2.0, end);
+    EXPECT_FALSE(system.on_straight_path());
+    EXPECT_EQ(system.step_index(), 1);
+    EXPECT_EQ(s.commits, 1);
+    EXPECT_NEAR(system.work()[0], -5 * 0.4 * 0.4 / 2, 1e-15);
+    const int before = s.evaluations;
+    system.refresh();
+    EXPECT_EQ(s.evaluations, before + 1) << "a new step's state is evaluated";
+}
+
 }  // namespace
 }  // namespace frictionlab
 

@@ -61,6 +61,28 @@ const Quantities::Scalar* Quantities::find_scalar(std::string_view name) const {
     return it == scalars_.end() ? nullptr : &it->second;
 }
 
+void Quantities::copy_to(Values& values) const {
+    values.fields.resize(fields_.size());
+    values.scalars.resize(scalars_.size());
+    std::size_t k = 0;
+    for (const auto& [name, f] : fields_) values.fields[k++] = f.values;
+    k = 0;
+    for (const auto& [name, s] : scalars_) values.scalars[k++] = s.value;
+}
+
+void Quantities::set_between(const Values& a, const Values& b, double w) {
+    std::size_t k = 0;
+    for (auto& [name, f] : fields_) {
+        f.values = (1 - w) * a.fields[k] + w * b.fields[k];  // same size: the storage stays put
+        ++k;
+    }
+    k = 0;
+    for (auto& [name, s] : scalars_) {
+        s.value = (1 - w) * a.scalars[k] + w * b.scalars[k];
+        ++k;
+    }
+}
+
 void Quantities::save_state(StateOut& out) const {
     out(static_cast<std::uint64_t>(fields_.size()));
     for (const auto& [name, f] : fields_) out(name, f.values);

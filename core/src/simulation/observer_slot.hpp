@@ -14,7 +14,12 @@ struct ObserverSlot {
     double every = 0;
     long long every_steps = 0;
     double next_time = 0;
-    long long last_step = -1;  // an observer sees each step at most once (stage ends, run end)
+    // An observer sees each state at most once (stage ends, run end): a state is a step, or a time
+    // within one (a straight path's, System::move_along_path).
+    long long last_step = -1;
+    double last_time = -INFINITY;
+
+    bool seen(long long step, double t) const { return step == last_step && t == last_time; }
 
     bool due(double t, long long step, double tolerance) const {
         if (every_steps > 0) return step % every_steps == 0;

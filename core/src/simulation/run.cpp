@@ -129,13 +129,14 @@ private:
         // them to within round-off; a fixed step observes at the step end nearest the cadence.
         const Integrator& integrator = sim_.integrator();
         const double tolerance = (integrator.steps_to_observations() ? 1e-6 : 0.5) * integrator.nominal_dt();
-        bool refreshed = false;
         for (auto& o : observers_) {
-            if (o.last_step == sys.step_index() || (!all && !o.due(sys.time(), sys.step_index(), tolerance))) continue;
-            if (!refreshed) sys.refresh(), refreshed = true;
+            if (o.seen(sys.step_index(), sys.time()) || (!all && !o.due(sys.time(), sys.step_index(), tolerance)))
+                continue;
+            sys.refresh();
             o.observer->observe(view(stage));
             o.advance(sys.time(), tolerance);
             o.last_step = sys.step_index();
+            o.last_time = sys.time();
         }
     }
 
@@ -250,7 +251,8 @@ private:
         c.system = archived([&](StateOut& out) { sys.save_state(out); });
         c.quantities = archived([&](StateOut& out) { sim_.quantities().save_state(out); });
         c.integrator = archived_state(sim_.integrator());
-        for (const auto& o : observers_) c.observers.push_back({o.next_time, o.last_step, archived_state(*o.observer)});
+        for (const auto& o : observers_)
+            c.observers.push_back({o.next_time, o.last_step, o.last_time, archived_state(*o.observer)});
         c.outputs = output_lengths(output_);
         write_checkpoint_file(output_, c.payload());
         schedule_next_checkpoint();
@@ -288,6 +290,7 @@ private:
             o.observer->begin(view(last_stage_));
             o.next_time = c.observers[i].next_time;
             o.last_step = c.observers[i].last_step;
+            o.last_time = c.observers[i].last_time;
             restore_archived_state(*o.observer, c.observers[i].state, o.path);
             o.observer->resumed(view(last_stage_));
         }

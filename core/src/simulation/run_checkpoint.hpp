@@ -2,6 +2,7 @@
 // What a run's checkpoint holds (share/docs/checkpoints.md), and how it is checked on resume. Each
 // component's state is archived on its own, so that a state that does not read back is reported
 // with the component's name, and observers can be restored after they have reopened their files.
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -27,10 +28,11 @@ struct RunCheckpoint {
     struct ObserverState {
         double next_time = 0;
         long long last_step = -1;
+        double last_time = -INFINITY;
         std::string state;
         template <class Archive>
         void serialize(Archive& ar) {
-            ar(next_time, last_step, state);
+            ar(next_time, last_step, last_time, state);
         }
     };
     std::vector<ObserverState> observers;

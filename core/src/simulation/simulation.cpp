@@ -74,6 +74,7 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     check_needed_fields();
 
     system_ = std::make_unique<System>(bulk_->body(), aux_.count);
+    system_->use_quantities(quantities_);
     for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages), std::move(e.label));
     Eigen::VectorXd& y = system_->initial_state();
     Eigen::Ref<Eigen::ArrayXd> aux = y.tail(system_->layout().aux).array();

@@ -1,6 +1,7 @@
 #include "frictionlab/simulation/system.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "frictionlab/base/hot_kernel.hpp"
 #include "frictionlab/base/state_archive.hpp"
@@ -52,6 +53,7 @@ void System::enable_work_accounting() {
 }
 
 void System::add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, const Evaluation& how) {
+    shown_ = false;  // the effects publish this evaluation's quantities
     const StageView s = view_of(y, layout_, t);
     ForceView forces = forces_at(f.data(), layout_);
     const bool accounting = work_accounting() && how.work_weight != 0;
@@ -87,6 +89,7 @@ bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::Ar
     dfx_dvx.setZero(n);
     if (local_scratch_.size() != layout_.size()) local_scratch_.resize(layout_.size());
     local_scratch_.setZero();
+    shown_ = false;
     const StageView s = view_of(y, layout_, t);
     ForceView f = forces_of(local_scratch_, layout_);
     bool any = false;
@@ -109,7 +112,31 @@ void System::begin_step() {
 
 void System::accept(double t, const Eigen::VectorXd& y) {
     y_ = y;
+    path_.open = false;
+    shown_ = false;
     commit_step(t);
+}
+
+void System::begin_straight_path(double t1, const Eigen::VectorXd& y1) {
+    path_.start_time = t_, path_.end_time = t1;
+    evaluate_shown(t1, y1);
+    path_.end_force = net_force_;
+    if (quantities_) quantities_->copy_to(path_.end);
+    evaluate_shown(t_, y_);  // last, so that what is shown describes the accepted state
+    path_.start_force = net_force_;
+    if (quantities_) quantities_->copy_to(path_.start);
+    path_.open = shown_ = true;
+}
+
+void System::move_along_path(double t, const Eigen::VectorXd& y) {
+    add_straight_path_work(t, y);
+    for (std::size_t k = 0; k < work_.size(); ++k) work_[k] += std::exchange(pending_work_[k], 0.0);
+    y_ = y;
+    t_ = t;
+    const double w = (t - path_.start_time) / (path_.end_time - path_.start_time);
+    net_force_ = (1 - w) * path_.start_force + w * path_.end_force;
+    if (quantities_) quantities_->set_between(path_.start, path_.end, w);
+    shown_ = true;
 }
 
 void System::commit_step(double t) {
@@ -161,6 +188,7 @@ void System::add_straight_path_work(double t1, const Eigen::VectorXd& y1) {
 }
 
 void System::activate(const StageInfo* stage) {
+    shown_ = false;
     stage_end_ = stage ? stage->t_start + stage->duration : std::numeric_limits<double>::infinity();
     active_.clear();
     active_parts_.clear();
@@ -181,14 +209,15 @@ void System::begin_stage(const StageInfo& stage) {
 }
 
 void System::save_state(StateOut& out) const {
-    out(t_, steps_, evaluations_, y_, work_, pending_work_);
+    out(t_, steps_, evaluations_, y_, work_, pending_work_, path_);
     for (const Slot& slot : slots_) slot.effect->save_state(out);
 }
 
 void System::restore_state(StateIn& in) {
     Eigen::VectorXd y;
     std::vector<double> work, pending;
-    in(t_, steps_, evaluations_, y, work, pending);
+    in(t_, steps_, evaluations_, y, work, pending, path_);
+    shown_ = false;
     if (y.size() != y_.size() || work.size() != work_.size() || pending.size() != pending_work_.size())
         throw cereal::Exception("the checkpoint's state vector or work accounting does not fit this scene");
     y_ = std::move(y), work_ = std::move(work), pending_work_ = std::move(pending);
@@ -203,7 +232,13 @@ std::vector<std::string> System::not_checkpointable() const {
 }
 
 void System::refresh() {
-    derivative(*this, t_, y_, scratch_, Evaluation::outside_step());
+    if (shown_) return;
+    evaluate_shown(t_, y_);
+    shown_ = true;
+}
+
+void System::evaluate_shown(double t, const Eigen::VectorXd& y) {
+    derivative(*this, t, y, scratch_, Evaluation::outside_step());
     const Index n = layout_.nodes;
     net_force_.head(n) = (scratch_.segment(2 * n, n).array() * body_.mass).matrix();
     net_force_.tail(n) = (scratch_.segment(3 * n, n).array() * body_.mass).matrix();

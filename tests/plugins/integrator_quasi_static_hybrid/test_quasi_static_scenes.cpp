@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -45,7 +46,8 @@ TEST(QuasiStaticScenes, StuckLoadingCurveMatchesRk4WithinTheTarget) {
     const YAML::Node stats = hybrid.record["integrator_statistics"];
     ASSERT_TRUE(stats) << "run.yaml records the phase statistics";
     EXPECT_GT(stats["quiet_fraction_of_simulated_time"].as<double>(), 0.7);
-    EXPECT_LT(stats["quiet_spans"].as<double>(), stats["quiet_steps"].as<double>() / 5)
+    EXPECT_EQ(stats["quiet_steps"].as<double>(), stats["quiet_spans"].as<double>()) << "a step per span";
+    EXPECT_GT(stats["observations_within_spans"].as<double>(), 5 * stats["quiet_spans"].as<double>())
         << "a solve per span, not per sample";
     // Point by point the curves agree within the target (measured: 2e-8) once RK4's own ringing from
     // the drive's start (the quasi-static solution has none, by construction) has decayed, from 1 ms
@@ -65,6 +67,42 @@ TEST(QuasiStaticScenes, StuckLoadingCurveMatchesRk4WithinTheTarget) {
     };
     EXPECT_LE(worst_relative(5e-3, 15.9e-3), 1e-4) << "relative error of F_S on the stuck loading curve";
     EXPECT_LE(worst_relative(20e-3, 29e-3), 1e-6) << "and between the discrete events that follow";
+}
+
+// An observation within a quiet span is a state on the span's line, not a step: it must show what a
+// run that ends its span there shows, and the spans must not depend on the observers' cadence.
+TEST(QuasiStaticScenes, ObservationsWithinASpanShowWhatARunStoppedThereShows) {
+    const std::string paper_rate = "--set loaders[2].velocity=1.0e-4 ";  // stuck throughout (30 ms)
+    const auto work = testing::work_directory();
+    const LoadingRun fine = run_loading(work, "fine", paper_rate + "--set stages[1].duration=0.03"),
+                     coarse = run_loading(work, "coarse",
+                                          paper_rate + "--set stages[1].duration=0.03 --set observers[0].every=1.0e-3");
+    const YAML::Node fine_stats = fine.record["integrator_statistics"],
+                     coarse_stats = coarse.record["integrator_statistics"];
+    EXPECT_GT(fine_stats["observations_within_spans"].as<double>(), 2000);
+    for (const char* count : {"quiet_steps", "quiet_spans", "dynamic_steps", "static_solves"})
+        EXPECT_EQ(fine_stats[count].as<double>(), coarse_stats[count].as<double>()) << count;
+    EXPECT_EQ(fine.record["steps"].as<long long>(), coarse.record["steps"].as<long long>());
+
+    // Runs whose load stage ends at 12.34 ms and 24.68 ms, inside spans of the 30 ms run: the stage
+    // end ends the span there, with a commit; the 30 ms run observes the same times on its line.
+    for (const double end : {0.01234, 0.02468}) {
+        const LoadingRun stopped =
+            run_loading(work, fmt::format("stopped_{}", end),
+                        paper_rate + fmt::format("--set stages[1].duration={:.6g} ", end - 0.004) +
+                            "--set observers[0].every=1.0e-3");
+        const auto& t = stopped.curve.at("time");
+        const std::size_t last = t.size() - 1;
+        ASSERT_NEAR(t[last], end, 1e-12);
+        std::size_t k = 0;
+        while (k < fine.curve.at("time").size() && std::abs(fine.curve.at("time")[k] - end) > 1e-12) ++k;
+        ASSERT_LT(k, fine.curve.at("time").size()) << "the 10 us cadence observes " << end;
+        for (const char* column :
+             {"driving_force", "driving_displacement", "total_friction_force", "total_normal_force"}) {
+            const double a = fine.curve.at(column)[k], b = stopped.curve.at(column)[last];
+            EXPECT_LE(std::abs(a - b), 1e-7 * std::abs(b)) << column << " at " << end;
+        }
+    }
 }
 
 /// Time at which the first junction of the interface breaks, stepping the scene's stages.

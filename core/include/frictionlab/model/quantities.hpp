@@ -60,6 +60,20 @@ public:
     void restore_state(StateIn& in);
     const std::map<std::string, Scalar, std::less<>>& scalars() const { return scalars_; }
 
+    /// Every field's and scalar's value, in name order: the quantities at one state (System keeps
+    /// them at both ends of a straight path).
+    struct Values {
+        std::vector<Eigen::ArrayXd> fields;
+        std::vector<double> scalars;
+        template <class Archive>
+        void serialize(Archive& ar) {
+            ar(fields, scalars);
+        }
+    };
+    void copy_to(Values& values) const;
+    /// Every value to (1 - w) a + w b, a and b copied from this same set of quantities.
+    void set_between(const Values& a, const Values& b, double w);
+
 private:
     std::map<std::string, Field, std::less<>> fields_;
     std::map<std::string, Scalar, std::less<>> scalars_;

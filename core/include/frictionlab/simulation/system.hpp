@@ -11,6 +11,7 @@
 
 #include "frictionlab/model/body.hpp"
 #include "frictionlab/model/effect.hpp"
+#include "frictionlab/model/quantities.hpp"
 #include "frictionlab/model/stage.hpp"
 #include "frictionlab/model/state.hpp"
 
@@ -90,6 +91,23 @@ public:
     /// Every integrator, after a step: makes (t, y) the accepted state and lets every active effect
     /// commit its transitions.
     void accept(double t, const Eigen::VectorXd& y);
+
+    /// The quantities the effects publish into (the run's): on a straight path they are shown
+    /// interpolated (begin_straight_path). Without them a path shows only the state.
+    void use_quantities(Quantities& quantities) { quantities_ = &quantities; }
+    /// For a stepper whose next step is a straight path from the accepted state to (t1, y1) with
+    /// nothing for an effect to judge on the way (a quiet span between foreseen events), begun
+    /// after begin_step(): evaluates the pipeline at both ends and keeps what refresh() would show
+    /// there, the published quantities and the net force.
+    void begin_straight_path(double t1, const Eigen::VectorXd& y1);
+    /// Moves the accepted state to (t, y) on that path, y on the line between its ends: for an
+    /// observation within the step, not a step. No effect commits, the step count stays, the work
+    /// of the path so far is booked, and refresh() shows the ends' values interpolated to t rather
+    /// than evaluating the pipeline: exact for the effects linear in the positions (loads, contact,
+    /// junction forces), to second order in the path's strain for the geometric springs' net force.
+    /// accept() at the path's end ends it.
+    void move_along_path(double t, const Eigen::VectorXd& y);
+    bool on_straight_path() const { return path_.open; }
     /// The earliest scheduled event of the active effects (a junction's clock): adaptive and
     /// quasi-static steppers land on it.
     double next_event_time() const;
@@ -114,7 +132,8 @@ public:
     /// effects then restore the state they had (restore_state).
     void resume_stage(const StageInfo& stage) { activate(&stage); }
     /// Evaluates every active effect at the accepted state, so published quantities and net_force()
-    /// describe it (observers call this; its cost is proportional to their cadence).
+    /// describe it (observers call this; its cost is proportional to their cadence). Nothing to do
+    /// when they already do: refreshed since the last step, or interpolated on a straight path.
     void refresh();
     /// Net force on every node at the last refresh(): [fx (N) | fz (N)].
     const Eigen::VectorXd& net_force() const { return net_force_; }
@@ -152,6 +171,20 @@ private:
     void commit_step(double t);
     /// Adds the work of part `part` (index into parts_) over this evaluation, with the quadrature weight.
     void add_work(std::size_t part, const StageView& s, double weight);
+    /// Evaluates the pipeline at (t, y) for what observers see: the published quantities and net_force_.
+    void evaluate_shown(double t, const Eigen::VectorXd& y);
+
+    /// What refresh() shows at both ends of a straight path (begin_straight_path).
+    struct StraightPath {
+        bool open = false;
+        double start_time = 0, end_time = 0;
+        Quantities::Values start, end;
+        Eigen::VectorXd start_force, end_force;  // net_force_ at the ends
+        template <class Archive>
+        void serialize(Archive& ar) {
+            ar(open, start_time, end_time, start, end, start_force, end_force);
+        }
+    };
 
     struct Slot {
         std::unique_ptr<Effect> effect;
@@ -172,6 +205,9 @@ private:
     Eigen::VectorXd local_scratch_;                 // forces of the effects local in velocity
     std::vector<Eigen::Triplet<double>> triplets_;  // stiffness assembly scratch
     Eigen::VectorXd path_state_;                    // straight-path work scratch
+    Quantities* quantities_ = nullptr;
+    StraightPath path_;
+    bool shown_ = false;  // the quantities and net force describe the accepted state
     double t_ = 0, stage_end_ = std::numeric_limits<double>::infinity();
     long long steps_ = 0, evaluations_ = 0;
 };
