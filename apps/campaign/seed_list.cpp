@@ -1,4 +1,4 @@
-#include "frictionlab/seed_list.hpp"
+#include "frictionlab/campaign/seed_list.hpp"
 
 #include <cmath>
 

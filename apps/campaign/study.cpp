@@ -1,4 +1,4 @@
-#include "frictionlab/study.hpp"
+#include "frictionlab/campaign/study.hpp"
 
 #include <fstream>
 #include <iterator>
@@ -7,12 +7,12 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/campaign_file.hpp"
-#include "frictionlab/campaign_keys.hpp"
+#include "frictionlab/campaign/file_kind.hpp"
+#include "frictionlab/campaign/keys.hpp"
 #include "frictionlab/scene/keys.hpp"
 #include "frictionlab/scene/values.hpp"
 #include "frictionlab/scene/yaml.hpp"
-#include "frictionlab/seed_list.hpp"
+#include "frictionlab/campaign/seed_list.hpp"
 
 namespace frictionlab {
 

@@ -1,4 +1,4 @@
-#include "frictionlab/study_run.hpp"
+#include "frictionlab/campaign/study_run.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/base/version.hpp"
-#include "frictionlab/campaign_runner.hpp"
-#include "frictionlab/case_outputs.hpp"
-#include "frictionlab/csv_cell.hpp"
+#include "frictionlab/campaign/runner.hpp"
+#include "frictionlab/campaign/case_outputs.hpp"
+#include "frictionlab/campaign/csv_cell.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/output/atomic_file.hpp"

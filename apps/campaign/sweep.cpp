@@ -1,4 +1,4 @@
-#include "frictionlab/sweep.hpp"
+#include "frictionlab/campaign/sweep.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -9,11 +9,11 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/campaign_file.hpp"
-#include "frictionlab/campaign_keys.hpp"
+#include "frictionlab/campaign/file_kind.hpp"
+#include "frictionlab/campaign/keys.hpp"
 #include "frictionlab/scene/values.hpp"
 #include "frictionlab/scene/yaml.hpp"
-#include "frictionlab/seed_list.hpp"
+#include "frictionlab/campaign/seed_list.hpp"
 
 namespace frictionlab {
 

@@ -1,4 +1,4 @@
-#include "frictionlab/sweep_tables.hpp"
+#include "frictionlab/campaign/sweep_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "frictionlab/case_outputs.hpp"
-#include "frictionlab/csv_cell.hpp"
+#include "frictionlab/campaign/case_outputs.hpp"
+#include "frictionlab/campaign/csv_cell.hpp"
 #include "frictionlab/output/csv_columns.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/output/atomic_file.hpp"

@@ -13,8 +13,8 @@
 #include <spdlog/logger.h>
 
 #include "frictionlab/simulation/run.hpp"
-#include "frictionlab/study.hpp"
-#include "frictionlab/study_metrics.hpp"
+#include "frictionlab/campaign/study.hpp"
+#include "frictionlab/campaign/study_metrics.hpp"
 
 namespace frictionlab {
 

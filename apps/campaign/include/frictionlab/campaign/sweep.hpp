@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/campaign_case.hpp"
+#include "frictionlab/campaign/case_record.hpp"
 #include "frictionlab/base/diagnostics.hpp"
 #include "frictionlab/scene/scene.hpp"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "frictionlab/campaign_case.hpp"
-#include "frictionlab/sweep.hpp"
+#include "frictionlab/campaign/case_record.hpp"
+#include "frictionlab/campaign/sweep.hpp"
 
 namespace frictionlab {
 

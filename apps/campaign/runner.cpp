@@ -1,4 +1,4 @@
-#include "frictionlab/campaign_runner.hpp"
+#include "frictionlab/campaign/runner.hpp"
 
 #include <fcntl.h>
 #include <sys/prctl.h>
@@ -19,7 +19,7 @@
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_sinks.h>
 
-#include "frictionlab/campaign_mpi.hpp"
+#include "frictionlab/campaign/mpi.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/live_line.hpp"

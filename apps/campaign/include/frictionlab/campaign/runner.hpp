@@ -2,7 +2,7 @@
 // Runs the cases of a campaign, each an ordinary run (run_scene) in a child process of its own, so
 // that a case that fails, aborts or is killed takes no other case with it, and every case computes
 // exactly what `frictionlab run` computes on its scene whatever runs beside it. Up to `jobs` cases
-// run at once on this machine; under MPI (campaign_mpi.hpp) rank 0 also hands the cases out one at a
+// run at once on this machine; under MPI (mpi.hpp) rank 0 also hands the cases out one at a
 // time to the other ranks as they become free (dynamic load balancing: cases differ in cost). A case
 // whose directory records it done with the same scene hash is not run again.
 #include <atomic>
@@ -11,7 +11,7 @@
 
 #include <spdlog/logger.h>
 
-#include "frictionlab/campaign_case.hpp"
+#include "frictionlab/campaign/case_record.hpp"
 
 namespace frictionlab {
 

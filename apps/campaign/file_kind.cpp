@@ -1,4 +1,4 @@
-#include "frictionlab/campaign_file.hpp"
+#include "frictionlab/campaign/file_kind.hpp"
 
 #include <fstream>
 #include <iterator>
