@@ -34,7 +34,8 @@
 #include "frictionlab/campaign/study.hpp"
 #include "frictionlab/campaign/study_run.hpp"
 #include "frictionlab/campaign/sweep.hpp"
-#include "frictionlab/campaign/sweep_tables.hpp"
+#include "frictionlab/campaign/sweep_run.hpp"
+#include "frictionlab/campaign/study_tables.hpp"
 
 namespace fl = frictionlab;
 
@@ -232,12 +233,12 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
     const bool root = fl::mpi_rank() == 0;
     fl::Diagnostics diagnostics;
     const auto spec = fl::read_sweep(file, diagnostics);
-    std::vector<fl::CampaignCase> cases;
+    std::vector<fl::CampaignRun> cases;
     if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
     if (diagnostics.empty()) {
         const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics).plugin_paths(diagnostics);
         fl::load_plugins(registry, common.directories(scene_paths), log);
-        cases = fl::sweep_cases(spec, output, registry, diagnostics);
+        cases = fl::sweep_runs(spec, output, registry, diagnostics);
     }
     if (check_only && diagnostics.empty() && root) {
         std::vector<std::pair<std::string, const fl::Scene*>> scenes;
@@ -249,26 +250,15 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, const
         if (root) std::cout << file.string() << ": ok (sweep of " << cases.size() << " cases)\n";
         return fl::exit_code::ok;
     }
-    if (root) {
-        // A sweep run again into its own directory goes on where it stopped; --overwrite starts afresh.
-        if (options.overwrite || !std::filesystem::exists(output) || !fl::created_by_frictionlab(output))
-            fl::prepare_output_directory(output, options.overwrite, {spec.scene, file});
-    }
     fl::CampaignOptions campaign;
-    campaign.jobs = jobs > 0             ? jobs
-                    : fl::mpi_size() > 1 ? 1
-                                         : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    campaign.jobs = jobs;
+    campaign.overwrite = options.overwrite;
     campaign.allow_unstable_step = options.allow_unstable_step;
     campaign.live_progress = root && isatty(STDERR_FILENO) && !common.quiet;
-    if (root)
-        log.info(
-            "sweep {}: {} cases, {} at a time{}", file.filename().string(), cases.size(), campaign.jobs,
-            fl::mpi_size() > 1 ? fmt::format(" on rank 0 and one on each of {} other ranks", fl::mpi_size() - 1) : "");
     const fl::InterruptSignals signals;
     campaign.stop_signal = &fl::InterruptSignals::received();
-    const auto records = fl::run_campaign(cases, output, registry, log, campaign);
+    const auto records = fl::run_sweep(spec, cases, output, registry, log, campaign);
     if (!root) return fl::exit_code::ok;
-    fl::write_sweep_tables(spec, cases, records, output);
     if (const int signal = fl::InterruptSignals::received().load(); signal != 0) {
         const auto count = [&](const char* status) {
             return std::count_if(records.begin(), records.end(), [&](const auto& r) { return r.status == status; });
@@ -314,27 +304,29 @@ int study(const std::filesystem::path& file, std::string output, int jobs, const
           bool check_only, const Common& common, fl::Registry& registry, spdlog::logger& log) {
     fl::Diagnostics diagnostics;
     const auto spec = fl::read_study(file, diagnostics);
-    std::vector<fl::Scene> scenes;
+    std::vector<fl::CampaignRun> scenes;
     if (diagnostics.empty()) {
         const auto scene_paths = fl::SceneDocument::load(spec.scene, {}, diagnostics).plugin_paths(diagnostics);
         fl::load_plugins(registry, common.directories(scene_paths), log);
         if (output.empty()) output = (std::filesystem::path("out") / file.stem()).string();
-        scenes = fl::study_scenes(spec, output, registry, diagnostics);
+        scenes = fl::study_runs(spec, output, registry, diagnostics);
     }
     if (!diagnostics.empty()) return report_errors(diagnostics, file);
     if (check_only) {
         std::vector<std::pair<std::string, const fl::Scene*>> cases;
-        const auto runs = spec.runs();
-        for (std::size_t i = 0; i < scenes.size(); ++i) cases.emplace_back(runs.at(i).label(), &scenes[i]);
+        for (const auto& run : scenes) cases.emplace_back(spec.label(run), &run.scene);
         const std::size_t above = check_case_steps(cases, false, common, registry, diagnostics);
         std::cout << file.string() << ": ok (study of " << scenes.size() << " scenes"
                   << (above > 0 ? fmt::format("; {} above the stable step", above) : "") << ")\n";
         return fl::exit_code::ok;
     }
     const fl::InterruptSignals signals;
-    fl::RunOptions study_options = options;
-    study_options.stop_signal = &fl::InterruptSignals::received();
-    const auto result = fl::run_study(spec, scenes, output, registry, log, study_options, jobs);
+    fl::CampaignOptions campaign;
+    campaign.jobs = jobs;
+    campaign.overwrite = options.overwrite;
+    campaign.allow_unstable_step = options.allow_unstable_step;
+    campaign.stop_signal = &fl::InterruptSignals::received();
+    const auto result = fl::run_study(spec, scenes, output, registry, log, campaign);
     fl::write_study_csv(result, spec, std::filesystem::path(output) / "study.csv");
     fl::write_study_markdown(result, spec, std::filesystem::path(output) / "study.md");
     log.info("study: {} cases; table in {}", result.rows.size(), (std::filesystem::path(output) / "study.md").string());
