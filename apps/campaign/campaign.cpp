@@ -4,9 +4,13 @@
 
 namespace frictionlab {
 
-std::vector<std::optional<std::int64_t>> Campaign::run_seeds() const {
-    if (seeds.empty()) return {std::nullopt};
-    return {seeds.begin(), seeds.end()};
+std::vector<CampaignRun> Campaign::runs() const {
+    std::vector<CampaignRun> out;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        if (seeds.empty()) out.push_back({i, std::nullopt, {}, {}, {}});
+        for (const auto seed : seeds) out.push_back({i, seed, {}, {}, {}});
+    }
+    return out;
 }
 
 std::optional<Scene> base_scene(const Campaign& campaign, const Registry& registry, Diagnostics& diagnostics) {

@@ -48,9 +48,7 @@ std::string flow_text(const YAML::Node& node) {
     return out.c_str();
 }
 
-Section CampaignReader::read_top(const YAML::Node& root, const std::filesystem::path& file, const SectionKeys& keys,
-                                 Campaign& campaign) const {
-    campaign.file = file;
+Section CampaignReader::read_top(const YAML::Node& root, const SectionKeys& keys, Campaign& campaign) const {
     const auto top = read_section({YAML::Node(YAML::NodeType::Undefined), root}, "", keys, reporter_);
     if (!root.IsMap()) return top;
     campaign.title = value_or(top, "title", std::string());

@@ -29,30 +29,15 @@ std::optional<YAML::Node> read_campaign_yaml(const std::filesystem::path& file, 
 /// mapping or list in flow style.
 std::string flow_text(const YAML::Node& node);
 
-/// A campaign file read by `Reader` (a CampaignReader whose read(root, file) gives a `Kind`); a
-/// `Kind` that knows only its file if the file cannot be read.
-template <class Kind, class Reader>
-Kind read_campaign_file(const std::filesystem::path& file, const std::string& what, const std::string& expected,
-                        Diagnostics& diagnostics) {
-    const auto root = read_campaign_yaml(file, what, expected, diagnostics);
-    if (!root) {
-        Kind empty;
-        empty.file = file;
-        return empty;
-    }
-    const SourceMap sources(file.string());
-    return Reader(sources, diagnostics).read(*root, file);
-}
-
 class CampaignReader {
 public:
     CampaignReader(const SourceMap& sources, Diagnostics& diagnostics) : reporter_(sources, diagnostics) {}
 
+    /// The top-level mapping read against `keys`; its title, scene (against the folder of
+    /// `campaign.file`) and seeds go into `campaign`.
+    Section read_top(const YAML::Node& root, const SectionKeys& keys, Campaign& campaign) const;
+
 protected:
-    /// The top-level mapping of `file` read against `keys`; the file, its title, scene and seeds go
-    /// into `campaign`.
-    Section read_top(const YAML::Node& root, const std::filesystem::path& file, const SectionKeys& keys,
-                     Campaign& campaign) const;
     /// The items of `cases:`, a non-empty list; an error and none otherwise.
     std::vector<Entry> case_items(const Entry& list) const;
     /// A case's mapping read against `keys`; its `name` and `set` go into `c`.
@@ -72,5 +57,22 @@ protected:
 private:
     std::vector<std::int64_t> read_seeds(const Entry& entry) const;
 };
+
+/// A campaign file read by `Reader`, a CampaignReader that names its top-level keys (keys()) and
+/// reads those beyond the shared ones (read_own()); a `Kind` that knows only its file if the file
+/// cannot be read.
+template <class Kind, class Reader>
+Kind read_campaign_file(const std::filesystem::path& file, const std::string& what, const std::string& expected,
+                        Diagnostics& diagnostics) {
+    Kind campaign;
+    campaign.file = file;
+    const auto root = read_campaign_yaml(file, what, expected, diagnostics);
+    if (!root) return campaign;
+    const SourceMap sources(file.string());
+    Reader reader(sources, diagnostics);
+    const auto top = reader.read_top(*root, Reader::keys(), campaign);
+    if (root->IsMap()) reader.read_own(*root, top, campaign);
+    return campaign;
+}
 
 }  // namespace frictionlab::detail

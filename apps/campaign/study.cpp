@@ -20,15 +20,14 @@ namespace {
 
 using detail::Entry;
 
-class StudyReader : detail::CampaignReader {
+class StudyReader : public detail::CampaignReader {
 public:
     using CampaignReader::CampaignReader;
 
-    Study read(const YAML::Node& root, const std::filesystem::path& file) {
-        Study study;
-        const detail::SectionKeys keys{"a study", detail::study_params(), detail::study_sections(), true};
-        const auto top = read_top(root, file, keys, study);
-        if (!root.IsMap()) return study;
+    static detail::SectionKeys keys() { return {"a study", detail::study_params(), detail::study_sections(), true}; }
+
+    /// The cadences, the reference and the cases compared with it.
+    void read_own(const YAML::Node& root, const detail::Section& top, Study& study) {
         study.observe_every = value_or(top, "observe_every", study.observe_every);
         study.profile_every = value_or(top, "profile_every", study.profile_every);
         study.cases.emplace_back();
@@ -44,7 +43,6 @@ public:
         if (!top.given.contains("reference"))
             detail::report_missing(root, "reference", "a mapping with `set:`, the overrides of the converged run", "",
                                    reporter_);
-        return study;
     }
 
 private:
@@ -185,21 +183,21 @@ std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::p
         diagnostics.error(study.scene_where, "scene", problem);
         return runs;
     }
-    for (std::size_t i = 0; i < study.cases.size(); ++i)
-        for (const auto seed : study.run_seeds()) {
-            const CampaignCase& c = study.cases[i];
-            const auto scene = run_scene(study, c, seed, {}, registry, diagnostics);
-            if (!scene) continue;
-            if (const auto problem = stage_names_problem(*scene); !problem.empty()) {
-                diagnostics.error(c.where, c.name, problem);
-                continue;
-            }
-            const auto observers = study_observers(study, *scene, output / run_directory(c, seed));
-            auto observed = run_scene(study, c, seed, observers, registry, diagnostics);
-            if (!observed) continue;
-            const std::string name = seed ? fmt::format("{}.seed_{}", c.name, *seed) : c.name;
-            runs.push_back({i, seed, name, {}, std::move(*observed)});
+    for (CampaignRun run : study.runs()) {
+        const CampaignCase& c = study.cases[run.case_index];
+        const auto scene = run_scene(study, c, run.seed, {}, registry, diagnostics);
+        if (!scene) continue;
+        if (const auto problem = stage_names_problem(*scene); !problem.empty()) {
+            diagnostics.error(c.where, c.name, problem);
+            continue;
         }
+        const auto observers = study_observers(study, *scene, output / run_directory(c, run.seed));
+        auto observed = run_scene(study, c, run.seed, observers, registry, diagnostics);
+        if (!observed) continue;
+        run.name = run.seed ? fmt::format("{}.seed_{}", c.name, *run.seed) : c.name;
+        run.scene = std::move(*observed);
+        runs.push_back(std::move(run));
+    }
     if (diagnostics.empty()) add_knobs(study, runs);
     return runs;
 }

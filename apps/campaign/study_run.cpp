@@ -1,5 +1,7 @@
 #include "frictionlab/campaign/study_run.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
@@ -31,7 +33,7 @@ StudyResult run_study(const Study& study, const std::vector<CampaignRun>& runs, 
                                       InterruptSignals::name(*options.stop_signal)),
                           *options.stop_signal);
     // Each run is compared with the reference's run of its seed: those come first, one per seed.
-    const std::size_t seeds = study.run_seeds().size();
+    const std::size_t seeds = std::max<std::size_t>(1, study.seeds.size());
     for (std::size_t k = 0; k < runs.size(); ++k) {
         const CampaignRun& run = runs[k];
         const Scene& scene = run.scene;

@@ -72,15 +72,14 @@ std::vector<CampaignCase> grid_cases(const std::vector<CampaignCase>& listed, co
     return cases;
 }
 
-class SweepReader : detail::CampaignReader {
+class SweepReader : public detail::CampaignReader {
 public:
     using CampaignReader::CampaignReader;
 
-    Sweep read(const YAML::Node& root, const std::filesystem::path& file) {
-        Sweep sweep;
-        const detail::SectionKeys keys{"a sweep", detail::sweep_params(), detail::sweep_sections(), true};
-        const auto top = read_top(root, file, keys, sweep);
-        if (!root.IsMap()) return sweep;
+    static detail::SectionKeys keys() { return {"a sweep", detail::sweep_params(), detail::sweep_sections(), true}; }
+
+    /// The grid and the listed cases, which make the sweep's cases.
+    void read_own(const YAML::Node& root, const detail::Section& top, Sweep& sweep) {
         std::vector<SweepAxis> grid;
         std::vector<CampaignCase> listed;
         if (const auto entry = given(top, "grid")) grid = read_grid(*entry);
@@ -89,7 +88,6 @@ public:
             detail::report_missing(root, "grid", "a mapping of key paths to lists of values (or `cases:` or `seeds:`)",
                                    "", reporter_);
         sweep.cases = grid_cases(listed, grid);
-        return sweep;
     }
 
 private:
@@ -147,29 +145,29 @@ std::vector<CampaignRun> sweep_runs(const Sweep& sweep, const std::filesystem::p
     std::vector<CampaignRun> runs;
     if (!base_scene(sweep, registry, diagnostics)) return runs;
     std::set<std::string> names;
-    for (std::size_t i = 0; i < sweep.cases.size(); ++i)
-        for (const auto seed : sweep.run_seeds()) {
-            const CampaignCase& c = sweep.cases[i];
-            CampaignRun run{i, seed, c.name, c.values, {}};
-            if (seed) {
-                run.values.emplace_back("seed", std::to_string(*seed));
-                append_part(run.name, fmt::format("seed-{}", *seed));
-            }
-            if (run.name.empty()) run.name = "base";
-            if (!names.insert(run.name).second) {
-                diagnostics.error(c.where, "cases",
-                                  fmt::format("two cases would both run in cases/{}: give the listed cases "
-                                              "names (`name:`) or vary different keys",
-                                              run.name));
-                continue;
-            }
-            const SceneOverride output_override{"output=" + detail::yaml_text((output / "cases" / run.name).string()),
-                                                sweep.scene_where};
-            auto scene = run_scene(sweep, c, seed, {output_override}, registry, diagnostics);
-            if (!scene) continue;
-            run.scene = std::move(*scene);
-            runs.push_back(std::move(run));
+    for (CampaignRun run : sweep.runs()) {
+        const CampaignCase& c = sweep.cases[run.case_index];
+        run.name = c.name;
+        run.values = c.values;
+        if (run.seed) {
+            run.values.emplace_back("seed", std::to_string(*run.seed));
+            append_part(run.name, fmt::format("seed-{}", *run.seed));
         }
+        if (run.name.empty()) run.name = "base";
+        if (!names.insert(run.name).second) {
+            diagnostics.error(c.where, "cases",
+                              fmt::format("two cases would both run in cases/{}: give the listed cases "
+                                          "names (`name:`) or vary different keys",
+                                          run.name));
+            continue;
+        }
+        const SceneOverride output_override{"output=" + detail::yaml_text((output / "cases" / run.name).string()),
+                                            sweep.scene_where};
+        auto scene = run_scene(sweep, c, run.seed, {output_override}, registry, diagnostics);
+        if (!scene) continue;
+        run.scene = std::move(*scene);
+        runs.push_back(std::move(run));
+    }
     return runs;
 }
 

@@ -30,7 +30,9 @@ struct CampaignCase {
     CampaignValues values;  // a sweep's varied values; a study's cases are told apart by name
 };
 
-/// What every campaign file declares besides its cases.
+struct CampaignRun;
+
+/// What every campaign file declares, and its cases.
 struct Campaign {
     std::filesystem::path file;
     std::string title;
@@ -40,12 +42,13 @@ struct Campaign {
     SourceLocation seeds_where;
     std::vector<CampaignCase> cases;  // in the order their runs come
 
-    /// The seed of each run of a case: each of `seeds` in turn, or none (the base scene's own).
-    std::vector<std::optional<std::int64_t>> run_seeds() const;
+    /// Every case with every seed (none where `seeds` is empty: the base scene's own), case by
+    /// case, so that a case's runs are adjacent. Their names, values and scenes are left to the
+    /// kind of campaign, which knows where its runs write.
+    std::vector<CampaignRun> runs() const;
 };
 
 /// One run: a case with one seed, its scene checked and writing into the run's own directory.
-/// A campaign's runs are its cases times its seeds, case by case: a case's runs are adjacent.
 struct CampaignRun {
     std::size_t case_index = 0;        // into Campaign::cases
     std::optional<std::int64_t> seed;  // none: the base scene's own
