@@ -1,7 +1,6 @@
 #include "quasi_static_hybrid.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -30,18 +29,14 @@ constexpr int max_short_steps = 4;
 /// settled slider's secants wander by ~1e-7 m/s, a drive starting or a ramp ending changes them all.
 constexpr double lag_fraction = 1e-2, lag_floor = 10;
 /// A residual (|F_i| / K_ii) within this many times Newton's tolerance is what a solve with a kept
-/// factorisation leaves, and the next span's solve takes it up; above it a commit has changed the
-/// forces at fixed positions: a jump (a junction breaking, a clock ending, a loaded junction
-/// removed: 1e-11 to 1e-9 m on the paper's slider, against the 1e-13 m tolerance).
+/// factorisation leaves, and the next span's solve takes it up; above it the last commit made a jump
+/// (the class comment; 1e-11 to 1e-9 m on the paper's slider, against the 1e-13 m tolerance).
 constexpr double jump_residual = 100;
 /// A jump's transient is checked along the straight path from the state before the jump, run in
 /// this (arbitrary, short) time: events the clock schedules, which do not move with it, stay beyond.
 constexpr double transient_path_time = 1e-9;
-/// An undamped mode overshoots a step in its load to twice the static response; dashpots only lessen it.
+/// How far a jump's transient may reach, in static jumps: an undamped mode's overshoot (the class comment).
 constexpr double transient_overshoot = 2;
-/// Why a quiet step is refused when the steady velocities change at once by more than that.
-constexpr const char* lagging =
-    "the steady velocities changed at once (a drive started or changed): the masses lag, and ring";
 /// A check that the velocities are far (10 quiet_speed) from the steady ones of the last full check
 /// needs no static solve; a full one is made at least every this many checks all the same.
 constexpr int full_check_every = 10;
@@ -79,8 +74,6 @@ std::string creep_rule(const Params& p) {
             p.creep_step, p.dt);
     return {};
 }
-
-double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 }  // namespace
 
 ParamSpec<Params> QuasiStaticHybrid::spec() {
@@ -93,13 +86,12 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
              "Explicit scheme of the dynamic phase.");
     s.choice("jumps", &Params::jumps,
              {{"dynamic", Jumps::dynamic}, {"checked", Jumps::checked}, {"quasi_static", Jumps::quasi_static}},
-             "A jump is a commit's change of the forces at fixed positions (a junction breaking, a clock ending, a "
-             "loaded junction removed). 'checked': solved statically unless the transient it excites could trigger "
-             "an event (an effect foresees one on the path to twice the static jump, an undamped mode's overshoot), "
-             "then integrated by the dynamic scheme as the reference does; spans with junction clocks running are "
-             "crossed quietly. 'dynamic': every span with a clock running is integrated dynamically (the most "
-             "conservative). 'quasi_static': every jump solved statically (the fastest; share/docs/quasi-static.md "
-             "gives each one's measured accuracy).");
+             "How a jump (a commit's change of the forces at fixed positions: a junction breaking, a clock ending, a "
+             "loaded junction removed) is taken. 'checked': statically, unless the transient it excites could "
+             "trigger an event, then by the dynamic scheme; spans with junction clocks running are crossed quietly. "
+             "'dynamic': every span with a clock running is integrated dynamically (the most conservative). "
+             "'quasi_static': every jump statically (the fastest). share/docs/quasi-static.md (\"Jumps\") explains "
+             "them and gives each one's measured accuracy.");
     s.add("dt", &Params::dt, "Time step of the dynamic phase.").unit("s").greater_than(0);
     s.add("quiet_speed", &Params::quiet_speed,
           "The dynamic phase may turn quiet while every node's velocity is within this of the quasi-static "
@@ -150,44 +142,10 @@ QuasiStaticHybrid::QuasiStaticHybrid(const Params& p, const Context& ctx)
       creep_({.step = p.creep_step, .position_tolerance = p.position_tolerance, .event_overshoot = p.event_overshoot}) {
 }
 
-QuasiStaticHybrid::~QuasiStaticHybrid() {
-    const double total = quiet_time_ + dynamic_time_ + creep_time_,
-                 wall = seconds(quiet_wall_ + dynamic_wall_ + creep_wall_);
-    if (total > 0)
-        log_.info(
-            "quasi_static_hybrid: quiet {:.4g} % of simulated time ({} steps), {:.4g} % of wall time; dynamic "
-            "{} steps; {} switches to quiet, {} to dynamic; {} static solves, {} Newton iterations, {} "
-            "factorisations",
-            100 * quiet_time_ / total, quiet_steps_, wall > 0 ? 100 * seconds(quiet_wall_) / wall : 0.0, dynamic_steps_,
-            to_quiet_, to_dynamic_, solver_.counts().solves, solver_.counts().iterations,
-            solver_.counts().factorisations);
-    if (creep_.counts().steps > 0)
-        log_.info(
-            "quasi_static_hybrid: creep steps {:.4g} % of simulated time ({} steps, {} Newton iterations, {} "
-            "factorisations), {:.4g} % of wall time",
-            100 * creep_time_ / total, creep_.counts().steps, creep_.counts().iterations,
-            creep_.counts().factorisations, wall > 0 ? 100 * seconds(creep_wall_) / wall : 0.0);
-}
+QuasiStaticHybrid::~QuasiStaticHybrid() { statistics_.log_summary(log_, solver_.counts(), creep_.counts()); }
 
 std::vector<std::pair<std::string, double>> QuasiStaticHybrid::statistics() const {
-    const double total = quiet_time_ + dynamic_time_ + creep_time_,
-                 wall = seconds(quiet_wall_ + dynamic_wall_ + creep_wall_);
-    return {{"quiet_fraction_of_simulated_time", total > 0 ? quiet_time_ / total : 0.0},
-            {"quiet_fraction_of_wall_time", wall > 0 ? seconds(quiet_wall_) / wall : 0.0},
-            {"creep_fraction_of_simulated_time", total > 0 ? creep_time_ / total : 0.0},
-            {"creep_fraction_of_wall_time", wall > 0 ? seconds(creep_wall_) / wall : 0.0},
-            {"quiet_seconds_wall", seconds(quiet_wall_)},
-            {"dynamic_seconds_wall", seconds(dynamic_wall_)},
-            {"creep_seconds_wall", seconds(creep_wall_)},
-            {"creep_steps", static_cast<double>(creep_.counts().steps)},
-            {"quiet_steps", static_cast<double>(quiet_steps_)},
-            {"quiet_spans", static_cast<double>(spans_)},
-            {"dynamic_steps", static_cast<double>(dynamic_steps_)},
-            {"switches_to_quiet", static_cast<double>(to_quiet_)},
-            {"switches_to_dynamic", static_cast<double>(to_dynamic_)},
-            {"quiet_jumps", static_cast<double>(jumps_)},
-            {"static_solves", static_cast<double>(solver_.counts().solves)},
-            {"factorisations", static_cast<double>(solver_.counts().factorisations)}};
+    return statistics_.table(solver_.counts(), creep_.counts());
 }
 
 void QuasiStaticHybrid::save_state(StateOut& out) const {
@@ -205,30 +163,28 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     if (quiet_) {
         double h = 0;
         if (quiet_step(system, max_dt, h)) {
-            ++quiet_steps_;
-            quiet_time_ += h;
-            quiet_wall_ += Clock::now() - start;
+            ++statistics_.quiet_steps;
+            statistics_.quiet_time += h;
+            statistics_.quiet_wall += Clock::now() - start;
             return h;
         }
         quiet_ = false;
-        ++to_dynamic_;
+        ++statistics_.switches_to_dynamic;
         log_.debug("quasi_static_hybrid: dynamic from t = {:.9g} s: {}", system.time(), why_dynamic_);
-        calm_since_ = std::numeric_limits<double>::quiet_NaN();
-        next_check_ = system.time() + p_.check_interval;
+        calm_.restart(system.time(), p_.check_interval);
     }
     const double t = system.time();
     const bool creep = creep_step(system, max_dt);
     const double h = creep ? system.time() - t : dynamic_->step(system, max_dt);
-    (creep ? creep_time_ : dynamic_time_) += h;
-    if (!creep) ++dynamic_steps_;
-    if (system.time() >= next_check_) {
-        next_check_ = system.time() + p_.check_interval;
+    (creep ? statistics_.creep_time : statistics_.dynamic_time) += h;
+    if (!creep) ++statistics_.dynamic_steps;
+    if (calm_.check_due(system.time(), p_.check_interval)) {
         if (may_turn_quiet(system)) {
-            quiet_ = true, ++to_quiet_, short_steps_ = 0;
+            quiet_ = true, ++statistics_.switches_to_quiet, short_steps_ = 0;
             log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
         }
     }
-    (creep ? creep_wall_ : dynamic_wall_) += Clock::now() - start;
+    (creep ? statistics_.creep_wall : statistics_.dynamic_wall) += Clock::now() - start;
     return h;
 }
 
@@ -249,27 +205,22 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system) {
     const auto velocities = system.y().segment(2 * n, 2 * n);
     // While the lattice still rings far from the steady velocities of the last full check, the
     // static solves of a full check would only confirm it.
-    if (calm && steady_.size() == velocities.size() && ++checks_since_full_ < full_check_every &&
-        (velocities - steady_).lpNorm<Eigen::Infinity>() > 10 * p_.quiet_speed)
+    if (calm && calm_.steady.size() == velocities.size() && ++calm_.checks_since_full < full_check_every &&
+        (velocities - calm_.steady).lpNorm<Eigen::Infinity>() > 10 * p_.quiet_speed)
         calm = false;
     else if (calm) {
         // The steady velocities of this time, which the current ones must be close to: to a
         // hundredth of quiet_speed, at the ringing positions (the projection balances them).
-        checks_since_full_ = 0;
+        calm_.checks_since_full = 0;
         y_ = system.y();
         if (solver_.steady_velocity_within(system, t, y_, check_accuracy * p_.quiet_speed)) {
-            steady_ = y_.segment(2 * n, 2 * n);
-            calm = (velocities - steady_).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
+            calm_.steady = y_.segment(2 * n, 2 * n);
+            calm = (velocities - calm_.steady).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
         } else {
-            steady_.resize(0), calm = false;  // no quasi-static state to compare with
+            calm_.steady.resize(0), calm = false;  // no quasi-static state to compare with
         }
     }
-    if (!calm) {
-        calm_since_ = std::numeric_limits<double>::quiet_NaN();
-        return false;
-    }
-    if (std::isnan(calm_since_)) calm_since_ = t;
-    if (t - calm_since_ < p_.quiet_hold * (1 - 1e-9)) return false;
+    if (!calm_.held_for(p_.quiet_hold, t, calm)) return false;
     // Turning quiet: the first quiet step starts from the quasi-static state of this time (the
     // projection), equilibrium with the steady velocities held.
     projected_ = quasi_static_state(system, t);
@@ -294,10 +245,9 @@ bool QuasiStaticHybrid::quasi_static_state(System& system, double t) {
 }
 
 bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) {
-    // y_ holds the static response to the jump, the system the state before it: the masses follow
-    // with a transient about y_ that overshoots it (twice the jump, for an undamped mode). Events
-    // the effects foresee anyway (a count change due from the normal force's rate) are not the
-    // transient's: only one the path brings earlier than the state at rest counts.
+    // y_ holds the static response to the jump, the system the state before it. Events the effects
+    // foresee anyway (a count change due from the normal force's rate) are not the transient's:
+    // only one the path brings earlier than the state at rest counts.
     const Index dof = 2 * system.layout().nodes;
     mean_ = system.y();
     mean_.segment(dof, dof).setZero();
@@ -311,61 +261,60 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // Within a solved span the response is linear in time: an observation inside it is on the line
     // between the span's ends, as long as no commit on the way has changed the forces (a count
     // change the foresight missed): the state at the span's last sample must still balance.
-    if (in_span_ && !projected_ &&
+    if (span_.open && !projected_ &&
         solver_.in_equilibrium(system, system.time(), system.y(), jump_residual * p_.position_tolerance))
         return span_step(system, max_dt, h);
-    in_span_ = false;
+    span_.open = false;
     // From the projected state just after turning quiet (y_ then holds it), else from the accepted one.
     if (!projected_) y_ = system.y();
     const bool projected = std::exchange(projected_, false);
     const StateLayout& layout = system.layout();
     const double t = system.time();
-    if (!system.quasi_static_regime(view_of(y_, layout, t)))
-        return why_dynamic_ = "an effect left its quasi-static regime", false;
-    if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system))
-        return why_dynamic_ = "a scheduled event is pending", false;
-    // The last commit may have changed the forces at fixed positions (a junction broke, entered the
-    // dislocated state or was removed): the static response to that change, a jump, comes first.
-    // If its new loads bring another junction to its threshold, the next step is a short one to it.
+    if (!system.quasi_static_regime(view_of(y_, layout, t))) return refuse("an effect left its quasi-static regime");
+    if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system)) return refuse("a scheduled event is pending");
+    // The last commit may have made a jump (a junction broke, entered the dislocated state or was
+    // removed): its static response comes first. If its new loads bring another junction to its
+    // threshold, the next step is a short one to it.
     const Index dof = 2 * layout.nodes;
     bool jumped = false;
     if (!projected && !solver_.in_equilibrium(system, t, y_, jump_residual * p_.position_tolerance)) {
         jumped = true;
-        if (!quasi_static_state(system, t)) return why_dynamic_ = "no static solution", false;
+        if (!quasi_static_state(system, t)) return refuse("no static solution");
         if (p_.jumps == Jumps::checked && transient_reaches_event(system, t))
-            return why_dynamic_ = "the transient of a jump could trigger an event", false;
-        ++jumps_;
+            return refuse("the transient of a jump could trigger an event");
+        ++statistics_.jumps_solved;
     }
     // Scheduled events at or before t have been judged by the last commit.
     const double scheduled = system.next_event_time();
     double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
                             system.foreseen_event_time(view_of(y_, layout, t)));
-    start_ = y_;
+    span_.start = y_;
     system.begin_step();  // the effects' step-start references (B.17) for the solves of the span
     // The events are foreseen at the start's velocities; the span's own mean velocity (q1 - q0)/H
     // may foresee an earlier one (the drive changed at a stage start, junction counts changed the
     // response): then the span is redone to it. For a linear response the mean velocity is exact.
-    double span = 0;
+    double length = 0;  // the span's, H
     for (int attempt = 0;; ++attempt) {
-        if (attempt == max_attempts) return why_dynamic_ = "events foreseen ever earlier", false;
+        if (attempt == max_attempts) return refuse("events foreseen ever earlier");
         // Not shorter than the slack: an event foreseen ever a little later (a count change whose
         // foresight lags the normal force's rate) would otherwise be chased in ever shorter spans.
-        span = std::min(
+        length = std::min(
             {system.stage_end() - t, p_.max_quiet_step, std::max(event + p_.event_overshoot - t, event_slack * p_.dt)});
-        const double t1 = t + span;
-        y_ = start_;
-        y_.head(dof) += span * start_.segment(dof, dof);  // the linear response as the first guess
-        if (!solver_.equilibrium(system, t1, y_)) return why_dynamic_ = "no static solution", false;
+        const double t1 = t + length;
+        y_ = span_.start;
+        y_.head(dof) += length * span_.start.segment(dof, dof);  // the linear response as the first guess
+        if (!solver_.equilibrium(system, t1, y_)) return refuse("no static solution");
         // From a balanced start the response to the drive is (near) linear: its secant over the
         // span is the steady velocity (a jump or the turn to quiet solved for it at the start).
         // Over a span shorter than the dynamic step (to an event) the secant would carry Newton's
         // tolerance divided by the span: the velocities then stay as they were.
-        if (span >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
+        if (length >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - span_.start.head(dof)) / length;
         // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
-        if (span * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(start_, y_, dof))
-            return why_dynamic_ = lagging, false;
-        mean_ = start_;
-        mean_.segment(dof, dof) = (y_.head(dof) - start_.head(dof)) / span;
+        if (length * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(span_.start, y_, dof))
+            return refuse(
+                "the steady velocities changed at once (a drive started or changed): the masses lag, and ring");
+        mean_ = span_.start;
+        mean_.segment(dof, dof) = (y_.head(dof) - span_.start.head(dof)) / length;
         const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
         if (foreseen + p_.event_overshoot + event_slack * p_.dt >= t1) break;
         log_.trace("quasi_static_hybrid: span from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
@@ -374,30 +323,27 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     }
     // Events closer together than the dynamic step (a cascade of breaks spreading, the clocks of
     // many junctions running out): the dynamic scheme takes them as the reference does, cheaper.
-    short_steps_ = span < p_.dt ? short_steps_ + 1 : 0;
-    if (short_steps_ > max_short_steps) return why_dynamic_ = "events closer together than the dynamic step", false;
-    span_end_.swap(y_);
-    span_start_time_ = t, span_end_time_ = t + span, in_span_ = true;
-    ++spans_;
+    short_steps_ = length < p_.dt ? short_steps_ + 1 : 0;
+    if (short_steps_ > max_short_steps) return refuse("events closer together than the dynamic step");
+    span_.end.swap(y_);
+    span_.start_time = t, span_.end_time = t + length, span_.open = true;
+    ++statistics_.quiet_spans;
     return span_step(system, max_dt, h);
 }
 
 bool QuasiStaticHybrid::span_step(System& system, double max_dt, double& h) {
-    const double t = system.time(), t1 = span_end_time_;
-    const Index dof = 2 * system.layout().nodes;
+    const double t = system.time(), t1 = span_.end_time;
     system.begin_step();
     // The span's end, or the observation within it that the run asks the step to land on.
     if (max_dt >= (t1 - t) * (1 - 1e-12)) {
         h = t1 - t;
-        in_span_ = false;
-        system.add_straight_path_work(t1, span_end_);
-        system.accept(t1, span_end_);
+        span_.open = false;
+        system.add_straight_path_work(t1, span_.end);
+        system.accept(t1, span_.end);
         return true;
     }
     h = max_dt;
-    const double along = (t + h - span_start_time_) / (t1 - span_start_time_);
-    y_ = span_end_;
-    y_.head(dof) = start_.head(dof) + along * (span_end_.head(dof) - start_.head(dof));
+    span_.state_at(t + h, y_, 2 * system.layout().nodes);
     system.add_straight_path_work(t + h, y_);
     system.accept(t + h, y_);
     return true;

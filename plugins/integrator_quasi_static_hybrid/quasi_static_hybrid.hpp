@@ -1,13 +1,15 @@
 #pragma once
-#include <chrono>
 #include <memory>
 #include <string>
 
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 
+#include "calm_detector.hpp"
 #include "creep_stepper.hpp"
 #include "equilibrium_solver.hpp"
+#include "phase_statistics.hpp"
+#include "quiet_span.hpp"
 
 namespace frictionlab {
 
@@ -24,12 +26,12 @@ namespace frictionlab {
 /// straight line between the span's solved ends, without a solve, and are committed like any step.
 /// A span to a foreseen event overshoots it by event_overshoot so the strict threshold is crossed.
 ///
-/// Jumps: a commit that changes the forces at fixed positions (a junction broke, a clock ended)
-/// is followed by the static response to it, unless (jumps: checked) the transient it excites
-/// could trigger an event: an effect foresees one on the straight path from the state before the
-/// jump to twice the static jump (an undamped mode's overshoot). The dynamic scheme then takes it
-/// as the reference does. jumps: dynamic integrates every span with a junction clock running;
-/// jumps: quasi_static solves every jump statically.
+/// Jumps: a commit that changes the forces at fixed positions (a junction broke, a clock ended, a
+/// loaded junction was removed) is followed by the static response to it, unless the transient it
+/// excites could trigger an event: an effect foresees one on the straight path from the state
+/// before the jump to twice the static jump (an undamped mode's overshoot). The dynamic scheme then
+/// takes it as the reference does. Which jumps are checked so, and whether spans with a junction
+/// clock running may be quiet, is the `jumps` choice (spec(); share/docs/quasi-static.md, "Jumps").
 ///
 /// Dynamic phase: the scene's explicit scheme (rk4 or velocity_verlet) at its step dt. It starts
 /// when an effect leaves its regime, a jump's transient could trigger an event (or, with jumps:
@@ -51,8 +53,7 @@ class QuasiStaticHybrid final : public Integrator {
 public:
     /// The explicit scheme of the dynamic phase.
     enum class Dynamic { rk4, velocity_verlet };
-    /// How a jump (a commit's change of the forces at fixed positions: a junction breaking, a clock
-    /// ending) is taken, and whether spans with junction clocks running may be quiet.
+    /// How jumps (the class comment) are taken: the `jumps` choice, documented in spec().
     enum class Jumps { dynamic, checked, quasi_static };
     struct Params {
         Dynamic dynamic = Dynamic::rk4;
@@ -74,20 +75,14 @@ public:
     ~QuasiStaticHybrid() override;
 
     double step(System& system, double max_dt) override;
-    // Checkpoints: the phase and its clocks, the solver's factorisation, the dynamic scheme's state.
+    // Checkpoints: the phase, the current span, the calm detector, the statistics, the solvers' matrices
+    // (factorised again on restore) and the dynamic scheme's state.
     bool checkpointable() const override { return dynamic_->checkpointable(); }
     void save_state(StateOut& out) const override;
     void restore_state(StateIn& in) override;
     template <class Archive>
     void serialize(Archive& ar) {
-        auto quiet_wall = quiet_wall_.count(), dynamic_wall = dynamic_wall_.count(), creep_wall = creep_wall_.count();
-        ar(solver_, creep_, creeping_, creep_time_, creep_wall, y_, start_, span_end_, span_start_time_, span_end_time_,
-           in_span_, spans_, quiet_, projected_, next_check_, calm_since_, steady_, checks_since_full_, to_quiet_,
-           to_dynamic_, quiet_steps_, dynamic_steps_, jumps_, short_steps_, quiet_time_, dynamic_time_, quiet_wall,
-           dynamic_wall);
-        quiet_wall_ = std::chrono::steady_clock::duration(quiet_wall);
-        dynamic_wall_ = std::chrono::steady_clock::duration(dynamic_wall);
-        creep_wall_ = std::chrono::steady_clock::duration(creep_wall);
+        ar(solver_, creep_, quiet_, creeping_, projected_, y_, short_steps_, span_, calm_, statistics_);
     }
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
@@ -102,12 +97,7 @@ public:
     std::vector<std::pair<std::string, double>> statistics() const override;
 
     bool quiet() const { return quiet_; }
-    long long switches_to_quiet() const { return to_quiet_; }
-    long long switches_to_dynamic() const { return to_dynamic_; }
-    long long quiet_steps() const { return quiet_steps_; }
-    /// Quiet spans solved; the quiet steps within them land on the line between the span's ends.
-    long long quiet_spans() const { return spans_; }
-    long long jumps_solved() const { return jumps_; }
+    const PhaseStatistics& phase_statistics() const { return statistics_; }
     const CreepStepper::Counts& creep_counts() const { return creep_.counts(); }
 
 private:
@@ -130,30 +120,27 @@ private:
     bool transient_reaches_event(const System& system, double t);
     /// Whether no effect has a scheduled event pending (no junction clock runs).
     static bool no_scheduled_event(const System& system);
+    /// A quiet step refused (false: nothing done), with its reason kept for the log of the switch.
+    bool refuse(const char* reason) {
+        why_dynamic_ = reason;
+        return false;
+    }
 
     Params p_;
     spdlog::logger& log_;
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
     CreepStepper creep_;
-    bool creeping_ = false;         // below creep_speed (with the hysteresis)
-    Eigen::VectorXd y_;             // the quiet solution being formed
-    Eigen::VectorXd start_, mean_;  // a quiet span's start, and its start with the span's mean velocity
-    Eigen::VectorXd span_end_;      // the quiet span's solved end
-    double span_start_time_ = 0, span_end_time_ = 0;
-    bool in_span_ = false;  // steps land within a solved span
-    long long spans_ = 0;
     bool quiet_ = false;
+    bool creeping_ = false;   // below creep_speed (with the hysteresis)
+    bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
+    int short_steps_ = 0;     // quiet steps in a row shorter than dt
+    QuietSpan span_;
+    CalmDetector calm_;
+    PhaseStatistics statistics_;
+    Eigen::VectorXd y_;             // the quiet solution being formed
+    Eigen::VectorXd mean_;          // a state with the velocities of a path, for the events they foresee
     const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
-    bool projected_ = false;        // y_ holds the quasi-static state the first quiet step starts from
-    double next_check_ = -std::numeric_limits<double>::infinity();
-    double calm_since_ = std::numeric_limits<double>::quiet_NaN();  // start of the current calm spell
-    Eigen::VectorXd steady_;     // the steady velocities of the last full check for calm
-    int checks_since_full_ = 0;  // checks since it
-    long long to_quiet_ = 0, to_dynamic_ = 0, quiet_steps_ = 0, dynamic_steps_ = 0, jumps_ = 0;
-    int short_steps_ = 0;                                        // quiet steps in a row shorter than dt
-    double quiet_time_ = 0, dynamic_time_ = 0, creep_time_ = 0;  // simulated, s
-    std::chrono::steady_clock::duration quiet_wall_{}, dynamic_wall_{}, creep_wall_{};
 };
 
 }  // namespace frictionlab

@@ -6,17 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "frictionlab/simulation/system.hpp"
+#include "point_masses.hpp"
 
 namespace frictionlab {
 namespace {
-
-Body one_node() {
-    Body b;
-    b.x0 = Eigen::ArrayXd::Zero(1);
-    b.z0 = Eigen::ArrayXd::Zero(1);
-    b.mass = Eigen::ArrayXd::Constant(1, 2.0);
-    return b;
-}
 
 /// A dashpot -c v on node 0, in x and z.
 class Dashpot final : public Effect {
@@ -82,7 +75,7 @@ struct Pipeline {
         y << 0.1, -0.2, 0.3, 0.7, 0.0;  // x, z, vx, vz, aux
         dy = Eigen::VectorXd::Zero(y.size());
     }
-    Body body = one_node();
+    Body body = testing::point_masses(1, 2.0);
     System system;
     Bond* bond;
     Eigen::VectorXd y, dy;

@@ -53,6 +53,14 @@ TEST(ShippedPluginDirectory, OfTheRunningExecutable) {
         EXPECT_EQ(shipped_plugin_directory(), std::nullopt);
 }
 
+TEST(ShippedDirectory, IsASubdirectoryOfTheRunningProgramsPrefixThatExists) {
+    const std::filesystem::path shipped = FRICTIONLAB_PLUGIN_DIR;
+    const auto subdir = shipped.lexically_relative(FRICTIONLAB_BINARY_DIR);
+    EXPECT_EQ(shipped_directory(subdir), shipped_plugin_directory());
+    EXPECT_EQ(shipped_directory("tests"), (std::filesystem::path(FRICTIONLAB_BINARY_DIR) / "tests").lexically_normal());
+    EXPECT_EQ(shipped_directory("no_such_directory"), std::nullopt);
+}
+
 TEST(LoadPlugins, EarlierDirectoriesWin) {
     Registry registry;
     // --plugin-path shadow, FRICTIONLAB_PLUGIN_PATH=good: shadow's testplugin_alpha overrides good's.

@@ -1,10 +1,12 @@
-"""Shared fixtures: the build's command line, the tiny scene, and one run of it in each format.
+"""Shared fixtures: the build's command line, the tiny scene, one run of it in each format and one
+stopped before its first rupture, and the plotting package's command line.
 
 ctest sets FRICTIONLAB_CLI (the frictionlab executable) and FRICTIONLAB_SOURCE_DIR, and puts
 build/python first on PYTHONPATH."""
 import os
 import shutil
 import subprocess
+import sys
 
 import pytest
 
@@ -38,6 +40,21 @@ def csv_run(tmp_path_factory):
 def hdf5_run(tmp_path_factory):
     out = tmp_path_factory.mktemp("hdf5") / "out"
     return frictionlab.Scene.load(SCENE, set=HDF5_OVERRIDES).run(output=str(out))
+
+
+@pytest.fixture(scope="session")
+def quiet_run(tmp_path_factory):
+    """The tiny scene loaded for half a millisecond: no rupture event yet."""
+    out = tmp_path_factory.mktemp("quiet") / "out"
+    return frictionlab.Scene.load(SCENE, set=["stages[1].duration=5.0e-4"]).run(output=str(out))
+
+
+def plot_command(*arguments, env=None):
+    """python3 -m frictionlab.plot ARGUMENTS, which `frictionlab plot` runs; its result, checked."""
+    result = subprocess.run([sys.executable, "-m", "frictionlab.plot", *arguments], capture_output=True, text=True,
+                            env=env)
+    assert result.returncode == 0, result.stderr
+    return result
 
 
 def run_cli(cli, *args, cwd=None):

@@ -1,7 +1,6 @@
 """Runs from Python: equal to the command line's, every table in both formats, h5py attributes,
-Ctrl-C, the plot script and the examples."""
+Ctrl-C and the examples."""
 import os
-import shutil
 import signal
 import subprocess
 import sys
@@ -180,45 +179,6 @@ def test_a_run_stopped_by_ctrl_c_resumes_from_python_to_the_same_outputs(tmp_pat
     for name in ("loading_curve.csv", "precursors.csv", "interface_velocity.csv"):
         assert open(os.path.join(resumed.directory, name)).read() == \
             open(os.path.join(whole.directory, name)).read(), name
-
-
-def test_the_plot_script_reads_hdf5_runs_and_renders_the_lattice_with_vtk_without_a_display(hdf5_run, source_dir):
-    from PIL import Image  # python3-pil, which python3-matplotlib depends on
-
-    script = os.path.join(source_dir, "share", "scripts", "frictionlab_plot.py")
-    out = os.path.join(hdf5_run.directory, "plots")
-    # As on a batch node: no X server, so the script renders under a private Xvfb.
-    no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
-    result = subprocess.run([sys.executable, script, hdf5_run.directory], capture_output=True, text=True,
-                            env=no_display)
-    assert result.returncode == 0, result.stderr
-    assert "matplotlib instead" not in result.stderr, result.stderr
-    for figure in ("loading_curve", "spacetime", "fronts", "four_phase_3"):
-        assert os.path.exists(os.path.join(out, figure + ".png")), (figure, os.listdir(out))
-    with Image.open(os.path.join(out, "lattice.png")) as image:
-        assert image.format == "PNG"
-        assert image.text["Software"].startswith("VTK ") and image.text["Software"].endswith("offscreen render")
-        assert 1200 <= image.width <= 1600 and 200 <= image.height <= 1200, image.size
-        colours = image.convert("RGB").getcolors(maxcolors=1 << 24)
-    assert len(colours) > 1000, len(colours)  # the colour map, the text's anti-aliasing: not a blank render
-
-
-def test_plots_started_together_each_render_the_lattice_under_their_own_xvfb(hdf5_run, source_dir, tmp_path):
-    # An X server resets when its last client leaves and refuses connections meanwhile; VTK connects
-    # twice in a row (SupportsOpenGL, then the render), so without -noreset about half of these failed.
-    from PIL import Image
-
-    script = os.path.join(source_dir, "share", "scripts", "frictionlab_plot.py")
-    no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
-    runs = [shutil.copytree(hdf5_run.directory, tmp_path / f"run{k}") for k in range(4)]
-    plots = [subprocess.Popen([sys.executable, script, run], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                              text=True, env=no_display) for run in runs]
-    for run, plot in zip(runs, plots):
-        stderr = plot.communicate(timeout=300)[1]
-        assert plot.returncode == 0, stderr
-        assert "matplotlib instead" not in stderr, stderr
-        with Image.open(run / "plots" / "lattice.png") as image:
-            assert image.text["Software"].endswith("offscreen render")
 
 
 def test_the_theta_sweep_example(tmp_path, source_dir):

@@ -1,4 +1,4 @@
-// `frictionlab plot RUN...`: the figures of runs or of a sweep, drawn by the plotting script.
+// `frictionlab plot RUN...`: the figures of runs or of a sweep, drawn by frictionlab.plot.
 #include "plot.hpp"
 
 #include <sys/wait.h>
@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "command.hpp"
 #include "frictionlab/base/errors.hpp"
@@ -23,17 +24,26 @@ struct PlotOptions {
     std::string output;
 };
 
-/// The plotting script on Debian's Python (FRICTIONLAB_PYTHON overrides) with `arguments`.
+/// `python3 -m frictionlab.plot` on Debian's Python (FRICTIONLAB_PYTHON overrides) with `arguments`, the
+/// Python package shipped with this frictionlab first on PYTHONPATH (set here for the child): in the
+/// prefix's FRICTIONLAB_PYTHON_INSTALL_SUBDIR once installed, in python/ of the build tree.
 std::vector<std::string> plot_command_line(const std::vector<std::string>& arguments) {
-    const auto share = shipped_data_directory();
-    const auto script = share ? *share / "scripts" / "frictionlab_plot.py" : std::filesystem::path();
-    if (!share || !std::filesystem::exists(script))
-        throw InputError(
-            "cannot find the plotting script share/frictionlab/scripts/frictionlab_plot.py next to "
-            "this frictionlab");
+    std::optional<std::filesystem::path> package;
+    for (const char* subdir : {FRICTIONLAB_PYTHON_INSTALL_SUBDIR, FRICTIONLAB_PYTHON_BUILD_SUBDIR}) {
+        const auto dir = shipped_directory(subdir);
+        if (dir && std::filesystem::exists(*dir / "frictionlab" / "plot")) {
+            package = dir;
+            break;
+        }
+    }
+    if (!package)
+        throw InputError("cannot find the Python package frictionlab.plot in " FRICTIONLAB_PYTHON_INSTALL_SUBDIR
+                         " or " FRICTIONLAB_PYTHON_BUILD_SUBDIR " next to this frictionlab");
+    const char* path = std::getenv("PYTHONPATH");
+    setenv("PYTHONPATH", (package->string() + (path && *path ? ":" + std::string(path) : "")).c_str(), 1);
     const char* env = std::getenv("FRICTIONLAB_PYTHON");
     const std::string python = env ? env : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    std::vector<std::string> args{python, script.string()};
+    std::vector<std::string> args{python, "-m", "frictionlab.plot"};
     args.insert(args.end(), arguments.begin(), arguments.end());
     return args;
 }
@@ -47,7 +57,7 @@ std::vector<std::string> plot_command_line(const std::vector<std::string>& argum
     std::_Exit(exit_code::run_failure);
 }
 
-/// Replaces this process by the plotting script drawing the figures of runs.
+/// Replaces this process by frictionlab.plot drawing the figures of runs.
 int plot(const PlotOptions& o, const Invocation&) {
     auto args = o.runs;
     if (o.runs.size() == 1 && std::filesystem::exists(std::filesystem::path(o.runs.front()) / "sweep.csv"))
@@ -68,7 +78,7 @@ Execute set_up(CLI::App& cmd, GlobalOptions&) {
 bool plot_and_wait(const std::vector<std::string>& arguments) {
     const auto args = plot_command_line(arguments);
     const pid_t child = fork();
-    if (child < 0) throw RunError(std::string("cannot start the plotting script: ") + std::strerror(errno));
+    if (child < 0) throw RunError(std::string("cannot start frictionlab.plot: ") + std::strerror(errno));
     if (child == 0) exec(args);
     int status = 0;
     while (waitpid(child, &status, 0) < 0 && errno == EINTR) {}

@@ -11,23 +11,39 @@ From a build tree: PYTHONPATH=build/python /usr/bin/python3. Plugins are found a
 finds them: `plugin_paths` arguments, the scene's `plugin_paths:`, FRICTIONLAB_PLUGIN_PATH, then the
 plugins shipped with this module.
 """
+import importlib
 import json
 import os
 from typing import List, Optional, Sequence
 
-from . import _core
-from ._core import InputError, RunError
 from ._errors import Diagnostic, SceneError
 from ._run import Run, Table, open_run, read_table
 
 __all__ = ["Scene", "Run", "Table", "SceneError", "Diagnostic", "InputError", "RunError", "open_run", "read_table",
            "types", "doc", "version"]
-__version__ = _core.version()
+_FROM_CORE = ("_core", "InputError", "RunError", "__version__")
+
+
+def _load_core():
+    """The compiled module, imported on first use: `python3 -m frictionlab.plot` (which `frictionlab
+    plot` runs) then needs neither this python3's version of it nor a build of it at all."""
+    return importlib.import_module("._core", __name__)  # not `from . import`: that asks __getattr__ first
+
+
+def __getattr__(name: str):
+    if name not in _FROM_CORE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    core = _load_core()
+    return core if name == "_core" else core.version() if name == "__version__" else getattr(core, name)
+
+
+def __dir__() -> List[str]:
+    return sorted(set(globals()) | set(_FROM_CORE))
 
 
 def version() -> str:
     """The framework version, e.g. "0.1.0"."""
-    return _core.version()
+    return _load_core().version()
 
 
 def _paths(plugin_paths: Sequence[str]) -> List[str]:
@@ -42,21 +58,21 @@ class Scene:
     line and column. scene.run(...) runs it in this process and returns the Run.
     """
 
-    def __init__(self, core: "_core._Scene"):
+    def __init__(self, core):  # a _core._Scene
         self._core = core
 
     @classmethod
     def load(cls, path, set: Sequence[str] = (), plugin_paths: Sequence[str] = ()) -> "Scene":
         """Reads and validates the scene file `path`; `set` holds `key.path=value` overrides (as
         `--set`), `plugin_paths` extra plugin directories (as `--plugin-path`)."""
-        return cls(_core._Scene.load(os.fspath(path), list(set), _paths(plugin_paths)))
+        return cls(_load_core()._Scene.load(os.fspath(path), list(set), _paths(plugin_paths)))
 
     @classmethod
     def from_yaml(cls, text: str, name: str = "<string>", set: Sequence[str] = (),
                   plugin_paths: Sequence[str] = ()) -> "Scene":
         """Validates a scene given as YAML text; `name` stands for the file in messages. Relative
         `plugin_paths:` of the scene are taken from the working directory."""
-        return cls(_core._Scene.from_yaml(text, name, list(set), _paths(plugin_paths)))
+        return cls(_load_core()._Scene.from_yaml(text, name, list(set), _paths(plugin_paths)))
 
     @property
     def file(self) -> str:
@@ -114,12 +130,12 @@ class Scene:
 
 def types(plugin_paths: Sequence[str] = ()) -> List[dict]:
     """Every kind and type, as `frictionlab list` prints them: dicts with kind, type, library, summary."""
-    return _core.types(_paths(plugin_paths))
+    return _load_core().types(_paths(plugin_paths))
 
 
 def doc(kind: str, type: Optional[str] = None, plugin_paths: Sequence[str] = ()):
     """The documentation `frictionlab doc KIND/TYPE --format json` prints, as data: for one type a
     dict (kind, type, summary, library, params: key, doc, unit, default, bounds, ...); for a kind
     alone the list of its types."""
-    data = json.loads(_core.doc_json(kind, type or "", _paths(plugin_paths)))
+    data = json.loads(_load_core().doc_json(kind, type or "", _paths(plugin_paths)))
     return data[0] if type and isinstance(data, list) and len(data) == 1 else data

@@ -44,9 +44,9 @@ std::optional<std::filesystem::path> shipped_plugin_directory() {
     return exe ? shipped_plugin_directory(*exe) : std::nullopt;
 }
 
-std::optional<std::filesystem::path> shipped_data_directory() {
+std::optional<std::filesystem::path> shipped_directory(const std::filesystem::path& subdir) {
     const auto exe = running_executable();
-    return exe ? under_prefix(*exe, "share/frictionlab") : std::nullopt;
+    return exe ? under_prefix(*exe, subdir) : std::nullopt;
 }
 
 std::vector<std::filesystem::path> plugin_directories(const std::vector<std::filesystem::path>& command_line,

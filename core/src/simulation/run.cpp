@@ -1,164 +1,32 @@
 #include "frictionlab/simulation/run.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <memory>
-#include <sstream>
 
 #include <fmt/format.h>
-#include <spdlog/details/null_mutex.h>
-#include <spdlog/sinks/base_sink.h>
-#include <yaml-cpp/yaml.h>
 
-#include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/checkpoint_file.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
-#include "frictionlab/base/live_line.hpp"
 #include "frictionlab/base/state_archive.hpp"
 #include "frictionlab/output/output_directory.hpp"
-#include "frictionlab/output/provenance.hpp"
 #include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/progress_line.hpp"
+#include "frictionlab/simulation/run_record.hpp"
 #include "frictionlab/simulation/simulation.hpp"
 #include "frictionlab/simulation/system.hpp"
 #include "observer_slot.hpp"
 #include "run_checkpoint.hpp"
-#include "scene/emit.hpp"
 
 namespace frictionlab {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// The run's record: what, with what, how far. Rewritten at start and end (and on failure).
-struct RunRecord {
-    const RunInfo& info;
-    const RunOptions& options;
-    std::string status = "running";
-    std::string error;  // why it failed, or what interrupted it
-    RunSummary summary;
-    long long resumed_from_step = -1;  // run --resume: the checkpoint's step
-
-    /// Atomically; when the disk is too full even for that (the usual reason a run fails late), in
-    /// place, within the room set aside after the previous write, so the record never stays `running`.
-    void write(const std::filesystem::path& dir) const {
-        const std::string yaml = text();
-        const auto file = dir / "run.yaml";
-        try {
-            write_file_atomically(file, yaml, Durability::durable);  // a resume reads it
-        } catch (const RunError&) {
-            if (!std::filesystem::exists(file)) throw;
-            overwrite_in_place(file, yaml);
-        }
-        reserve_space(file, room_for_the_last_record);
-    }
-    static constexpr long room_for_the_last_record = 16 * 1024;
-
-    std::string text() const {
-        YAML::Emitter y;
-        y.SetDoublePrecision(12);
-        y << YAML::BeginMap;
-        const auto entry = [&](const auto& key, const auto& value) { y << YAML::Key << key << YAML::Value << value; };
-        // First, what every output records, under the same names: its first line says whose it is.
-        Provenance::of(info).visit(entry, entry);
-        entry("status", status);
-        if (!error.empty()) entry(status == "interrupted" ? "interrupted_by" : "error", error);
-        // What only the record holds: where to read the scene again (run --resume), and which
-        // library file each plugin was, with its checksum.
-        entry("scene_path", info.scene_file.string());
-        y << YAML::Key << "plugin_files" << YAML::Value << YAML::BeginSeq;
-        for (const auto& p : info.plugins)
-            y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "file"
-              << YAML::Value << p.file.string() << YAML::Key << "fnv1a_64" << YAML::Value << p.fingerprint
-              << YAML::EndMap;
-        y << YAML::EndSeq;
-        y << YAML::Key << "command_line" << YAML::Value << YAML::Flow << options.command_line;
-        y << YAML::Key << "overrides" << YAML::Value << YAML::Flow << options.overrides;
-        if (resumed_from_step >= 0) entry("resumed_from_step", resumed_from_step);
-        entry("steps", summary.steps);
-        entry("evaluations", summary.evaluations);
-        entry("simulated_time", summary.simulated_time);
-        entry("wall_seconds", summary.wall_seconds);
-        entry("cpu_seconds", summary.cpu_seconds);
-        if (!summary.integrator_statistics.empty()) {
-            y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
-            for (const auto& [name, value] : summary.integrator_statistics) entry(name, value);
-            y << YAML::EndMap;
-        }
-        y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
-        y << YAML::EndMap;
-        return std::string(y.c_str()) + "\n";
-    }
-};
-
-/// Clears the live progress line before a log line is printed over it; the line is drawn again at
-/// the next update.
-class ProgressLineEraser : public spdlog::sinks::base_sink<spdlog::details::null_mutex> {
-public:
-    bool shown = false;
-
-    void erase() {
-        if (shown) clear_live_line();
-        shown = false;
-    }
-
-protected:
-    void sink_it_(const spdlog::details::log_msg&) override { erase(); }
-    void flush_() override {}
-};
-
-/// Live progress on a terminal, periodic log lines otherwise.
-class Progress {
-public:
-    Progress(spdlog::logger& log, bool live) : log_(log), live_(live), start_(Clock::now()), last_(start_) {
-        // First among the logger's sinks, so the line is gone before any of them prints.
-        if (live_) log_.sinks().insert(log_.sinks().begin(), eraser_);
-    }
-    ~Progress() {
-        finish();
-        auto& sinks = log_.sinks();
-        sinks.erase(std::remove(sinks.begin(), sinks.end(), eraser_), sinks.end());
-    }
-    Progress(const Progress&) = delete;
-    Progress& operator=(const Progress&) = delete;
-
-    void update(const StageInfo& stage, double t, long long steps) {
-        const auto now = Clock::now();
-        const double since = std::chrono::duration<double>(now - last_).count();
-        if (since < (live_ ? 0.25 : 10.0)) return;
-        const double wall = std::chrono::duration<double>(now - start_).count();
-        const double done = std::clamp((t - stage.t_start) / stage.duration, 0.0, 1.0);
-        const double rate = static_cast<double>(steps - last_steps_) / since;
-        const double eta = done > 0 ? (1 - done) / done * (wall - stage_wall_) : 0;
-        const std::string line = fmt::format("stage {} ({}): t = {:.6g} s, {:5.1f} %, {:.3g} steps/s, ETA {:.0f} s",
-                                             stage.index + 1, stage.name, t, 100 * done, rate, eta);
-        if (live_)
-            show_live_line(line), eraser_->shown = true;
-        else
-            log_.info(line);
-        last_ = now;
-        last_steps_ = steps;
-    }
-    void stage_started() { stage_wall_ = std::chrono::duration<double>(Clock::now() - start_).count(); }
-    void finish() { eraser_->erase(); }
-
-private:
-    spdlog::logger& log_;
-    std::shared_ptr<ProgressLineEraser> eraser_ = std::make_shared<ProgressLineEraser>();
-    bool live_;
-    Clock::time_point start_, last_;
-    long long last_steps_ = 0;
-    double stage_wall_ = 0;
-};
 
 /// The components of a run that cannot be checkpointed, by their place in the scene. A scene that
 /// asks for checkpoints (a `checkpoint:` section) with any is an InputError naming them; one that
@@ -202,7 +70,7 @@ public:
     }
 
     RunSummary execute() {
-        RunRecord record{sim_.info(), options_, "running", "", {}};
+        RunRecord record{sim_.info(), options_.command_line, options_.overrides, "running", "", {}};
         std::size_t first_stage = 0;
         if (options_.resume) {
             first_stage = resume();
@@ -273,7 +141,7 @@ private:
 
     /// From stage `first`; a resumed run is within it already (its observers begun).
     void run_stages(std::size_t first) {
-        Progress progress(log_, options_.live_progress);
+        ProgressLine progress(log_, options_.live_progress);
         for (std::size_t i = first; i < scene_.stages.size(); ++i) {
             if (i > first || !options_.resume) {
                 if (i > 0) stop_if_asked(last_stage_);
@@ -290,7 +158,7 @@ private:
         observe_due(last_stage_, true);
     }
 
-    void run_stage(const StageInfo& stage, Progress& progress) {
+    void run_stage(const StageInfo& stage, ProgressLine& progress) {
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
         const bool to_observations = sim_.integrator().steps_to_observations();
@@ -462,30 +330,6 @@ void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::lo
     std::vector<const Observer*> built;
     for (const auto& o : observers) built.push_back(o.get());
     not_checkpointable(scene, sim, built);
-}
-
-std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
-    const auto file = dir / "run.yaml";
-    if (std::error_code ec; !std::filesystem::exists(std::filesystem::symlink_status(file, ec))) return std::nullopt;
-    const auto read = read_run_record(dir);
-    if (!read.text) throw InputError(fmt::format("cannot read '{}': {}", file.string(), read.problem));
-    YAML::Node record;
-    try {
-        record = YAML::Load(*read.text);
-    } catch (const YAML::Exception&) {
-        return std::nullopt;
-    }
-    if (!record.IsMap() || !record["framework"] || record["framework"].as<std::string>("") != "frictionlab")
-        return std::nullopt;
-    RecordedRun run;
-    run.scene_file = record["scene_path"].as<std::string>("");
-    if (const auto overrides = record["overrides"]; overrides && overrides.IsSequence())
-        for (const auto& o : overrides) run.overrides.push_back(o.as<std::string>(""));
-    run.status = record["status"].as<std::string>("");
-    run.scene_hash = record["scene_hash"].as<std::string>("");
-    for (const char* name : checkpoint_files)
-        run.has_checkpoint = run.has_checkpoint || std::filesystem::exists(dir / name);
-    return run;
 }
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {

@@ -88,7 +88,7 @@ TEST(QuasiStaticHybrid, QuietPhaseGivesTheExactSteadyResponseWithItsViscousLag) 
     // The transient's speed, V at first, decays as exp(-c t / 2m): below quiet_speed = V / 100 at 0.46 s.
     while (system.time() < 0.6) hybrid.step(system, 0.6 - system.time());
     ASSERT_TRUE(hybrid.quiet());
-    EXPECT_EQ(hybrid.switches_to_quiet(), 1);
+    EXPECT_EQ(hybrid.phase_statistics().switches_to_quiet, 1);
     const long long steps = system.step_index();
     for (double t : {0.7, 0.95, 2.0}) {
         while (system.time() < t) hybrid.step(system, t - system.time());
@@ -154,7 +154,8 @@ TEST(QuasiStaticHybrid, StepsWithinASolvedSpanLandOnTheExactResponseWithoutASolv
     p.max_quiet_step = 1e-2;
     QuasiStaticHybrid hybrid = make_hybrid(log, p);
     while (!hybrid.quiet()) hybrid.step(system, 1e-3);
-    const long long spans = hybrid.quiet_spans(), steps = hybrid.quiet_steps();
+    const PhaseStatistics& statistics = hybrid.phase_statistics();
+    const long long spans = statistics.quiet_spans, steps = statistics.quiet_steps;
     for (int i = 0; i < 100; ++i) {
         const double t = system.time() + 1e-3;
         hybrid.step(system, 1e-3);
@@ -162,8 +163,8 @@ TEST(QuasiStaticHybrid, StepsWithinASolvedSpanLandOnTheExactResponseWithoutASolv
         EXPECT_NEAR(system.state().x(0), V * system.time() - c * V / k, 1e-15) << system.time();
         EXPECT_NEAR(system.state().vx(0), V, 1e-9 * V);
     }
-    EXPECT_EQ(hybrid.quiet_steps() - steps, 100);
-    EXPECT_LE(hybrid.quiet_spans() - spans, 11) << "one solve per 10 ms span, not per step";
+    EXPECT_EQ(statistics.quiet_steps - steps, 100);
+    EXPECT_LE(statistics.quiet_spans - spans, 11) << "one solve per 10 ms span, not per step";
 }
 
 /// Driven like DrivenNode, but a threshold at x_break releases a resisting force R at once (a
@@ -219,7 +220,8 @@ TEST(QuasiStaticHybrid, AJumpWhoseTransientCouldTriggerAnEventIsIntegratedDynami
         QuasiStaticHybrid hybrid = make_hybrid(log, p);
         while (system.time() < 0.41) hybrid.step(system, 0.41 - system.time());
         EXPECT_NEAR(probe->broke_at, 0.302, 1e-3);
-        to_dynamic = hybrid.switches_to_dynamic(), jumps = hybrid.jumps_solved();
+        to_dynamic = hybrid.phase_statistics().switches_to_dynamic;
+        jumps = hybrid.phase_statistics().jumps_solved;
         return probe->second ? probe->second_at - probe->broke_at : -1.0;
     };
     long long to_dynamic = 0, jumps = 0;
@@ -250,9 +252,9 @@ TEST(QuasiStaticHybrid, LandsOnAForeseenEventAndHandsItToTheDynamicScheme) {
     ASSERT_TRUE(probe->broken);
     EXPECT_NEAR(probe->broke_at, (x_event + c * V / k) / V, 1e-9);
     EXPECT_FALSE(hybrid.quiet()) << "the broken effect has left its regime";
-    EXPECT_EQ(hybrid.switches_to_dynamic(), 1);
+    EXPECT_EQ(hybrid.phase_statistics().switches_to_dynamic, 1);
     // Until the check at the first step, then one quiet step to the event: the rest is dynamic.
-    EXPECT_EQ(hybrid.quiet_steps(), 1);
+    EXPECT_EQ(hybrid.phase_statistics().quiet_steps, 1);
 }
 
 TEST(QuasiStaticHybrid, HandsARuptureToTheDynamicSchemeAndReturnsWhenItHasCalmed) {
@@ -279,8 +281,8 @@ TEST(QuasiStaticHybrid, HandsARuptureToTheDynamicSchemeAndReturnsWhenItHasCalmed
     }
     ASSERT_TRUE(probe->healed);
     EXPECT_NEAR(probe->broke_at, (3e-4 + c * V / k) / V, 1e-9);
-    EXPECT_EQ(hybrid.switches_to_dynamic(), 1);
-    EXPECT_EQ(hybrid.switches_to_quiet(), 2) << "quiet at the start and once the ringing has calmed";
+    EXPECT_EQ(hybrid.phase_statistics().switches_to_dynamic, 1);
+    EXPECT_EQ(hybrid.phase_statistics().switches_to_quiet, 2) << "quiet at the start and once the ringing has calmed";
     EXPECT_GT(quiet_again, probe->broke_at + 0.05 + 0.3) << "not before the ringing has calmed";
     EXPECT_LT(quiet_again, probe->broke_at + 0.05 + 0.7);
     EXPECT_TRUE(hybrid.quiet());
@@ -316,7 +318,7 @@ TEST(QuasiStaticHybrid, TurnsQuietOnlyOnceTheCalmHasHeldForQuietHoldNotAtOneCalm
             hybrid.step(system, 1.0 - system.time());
             if (hybrid.quiet() && at < 0) at = system.time();
         }
-        to_dynamic = hybrid.switches_to_dynamic();
+        to_dynamic = hybrid.phase_statistics().switches_to_dynamic;
         return at;
     };
     long long back = 0, back_short = 0;

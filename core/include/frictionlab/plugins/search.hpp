@@ -20,8 +20,9 @@ std::optional<std::filesystem::path> shipped_plugin_directory(const std::filesys
 /// The same for the running executable (/proc/self/exe).
 std::optional<std::filesystem::path> shipped_plugin_directory();
 
-/// share/frictionlab of the running program (scripts, docs, the plugin template), if it exists.
-std::optional<std::filesystem::path> shipped_data_directory();
+/// `subdir` of the prefix the running program is installed (or built) in, if it exists: where anything
+/// else shipped with it is, such as share/frictionlab or its Python package.
+std::optional<std::filesystem::path> shipped_directory(const std::filesystem::path& subdir);
 
 /// The plugin directories to search, in order. `environment` is the value of
 /// FRICTIONLAB_PLUGIN_PATH (colon-separated, empty entries ignored; empty if unset); `shipped` is

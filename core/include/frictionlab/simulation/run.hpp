@@ -1,11 +1,10 @@
 #pragma once
 // Runs a validated scene: builds the components through the registry, assembles the pipeline,
-// steps through the stages, drives the observers at their cadence and records run metadata.
+// steps through the stages, drives the observers at their cadence and keeps the run's record
+// (run_record.hpp).
 #include <atomic>
 #include <filesystem>
-#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <spdlog/logger.h>
@@ -16,6 +15,7 @@
 #include "frictionlab/scene/scene.hpp"
 #include "frictionlab/model/stage.hpp"
 #include "frictionlab/model/state.hpp"
+#include "frictionlab/simulation/run_record.hpp"
 
 namespace frictionlab {
 
@@ -53,28 +53,6 @@ struct RunOptions {
     std::vector<std::string> command_line;  // the command as typed (argv)
     std::vector<std::string> overrides;     // the `--set key.path=value` list, in order
 };
-
-struct RunSummary {
-    long long steps = 0;
-    long long evaluations = 0;  // derivative evaluations of the time stepping
-    double simulated_time = 0, wall_seconds = 0;
-    double cpu_seconds = 0;  // processor time of the run: what it costs, whatever else shares the machine
-    std::vector<std::pair<std::string, double>> integrator_statistics;  // Integrator::statistics()
-};
-
-/// What a run directory's run.yaml says about how to continue the run in it (run --resume).
-struct RecordedRun {
-    std::filesystem::path scene_file;    // as given to the run
-    std::vector<std::string> overrides;  // its --set list
-    std::string status, scene_hash;      // running, interrupted, failed or completed
-    bool has_checkpoint = false;         // a checkpoint file is there (intact or not)
-    /// A run stopped before its end with a checkpoint to go on from.
-    bool resumable() const { return status != "completed" && has_checkpoint; }
-};
-
-/// Reads `dir`/run.yaml; nothing if there is none or it is not FrictionLab's. Something else in its
-/// place (a FIFO, a device, a huge file) is an InputError saying what, never read.
-std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir);
 
 /// Builds every component of a validated scene as `run` would (bulk, loaders, friction law,
 /// integrator with the step count, observers) without writing or stepping: what `check` adds to the

@@ -1,0 +1,28 @@
+#pragma once
+// A quiet span of the hybrid (share/docs/quasi-static.md, "Quiet phase"): between events the
+// response is linear in time, so a step within the span lands on the straight line between its
+// solved ends, without a solve.
+#include <Eigen/Core>
+
+namespace frictionlab {
+
+struct QuietSpan {
+    Eigen::VectorXd start, end;  // the balanced states at start_time and end_time
+    double start_time = 0, end_time = 0;
+    bool open = false;  // steps land within it
+
+    /// The state at t within the span into y: the positions (the first `dof` entries) on the line
+    /// between its ends, the velocities the end's (the span's secant).
+    void state_at(double t, Eigen::VectorXd& y, Eigen::Index dof) const {
+        const double along = (t - start_time) / (end_time - start_time);
+        y = end;
+        y.head(dof) = start.head(dof) + along * (end.head(dof) - start.head(dof));
+    }
+
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(start, end, start_time, end_time, open);
+    }
+};
+
+}  // namespace frictionlab
