@@ -1,4 +1,4 @@
-#include "frictionlab/case_outputs.hpp"
+#include "frictionlab/campaign/case_outputs.hpp"
 
 #include <string>
 

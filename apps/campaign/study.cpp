@@ -1,137 +1,73 @@
-#include "frictionlab/study.hpp"
+#include "frictionlab/campaign/study.hpp"
 
-#include <fstream>
-#include <iterator>
+#include <algorithm>
 #include <map>
 #include <regex>
 
 #include <fmt/format.h>
 
-#include "frictionlab/campaign_file.hpp"
-#include "frictionlab/campaign_keys.hpp"
-#include "frictionlab/scene/keys.hpp"
-#include "frictionlab/scene/values.hpp"
-#include "frictionlab/scene/yaml.hpp"
-#include "frictionlab/seed_list.hpp"
+#include "campaign_reader.hpp"
+#include "frictionlab/campaign/keys.hpp"
 
 namespace frictionlab {
 
-std::vector<const StudyCase*> Study::all_cases() const {
-    std::vector<const StudyCase*> out{&reference};
-    for (const auto& c : cases) out.push_back(&c);
-    return out;
-}
-
-std::vector<StudyRun> Study::runs() const {
-    std::vector<StudyRun> out;
-    for (const StudyCase* c : all_cases()) {
-        if (seeds.empty()) out.push_back({c, std::nullopt});
-        for (const auto seed : seeds) out.push_back({c, seed});
-    }
-    return out;
-}
-
-std::string StudyRun::label() const { return seed ? fmt::format("{} (seed {})", spec->name, *seed) : spec->name; }
-
-std::filesystem::path StudyRun::directory() const {
-    const auto dir = std::filesystem::path("cases") / spec->name;
-    return seed ? dir / fmt::format("seed_{}", *seed) : dir;
+std::string Study::label(const CampaignRun& run) const {
+    const std::string& name = cases.at(run.case_index).name;
+    return run.seed ? fmt::format("{} (seed {})", name, *run.seed) : name;
 }
 
 namespace {
 
 using detail::Entry;
 
-std::optional<Entry> given(const detail::Section& section, const std::string& key) {
-    const auto it = section.given.find(key);
-    if (it == section.given.end()) return std::nullopt;
-    return it->second;
-}
-
-class StudyReader {
+class StudyReader : public detail::CampaignReader {
 public:
-    StudyReader(const detail::SourceMap& sources, Diagnostics& diagnostics)
-        : sources_(sources), reporter_(sources, diagnostics) {}
+    using CampaignReader::CampaignReader;
 
-    Study read(const YAML::Node& root, const std::filesystem::path& folder) {
-        Study study;
-        study.file = sources_.file();
-        const detail::SectionKeys keys{"a study", detail::study_params(), detail::study_sections(), true};
-        const auto top = detail::read_section({YAML::Node(YAML::NodeType::Undefined), root}, "", keys, reporter_);
-        if (!root.IsMap()) return study;
-        study.title = value_or(top, "title", std::string());
+    static detail::SectionKeys keys() { return {"a study", detail::study_params(), detail::study_sections(), true}; }
+
+    /// The cadences, the reference and the cases compared with it.
+    void read_own(const YAML::Node& root, const detail::Section& top, Study& study) {
         study.observe_every = value_or(top, "observe_every", study.observe_every);
         study.profile_every = value_or(top, "profile_every", study.profile_every);
-        if (const auto scene = given(top, "scene"); scene && top.values.contains("scene")) {
-            study.scene = folder / std::get<std::string>(top.values.at("scene"));
-            study.scene_where = reporter_.where(scene->site());
-        }
-        if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) {
-            study.seeds_where = reporter_.where(seeds->site());
-            study.seeds = detail::read_seed_list(*seeds, reporter_);
-        }
-        if (const auto reference = given(top, "reference")) study.reference = read_case(*reference, "reference", true);
-        study.reference.name = "reference";
+        study.cases.emplace_back();
+        study.families.emplace_back();
+        if (const auto reference = given(top, "reference")) read_one(*reference, "reference", true, study);
+        study.cases.front().name = "reference";
         if (const auto cases = given(top, "cases"))
-            study.cases = read_cases(*cases);
+            read_cases(*cases, study);
         else
             detail::report_missing(root, "cases", "a non-empty list of cases", "", reporter_);
         if (!study.seeds.empty())
-            for (const StudyCase* c : study.all_cases()) refuse_own_seed(*c);
+            for (const auto& c : study.cases) refuse_own_seed(c);
         if (!top.given.contains("reference"))
             detail::report_missing(root, "reference", "a mapping with `set:`, the overrides of the converged run", "",
                                    reporter_);
-        return study;
     }
 
 private:
-    template <class T>
-    static T value_or(const detail::Section& s, const std::string& key, T fallback) {
-        const auto it = s.values.find(key);
-        return it == s.values.end() ? fallback : std::get<T>(it->second);
-    }
-
-    std::vector<StudyCase> read_cases(const Entry& list) {
-        std::vector<StudyCase> cases;
-        if (!list.value.IsSequence() || list.value.size() == 0) {
-            reporter_.error(
-                list.site(), "cases",
-                "expected a non-empty list of cases, got " +
-                    (list.value.IsSequence() ? std::string("an empty list") : detail::describe(list.value)));
-            return cases;
-        }
+    void read_cases(const Entry& list, Study& study) {
         std::map<std::string, int> first_line{{"reference", 0}};
-        for (std::size_t i = 0; i < list.value.size(); ++i) {
+        const auto items = case_items(list);
+        for (std::size_t i = 0; i < items.size(); ++i) {
             const std::string path = detail::index_path("cases", i);
-            StudyCase c = read_case({YAML::Node(YAML::NodeType::Undefined), list.value[i]}, path, false);
-            if (!c.name.empty()) check_name(c, path, first_line);
-            cases.push_back(std::move(c));
+            study.cases.emplace_back();
+            study.families.emplace_back();
+            read_one(items[i], path, false, study);
+            if (!study.cases.back().name.empty()) check_name(study.cases.back(), path, first_line);
         }
-        return cases;
     }
 
-    StudyCase read_case(const Entry& map, const std::string& path, bool reference) {
-        StudyCase c;
-        c.where = reporter_.where(map.site());
+    /// Reads the reference or a case into the study's last case and family.
+    void read_one(const Entry& entry, const std::string& path, bool reference, Study& study) {
         const detail::SectionKeys keys{
             reference ? "the reference" : "a case", detail::study_case_params(reference), {}, true};
-        const auto s = detail::read_section(map, path, keys, reporter_);
-        c.name = value_or(s, "name", std::string());
-        c.family = value_or(s, "family", std::string());
-        if (const auto set = given(s, "set"); set && s.values.contains("set"))
-            for (const auto& item : set->value) c.overrides.push_back({item.Scalar(), text_start(item)});
-        return c;
-    }
-
-    // Where the override's first character is: after the quote of a quoted scalar.
-    SourceLocation text_start(const YAML::Node& item) const {
-        SourceLocation at = reporter_.where(item);
-        if (detail::is_quoted(item) && at.column > 0) ++at.column;
-        return at;
+        const auto s = read_case(entry, path, keys, study.cases.back());
+        study.families.back() = value_or(s, "family", std::string());
     }
 
     // With the study's seeds, a case's own seed= would be overridden by each of them in turn.
-    void refuse_own_seed(const StudyCase& c) {
+    void refuse_own_seed(const CampaignCase& c) {
         for (const auto& o : c.overrides)
             if (o.text.substr(0, o.text.find('=')) == "seed")
                 reporter_.error(o.origin, "seed",
@@ -139,25 +75,15 @@ private:
                                 "one or the other");
     }
 
-    void check_name(const StudyCase& c, const std::string& path, std::map<std::string, int>& first_line) {
-        static const std::regex name_rule("[a-z][a-z0-9_.-]*");
-        const std::string key = detail::join_path(path, "name");
-        if (!std::regex_match(c.name, name_rule)) {
-            reporter_.error(
-                c.where, key,
-                "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " + detail::quote(c.name));
-            return;
-        }
+    void check_name(const CampaignCase& c, const std::string& path, std::map<std::string, int>& first_line) {
+        if (!check_name_rule(c, path)) return;
         const auto [it, first] = first_line.emplace(c.name, c.where.line);
         if (first) return;
-        reporter_.error(c.where, key,
+        reporter_.error(c.where, detail::join_path(path, "name"),
                         it->second == 0 ? std::string("'reference' names the reference run; choose another name")
                                         : fmt::format("duplicate case name {}, first used at line {}",
                                                       detail::quote(c.name), it->second));
     }
-
-    const detail::SourceMap& sources_;
-    detail::Reporter reporter_;
 };
 
 std::string stage_names_problem(const Scene& scene) {
@@ -168,7 +94,7 @@ std::string stage_names_problem(const Scene& scene) {
         scene.file.string(), scene.stages.size(), scene.stages.size() == 1 ? "" : "s");
 }
 
-/// What the study records of each case: rupture events during the last stage and the interface
+/// What the study records of each run: rupture events during the last stage and the interface
 /// profiles (outputs described in share/docs/glossary.md). A `precursors` observer of the base
 /// scene keeps its detection settings; only its cadence and stage are the study's.
 std::vector<SceneOverride> study_observers(const Study& study, const Scene& scene, const std::filesystem::path& out) {
@@ -183,50 +109,97 @@ std::vector<SceneOverride> study_observers(const Study& study, const Scene& scen
     return {{observers, study.scene_where}, {"output=" + detail::yaml_text(out.string()), study.scene_where}};
 }
 
+/// Where a run writes, below the study's output: cases/<name>, or cases/<name>/seed_<seed>.
+std::filesystem::path run_directory(const CampaignCase& c, std::optional<std::int64_t> seed) {
+    const auto dir = std::filesystem::path("cases") / c.name;
+    return seed ? dir / fmt::format("seed_{}", *seed) : dir;
+}
+
+/// The node at a key path ("integrator.dt", "loaders[2].velocity") of a resolved scene; an
+/// undefined node where the scene has no such key (e.g. a tolerance of a fixed-step integrator).
+YAML::Node node_at(const YAML::Node& root, const std::string& path) {
+    static const std::regex step(R"(([A-Za-z0-9_]+)|\[([0-9]+)\])");
+    YAML::Node at;
+    at.reset(root);
+    for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it) {
+        if ((*it)[1].matched) {
+            if (!at.IsMap() || !at[(*it)[1].str()]) return YAML::Node(YAML::NodeType::Undefined);
+            at.reset(at[(*it)[1].str()]);  // `at = ...` would assign into the scene, not move along it
+        } else {
+            const auto i = std::stoul((*it)[2].str());
+            if (!at.IsSequence() || i >= at.size()) return YAML::Node(YAML::NodeType::Undefined);
+            at.reset(at[i]);
+        }
+    }
+    return at;
+}
+
+/// integrator.type, then every key path the overrides set; one that sets a whole mapping (such as
+/// `integrator={type: ..., rtol: ...}`) stands for each of its keys in every case.
+std::vector<std::string> knob_columns(const Study& study, const std::vector<YAML::Node>& resolved) {
+    std::vector<std::string> columns{"integrator.type"};
+    if (!study.seeds.empty()) columns.push_back("seed");
+    const auto add = [&](const std::string& key) {
+        if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+    };
+    for (const auto& c : study.cases)
+        for (const auto& o : c.overrides) {
+            const std::string key = o.text.substr(0, o.text.find('='));
+            bool mapping = false;
+            for (const auto& scene : resolved)
+                if (const YAML::Node at = node_at(scene, key); at.IsMap()) {
+                    mapping = true;
+                    for (auto it = at.begin(); it != at.end(); ++it) add(key + "." + it->first.Scalar());
+                }
+            if (!mapping) add(key);
+        }
+    return columns;
+}
+
+/// Each run's value of every knob, as YAML text.
+void add_knobs(const Study& study, std::vector<CampaignRun>& runs) {
+    std::vector<YAML::Node> resolved;
+    for (const auto& run : runs) resolved.push_back(YAML::Load(run.scene.resolved_yaml));
+    const auto columns = knob_columns(study, resolved);
+    for (std::size_t k = 0; k < runs.size(); ++k)
+        for (const auto& key : columns) {
+            const YAML::Node at = node_at(resolved[k], key);
+            runs[k].values.emplace_back(key, at.IsDefined() ? detail::flow_text(at) : "");
+        }
+}
+
 }  // namespace
 
 Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics) {
-    Study study;
-    study.file = file;
-    const auto text = read_campaign_text(file, "study", diagnostics);
-    if (!text) return study;
-    const auto root = detail::read_yaml(*text, file.string(), diagnostics);
-    if (!root) return study;
-    const detail::SourceMap sources(file.string());
-    if (!root->IsDefined() || root->IsNull()) {
-        diagnostics.error({file.string(), 1, 1}, "", "the study is empty; expected scene, reference and cases");
-        return study;
-    }
-    return StudyReader(sources, diagnostics).read(*root, file.parent_path());
+    return detail::read_campaign_file<Study, StudyReader>(file, "study", "scene, reference and cases", diagnostics);
 }
 
-std::vector<Scene> study_scenes(const Study& study, const std::filesystem::path& output, const Registry& registry,
-                                Diagnostics& diagnostics) {
-    std::vector<Scene> scenes;
-    // The base scene alone first, so that its own errors are reported once, not once per case.
-    const Scene base = SceneDocument::load_located(study.scene, {}, diagnostics).validate(registry, diagnostics);
-    if (!diagnostics.empty()) return scenes;
-    if (const auto problem = stage_names_problem(base); !problem.empty()) {
+std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::path& output, const Registry& registry,
+                                    Diagnostics& diagnostics) {
+    std::vector<CampaignRun> runs;
+    const auto base = base_scene(study, registry, diagnostics);
+    if (!base) return runs;
+    if (const auto problem = stage_names_problem(*base); !problem.empty()) {
         diagnostics.error(study.scene_where, "scene", problem);
-        return scenes;
+        return runs;
     }
-    for (const StudyRun& run : study.runs()) {
-        const StudyCase* c = run.spec;
-        auto overrides = c->overrides;
-        if (run.seed) overrides.push_back({fmt::format("seed={}", *run.seed), study.seeds_where});
-        const auto before = diagnostics.list().size();
-        Scene scene = SceneDocument::load_located(study.scene, overrides, diagnostics).validate(registry, diagnostics);
-        if (diagnostics.list().size() != before) continue;
-        if (const auto problem = stage_names_problem(scene); !problem.empty()) {
-            diagnostics.error(c->where, c->name, problem);
+    for (CampaignRun run : study.runs()) {
+        const CampaignCase& c = study.cases[run.case_index];
+        const auto scene = run_scene(study, c, run.seed, {}, registry, diagnostics);
+        if (!scene) continue;
+        if (const auto problem = stage_names_problem(*scene); !problem.empty()) {
+            diagnostics.error(c.where, c.name, problem);
             continue;
         }
-        const auto extra = study_observers(study, scene, output / run.directory());
-        overrides.insert(overrides.end(), extra.begin(), extra.end());
-        scenes.push_back(
-            SceneDocument::load_located(study.scene, overrides, diagnostics).validate(registry, diagnostics));
+        const auto observers = study_observers(study, *scene, output / run_directory(c, run.seed));
+        auto observed = run_scene(study, c, run.seed, observers, registry, diagnostics);
+        if (!observed) continue;
+        run.name = run.seed ? fmt::format("{}.seed_{}", c.name, *run.seed) : c.name;
+        run.scene = std::move(*observed);
+        runs.push_back(std::move(run));
     }
-    return scenes;
+    if (diagnostics.empty()) add_knobs(study, runs);
+    return runs;
 }
 
 }  // namespace frictionlab

@@ -1,4 +1,4 @@
-#include "frictionlab/study_metrics.hpp"
+#include "frictionlab/campaign/study_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>

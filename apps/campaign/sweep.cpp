@@ -1,19 +1,13 @@
-#include "frictionlab/sweep.hpp"
+#include "frictionlab/campaign/sweep.hpp"
 
 #include <cctype>
-#include <cmath>
-#include <fstream>
-#include <iterator>
-#include <map>
 #include <regex>
+#include <set>
 
 #include <fmt/format.h>
 
-#include "frictionlab/campaign_file.hpp"
-#include "frictionlab/campaign_keys.hpp"
-#include "frictionlab/scene/values.hpp"
-#include "frictionlab/scene/yaml.hpp"
-#include "frictionlab/seed_list.hpp"
+#include "campaign_reader.hpp"
+#include "frictionlab/campaign/keys.hpp"
 
 namespace frictionlab {
 
@@ -21,48 +15,79 @@ namespace {
 
 using detail::Entry;
 
-std::optional<Entry> given(const detail::Section& section, const std::string& key) {
-    const auto it = section.given.find(key);
-    if (it == section.given.end()) return std::nullopt;
-    return it->second;
+/// One varied key and the values it takes, each value an override `key=value`.
+struct SweepAxis {
+    std::string key;
+    std::vector<SceneOverride> values;
+};
+
+/// The key path and value of an override "key.path=value".
+std::pair<std::string, std::string> split(const std::string& text) {
+    const auto eq = text.find('=');
+    return {text.substr(0, eq), eq == std::string::npos ? "" : text.substr(eq + 1)};
 }
 
-/// A value of the sweep file as override text: a scalar as written, a mapping or list in flow style.
-std::string value_text(const YAML::Node& node) {
-    if (node.IsScalar()) return node.Scalar();
-    YAML::Emitter out;
-    out.SetMapFormat(YAML::Flow);
-    out.SetSeqFormat(YAML::Flow);
-    out << node;
-    return out.c_str();
+/// A directory name part from a value: letters, digits, '.', '+' and '-' kept, others '_'.
+std::string name_part(const std::string& key, const std::string& value) {
+    static const std::regex last_key(R"(([A-Za-z0-9_]+)(\[[0-9]+\])?$)");
+    std::smatch m;
+    std::string out = std::regex_search(key, m, last_key) ? m[1].str() : key;
+    out += "-";
+    for (char c : value)
+        out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' ? c : '_';
+    return out;
 }
 
-class SweepReader {
+/// `name` with `part` appended, '_' between them.
+void append_part(std::string& name, const std::string& part) { name += (name.empty() ? "" : "_") + part; }
+
+/// Every listed case at every combination of the grid, the grid's last key varying fastest. A
+/// named case stands for its own overrides; an unnamed one is named by them.
+std::vector<CampaignCase> grid_cases(const std::vector<CampaignCase>& listed, const std::vector<SweepAxis>& grid) {
+    std::vector<std::vector<SceneOverride>> combinations{{}};
+    for (const auto& axis : grid) {
+        std::vector<std::vector<SceneOverride>> next;
+        for (const auto& combination : combinations)
+            for (const auto& value : axis.values) {
+                next.push_back(combination);
+                next.back().push_back(value);
+            }
+        combinations = std::move(next);
+    }
+    std::vector<CampaignCase> cases;
+    for (const auto& c : listed.empty() ? std::vector<CampaignCase>{CampaignCase{}} : listed)
+        for (const auto& combination : combinations) {
+            CampaignCase out{c.name, c.where, c.overrides, {}};
+            out.overrides.insert(out.overrides.end(), combination.begin(), combination.end());
+            const auto add = [&](const SceneOverride& o) {
+                const auto [key, value] = split(o.text);
+                out.values.emplace_back(key, value);
+                append_part(out.name, name_part(key, value));
+            };
+            if (c.name.empty())
+                for (const auto& o : c.overrides) add(o);
+            for (const auto& o : combination) add(o);
+            cases.push_back(std::move(out));
+        }
+    return cases;
+}
+
+class SweepReader : public detail::CampaignReader {
 public:
-    SweepReader(const detail::SourceMap& sources, Diagnostics& diagnostics) : reporter_(sources, diagnostics) {}
+    using CampaignReader::CampaignReader;
 
-    Sweep read(const YAML::Node& root, const std::filesystem::path& file) {
-        Sweep sweep;
-        sweep.file = file;
-        const detail::SectionKeys keys{"a sweep", detail::sweep_params(), detail::sweep_sections(), true};
-        const auto top = detail::read_section({YAML::Node(YAML::NodeType::Undefined), root}, "", keys, reporter_);
-        if (!root.IsMap()) return sweep;
-        if (const auto it = top.values.find("title"); it != top.values.end())
-            sweep.title = std::get<std::string>(it->second);
-        if (const auto scene = given(top, "scene"); scene && top.values.contains("scene")) {
-            sweep.scene = file.parent_path() / std::get<std::string>(top.values.at("scene"));
-            sweep.scene_where = reporter_.where(scene->site());
-        }
-        if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) {
-            sweep.seeds_where = reporter_.where(seeds->site());
-            sweep.seeds = detail::read_seed_list(*seeds, reporter_);
-        }
-        if (const auto grid = given(top, "grid")) sweep.grid = read_grid(*grid);
-        if (const auto cases = given(top, "cases")) sweep.cases = read_cases(*cases);
+    static detail::SectionKeys keys() { return {"a sweep", detail::sweep_params(), detail::sweep_sections(), true}; }
+
+    /// The grid and the listed cases, which make the sweep's cases.
+    void read_own(const YAML::Node& root, const detail::Section& top, Sweep& sweep) {
+        std::vector<SweepAxis> grid;
+        std::vector<CampaignCase> listed;
+        if (const auto entry = given(top, "grid")) grid = read_grid(*entry);
+        if (const auto entry = given(top, "cases")) listed = read_listed(*entry);
         if (!top.given.contains("grid") && !top.given.contains("cases") && !top.given.contains("seeds"))
             detail::report_missing(root, "grid", "a mapping of key paths to lists of values (or `cases:` or `seeds:`)",
                                    "", reporter_);
-        return sweep;
+        sweep.cases = grid_cases(listed, grid);
     }
 
 private:
@@ -88,145 +113,62 @@ private:
                 // An error in the value points at the value; the key is written elsewhere.
                 SourceLocation at = reporter_.where(values[i]);
                 at.column -= static_cast<int>(axis.key.size()) + 1;
-                axis.values.push_back({axis.key + "=" + value_text(values[i]), at});
+                axis.values.push_back({axis.key + "=" + detail::flow_text(values[i]), at});
             }
             axes.push_back(std::move(axis));
         }
         return axes;
     }
 
-    std::vector<SweepCase> read_cases(const Entry& list) {
-        std::vector<SweepCase> cases;
-        if (!list.value.IsSequence() || list.value.size() == 0) {
-            reporter_.error(
-                list.site(), "cases",
-                "expected a non-empty list of cases, got " +
-                    (list.value.IsSequence() ? std::string("an empty list") : detail::describe(list.value)));
-            return cases;
-        }
-        for (std::size_t i = 0; i < list.value.size(); ++i) {
+    std::vector<CampaignCase> read_listed(const Entry& list) {
+        std::vector<CampaignCase> cases;
+        const auto items = case_items(list);
+        for (std::size_t i = 0; i < items.size(); ++i) {
             const std::string path = detail::index_path("cases", i);
-            const Entry entry{YAML::Node(YAML::NodeType::Undefined), list.value[i]};
-            SweepCase c;
-            c.where = reporter_.where(entry.site());
-            const detail::SectionKeys keys{"a case", detail::sweep_case_params(), {}, true};
-            const auto s = detail::read_section(entry, path, keys, reporter_);
-            if (const auto it = s.values.find("name"); it != s.values.end()) c.name = std::get<std::string>(it->second);
-            if (const auto set = given(s, "set"); set && s.values.contains("set"))
-                for (const auto& item : set->value) {
-                    SourceLocation at = reporter_.where(item);
-                    if (detail::is_quoted(item) && at.column > 0) ++at.column;
-                    c.overrides.push_back({item.Scalar(), at});
-                }
-            static const std::regex name_rule("[a-z][a-z0-9_.-]*");
-            if (!c.name.empty() && !std::regex_match(c.name, name_rule))
-                reporter_.error(
-                    c.where, detail::join_path(path, "name"),
-                    "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " + detail::quote(c.name));
+            CampaignCase c;
+            read_case(items[i], path, {"a case", detail::sweep_case_params(), {}, true}, c);
+            if (!c.name.empty()) check_name_rule(c, path);
             cases.push_back(std::move(c));
         }
         return cases;
     }
-
-    detail::Reporter reporter_;
 };
-
-/// The key path and value of an override "key.path=value".
-std::pair<std::string, std::string> split(const std::string& text) {
-    const auto eq = text.find('=');
-    return {text.substr(0, eq), eq == std::string::npos ? "" : text.substr(eq + 1)};
-}
-
-/// A directory name part from a value: letters, digits, '.', '+' and '-' kept, others '_'.
-std::string name_part(const std::string& key, const std::string& value) {
-    static const std::regex last_key(R"(([A-Za-z0-9_]+)(\[[0-9]+\])?$)");
-    std::smatch m;
-    std::string out = std::regex_search(key, m, last_key) ? m[1].str() : key;
-    out += "-";
-    for (char c : value)
-        out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' ? c : '_';
-    return out;
-}
 
 }  // namespace
 
 Sweep read_sweep(const std::filesystem::path& file, Diagnostics& diagnostics) {
-    Sweep sweep;
-    sweep.file = file;
-    const auto text = read_campaign_text(file, "sweep", diagnostics);
-    if (!text) return sweep;
-    const auto root = detail::read_yaml(*text, file.string(), diagnostics);
-    if (!root) return sweep;
-    if (!root->IsDefined() || root->IsNull()) {
-        diagnostics.error({file.string(), 1, 1}, "", "the sweep is empty; expected scene and grid, cases or seeds");
-        return sweep;
-    }
-    const detail::SourceMap sources(file.string());
-    return SweepReader(sources, diagnostics).read(*root, file);
+    return detail::read_campaign_file<Sweep, SweepReader>(file, "sweep", "scene and grid, cases or seeds", diagnostics);
 }
 
-std::vector<CampaignCase> sweep_cases(const Sweep& sweep, const std::filesystem::path& output, const Registry& registry,
-                                      Diagnostics& diagnostics) {
-    std::vector<CampaignCase> cases;
-    // The base scene alone first, so that its own errors are reported once, not once per case.
-    const Scene base = SceneDocument::load_located(sweep.scene, {}, diagnostics).validate(registry, diagnostics);
-    if (!diagnostics.empty()) return cases;
-
-    // Every listed case x every grid combination x every seed, the grid's last key varying fastest.
-    std::vector<std::vector<SceneOverride>> combinations{{}};
-    for (const auto& axis : sweep.grid) {
-        std::vector<std::vector<SceneOverride>> next;
-        for (const auto& combination : combinations)
-            for (const auto& value : axis.values) {
-                next.push_back(combination);
-                next.back().push_back(value);
-            }
-        combinations = std::move(next);
+std::vector<CampaignRun> sweep_runs(const Sweep& sweep, const std::filesystem::path& output, const Registry& registry,
+                                    Diagnostics& diagnostics) {
+    std::vector<CampaignRun> runs;
+    if (!base_scene(sweep, registry, diagnostics)) return runs;
+    std::set<std::string> names;
+    for (CampaignRun run : sweep.runs()) {
+        const CampaignCase& c = sweep.cases[run.case_index];
+        run.name = c.name;
+        run.values = c.values;
+        if (run.seed) {
+            run.values.emplace_back("seed", std::to_string(*run.seed));
+            append_part(run.name, fmt::format("seed-{}", *run.seed));
+        }
+        if (run.name.empty()) run.name = "base";
+        if (!names.insert(run.name).second) {
+            diagnostics.error(c.where, "cases",
+                              fmt::format("two cases would both run in cases/{}: give the listed cases "
+                                          "names (`name:`) or vary different keys",
+                                          run.name));
+            continue;
+        }
+        const SceneOverride output_override{"output=" + detail::yaml_text((output / "cases" / run.name).string()),
+                                            sweep.scene_where};
+        auto scene = run_scene(sweep, c, run.seed, {output_override}, registry, diagnostics);
+        if (!scene) continue;
+        run.scene = std::move(*scene);
+        runs.push_back(std::move(run));
     }
-    const std::vector<SweepCase> listed = sweep.cases.empty() ? std::vector<SweepCase>{SweepCase{}} : sweep.cases;
-    const std::vector<std::int64_t> seeds =
-        sweep.seeds.empty() ? std::vector<std::int64_t>{static_cast<std::int64_t>(base.seed)} : sweep.seeds;
-    std::map<std::string, SourceLocation> names;
-    for (const auto& c : listed)
-        for (const auto& combination : combinations)
-            for (const auto seed : seeds) {
-                CampaignCase out;
-                std::vector<SceneOverride> overrides = c.overrides;
-                overrides.insert(overrides.end(), combination.begin(), combination.end());
-                std::string name = c.name;
-                const auto add = [&](const SceneOverride& o) {
-                    const auto [key, value] = split(o.text);
-                    out.values.emplace_back(key, value);
-                    name += (name.empty() ? "" : "_") + name_part(key, value);
-                };
-                // A named case stands for its own overrides; an unnamed one is named by them.
-                if (c.name.empty())
-                    for (const auto& o : c.overrides) add(o);
-                for (const auto& o : combination) add(o);
-                const SourceLocation where = !sweep.seeds.empty() ? sweep.seeds_where : c.where;
-                if (!sweep.seeds.empty()) {
-                    overrides.push_back({fmt::format("seed={}", seed), sweep.seeds_where});
-                    out.values.emplace_back("seed", std::to_string(seed));
-                    name += (name.empty() ? "" : "_") + fmt::format("seed-{}", seed);
-                }
-                if (name.empty()) name = "base";
-                if (const auto [it, first] = names.emplace(name, where); !first) {
-                    diagnostics.error(c.where, "cases",
-                                      fmt::format("two cases would both run in cases/{}: give the listed cases "
-                                                  "names (`name:`) or vary different keys",
-                                                  name));
-                    continue;
-                }
-                overrides.push_back(
-                    {"output=" + detail::yaml_text((output / "cases" / name).string()), sweep.scene_where});
-                const auto before = diagnostics.list().size();
-                out.scene =
-                    SceneDocument::load_located(sweep.scene, overrides, diagnostics).validate(registry, diagnostics);
-                if (diagnostics.list().size() != before) continue;
-                out.name = name;
-                cases.push_back(std::move(out));
-            }
-    return cases;
+    return runs;
 }
 
 }  // namespace frictionlab

@@ -1,4 +1,4 @@
-#include "frictionlab/sweep_tables.hpp"
+#include "frictionlab/campaign/sweep_tables.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "frictionlab/case_outputs.hpp"
-#include "frictionlab/csv_cell.hpp"
+#include "frictionlab/campaign/case_outputs.hpp"
+#include "frictionlab/campaign/csv_cell.hpp"
 #include "frictionlab/output/csv_columns.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/output/atomic_file.hpp"
@@ -29,7 +29,7 @@ struct CaseEvents {
     double first_precursor_ratio = nan;  // F_S/F_N at the start of the first precursor
 };
 
-CaseEvents read_events(const CampaignCase& c) {
+CaseEvents read_events(const CampaignRun& c) {
     CaseEvents out;
     const auto files = rupture_files(c.scene);
     if (!files) return out;
@@ -60,13 +60,13 @@ CaseEvents read_events(const CampaignCase& c) {
 
 }  // namespace
 
-void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cases,
+void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs,
                         const std::vector<CaseRecord>& records, const std::filesystem::path& output) {
     std::vector<std::string> columns;  // the varied values, in order of first use
-    for (const auto& c : cases)
+    for (const auto& c : runs)
         for (const auto& [key, value] : c.values)
             if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
-    const auto values_of = [&](const CampaignCase& c) {
+    const auto values_of = [&](const CampaignRun& c) {
         std::string text;
         for (const auto& key : columns) {
             const auto it =
@@ -86,8 +86,8 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignCase>& cas
                         ",status,reason,scene_hash,global_static_coefficient,events,precursor_count,"
                         "first_precursor_force_ratio,steps,wall_seconds,cpu_seconds\n";
     std::string events = comment + header + ",event,t_start,t_end,force_ratio,extent_over_length,kind\n";
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-        const auto& c = cases[i];
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const auto& c = runs[i];
         const auto& r = records.at(i);
         const CaseEvents e = r.status == "done" ? read_events(c) : CaseEvents{};
         table += fmt::format("{}{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", c.name, values_of(c), r.status,

@@ -13,6 +13,7 @@ foreach(file
     ${INCLUDEDIR}/frictionlab/plugins/plugin.hpp
     ${INCLUDEDIR}/frictionlab/plugins/registry.hpp
     ${INCLUDEDIR}/frictionlab/plugins/search.hpp
+    ${INCLUDEDIR}/frictionlab/campaign/sweep.hpp
     ${DATADIR}/frictionlab/plugin_template/CMakeLists.txt
     ${DATADIR}/frictionlab/plugin_template/max_speed_csv.cpp
     ${DATADIR}/frictionlab/plugin_template/README.md
@@ -25,4 +26,8 @@ file(GLOB libraries ${PREFIX}/${LIBDIR}/libfrictionlab.so*)
 file(GLOB plugins ${PREFIX}/${PLUGIN_SUBDIR}/*.so)
 if(NOT libraries OR NOT plugins)
   message(FATAL_ERROR "not installed: ${LIBDIR}/libfrictionlab.so or the plugins in ${PLUGIN_SUBDIR}")
+endif()
+file(READ ${PREFIX}/${LIBDIR}/cmake/FrictionLab/FrictionLabTargets.cmake targets)
+if(NOT targets MATCHES "FrictionLab::campaign")
+  message(FATAL_ERROR "find_package(FrictionLab) gives no FrictionLab::campaign")
 endif()

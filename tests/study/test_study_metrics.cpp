@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/study_metrics.hpp"
+#include "frictionlab/campaign/study_metrics.hpp"
 
 namespace {
 

@@ -74,7 +74,7 @@ struct Scene {
 };
 
 /// One `key.path=value` override (share/docs/scene-format.md) and where its first character was
-/// written, so that its errors point there: the command line, or a study file (study.hpp).
+/// written, so that its errors point there: the command line, or a campaign file (campaign/campaign.hpp).
 struct SceneOverride {
     std::string text;
     SourceLocation origin{"<command line>", 1, 1};

@@ -1,4 +1,4 @@
-#include "frictionlab/campaign_runner.hpp"
+#include "frictionlab/campaign/runner.hpp"
 
 #include <fcntl.h>
 #include <sys/prctl.h>
@@ -19,10 +19,11 @@
 #include <fmt/format.h>
 #include <spdlog/sinks/stdout_sinks.h>
 
-#include "frictionlab/campaign_mpi.hpp"
+#include "frictionlab/campaign/mpi.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/live_line.hpp"
+#include "frictionlab/output/output_directory.hpp"
 
 namespace frictionlab {
 
@@ -32,7 +33,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 /// The child's side: the run and its record, its log in `log_file`; never returns.
-[[noreturn]] void run_case_here(const CampaignCase& c, const fs::path& log_file, const Registry& registry,
+[[noreturn]] void run_case_here(const CampaignRun& c, const fs::path& log_file, const Registry& registry,
                                 const CampaignOptions& campaign) {
     const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
@@ -82,8 +83,7 @@ using Clock = std::chrono::steady_clock;
     std::_Exit(code);  // no atexit handlers: they belong to the parent (and MPI)
 }
 
-pid_t start_case(const CampaignCase& c, const fs::path& logs, const Registry& registry,
-                 const CampaignOptions& options) {
+pid_t start_case(const CampaignRun& c, const fs::path& logs, const Registry& registry, const CampaignOptions& options) {
     const pid_t parent = ::getpid();
     const pid_t child = ::fork();
     if (child < 0) throw RunError(fmt::format("cannot start case {}: {}", c.name, std::strerror(errno)));
@@ -119,7 +119,7 @@ int wait_for(pid_t child, const CampaignOptions& options) {
 
 /// The record a finished case left, or one saying how its process ended if it left none (a crash,
 /// a kill, or a failure before its directory existed).
-CaseRecord outcome(const CampaignCase& c, int status, const fs::path& logs) {
+CaseRecord outcome(const CampaignRun& c, int status, const fs::path& logs) {
     CaseRecord record = read_case_record(c.scene.output_directory);
     if (record.scene_hash == c.scene.hash && record.status != "not run") return record;
     record = CaseRecord{};
@@ -145,7 +145,7 @@ public:
         ++running_;
         show();
     }
-    void finished(const CampaignCase& c, const CaseRecord& r) {
+    void finished(const CampaignRun& c, const CaseRecord& r) {
         --running_;
         ++done_;
         ++finished_here_;
@@ -186,48 +186,53 @@ private:
 };
 
 /// A worker rank: runs the cases rank 0 sends until it sends -1.
-void serve(const std::vector<CampaignCase>& cases, const fs::path& logs, const Registry& registry,
+void serve(const std::vector<CampaignRun>& runs, const fs::path& logs, const Registry& registry,
            const CampaignOptions& options) {
     mpi_work::Report report;
     for (int next = mpi_work::report_and_receive(report); next >= 0; next = mpi_work::report_and_receive(report)) {
-        const auto& c = cases.at(static_cast<std::size_t>(next));
+        const auto& c = runs.at(static_cast<std::size_t>(next));
         report = {next, wait_for(start_case(c, logs, registry, options), options)};
     }
 }
 
 }  // namespace
 
-std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, const fs::path& output,
+void prepare_campaign_directory(const Campaign& campaign, const fs::path& output, const CampaignOptions& options) {
+    const bool goes_on =
+        options.reuse_finished && !options.overwrite && fs::exists(output) && created_by_frictionlab(output);
+    if (!goes_on) prepare_output_directory(output, options.overwrite, {campaign.scene, campaign.file});
+}
+
+std::vector<CaseRecord> run_campaign(const std::vector<CampaignRun>& runs, const fs::path& output,
                                      const Registry& registry, spdlog::logger& log, const CampaignOptions& options) {
     const fs::path logs = output / "logs";
     if (mpi_rank() != 0) {
-        serve(cases, logs, registry, options);
+        serve(runs, logs, registry, options);
         return {};
     }
     fs::create_directories(output / "cases");
     fs::create_directories(logs);
-    std::vector<CaseRecord> records(cases.size());
+    std::vector<CaseRecord> records(runs.size());
     std::deque<std::size_t> queue;
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-        CaseRecord earlier = read_case_record(cases[i].scene.output_directory);
-        if (options.reuse_finished && earlier.status == "done" && earlier.scene_hash == cases[i].scene.hash) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        CaseRecord earlier = read_case_record(runs[i].scene.output_directory);
+        if (options.reuse_finished && earlier.status == "done" && earlier.scene_hash == runs[i].scene.hash) {
             earlier.reused = true;
             records[i] = earlier;
         } else {
             queue.push_back(i);
         }
     }
-    const std::size_t reused = cases.size() - queue.size();
-    if (reused > 0)
-        log.info("{} of {} cases finished earlier with the same scene: not run again", reused, cases.size());
-    Progress progress(cases.size(), reused, options.live_progress, log);
+    const std::size_t reused = runs.size() - queue.size();
+    if (reused > 0) log.info("{} of {} cases finished earlier with the same scene: not run again", reused, runs.size());
+    Progress progress(runs.size(), reused, options.live_progress, log);
 
     std::map<pid_t, std::size_t> running;  // local child processes
     int busy_workers = 0, idle_workers = mpi_size() - 1;
     std::vector<int> waiting_workers;
     const auto finish = [&](std::size_t i, int status) {
-        records[i] = outcome(cases[i], status, logs);
-        progress.finished(cases[i], records[i]);
+        records[i] = outcome(runs[i], status, logs);
+        progress.finished(runs[i], records[i]);
     };
     const std::size_t jobs = static_cast<std::size_t>(std::max(1, options.jobs));
     bool passed_on = false;
@@ -261,7 +266,7 @@ std::vector<CaseRecord> run_campaign(const std::vector<CampaignCase>& cases, con
         while (running.size() < jobs && !queue.empty()) {
             const std::size_t i = queue.front();
             queue.pop_front();
-            running.emplace(start_case(cases[i], logs, registry, options), i);
+            running.emplace(start_case(runs[i], logs, registry, options), i);
             progress.started();
         }
         if (mpi_size() == 1 && !options.stop_signal) {

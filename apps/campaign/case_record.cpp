@@ -1,4 +1,4 @@
-#include "frictionlab/campaign_case.hpp"
+#include "frictionlab/campaign/case_record.hpp"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,27 +1,14 @@
 #pragma once
-// One case of a campaign (a sweep or an accuracy study): an ordinary scene, run like `frictionlab
-// run` into its scene's output directory below <campaign>/cases/, and what became of it. The
-// record is written beside the run's outputs (case.yaml) so that a campaign run again into the same
-// directory can tell a finished case (same scene hash, status done) from one that failed or was
-// interrupted.
+// What became of one run of a campaign (campaign.hpp), run like `frictionlab run` into its scene's
+// output directory below <campaign>/cases/. The record is written beside the run's outputs
+// (case.yaml) so that a campaign run again into the same directory can tell a finished run (same
+// scene hash, status done) from one that failed or was interrupted.
 #include <filesystem>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "frictionlab/simulation/run.hpp"
-#include "frictionlab/scene/scene.hpp"
 
 namespace frictionlab {
-
-struct CampaignCase {
-    std::string name;  // unique; its log is logs/<name>.log
-    /// The values that make this case: key path (or "seed") and value as written, in column order.
-    std::vector<std::pair<std::string, std::string>> values;
-    /// Validated; its output directory is <campaign>/cases/<name> (over a study's seeds,
-    /// cases/<case>/seed_<seed>).
-    Scene scene;
-};
 
 struct CaseRecord {
     std::string status = "not run";  // "done", "failed", "interrupted" or "not run"

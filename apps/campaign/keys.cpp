@@ -1,4 +1,4 @@
-#include "frictionlab/campaign_keys.hpp"
+#include "frictionlab/campaign/keys.hpp"
 
 #include "frictionlab/base/param_spec.hpp"
 

@@ -1,4 +1,4 @@
-#include "frictionlab/campaign_mpi.hpp"
+#include "frictionlab/campaign/mpi.hpp"
 
 #include <cstdlib>
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/case_outputs.hpp"
+#include "frictionlab/campaign/case_outputs.hpp"
 
 namespace frictionlab {
 

@@ -1,0 +1,124 @@
+#include "campaign_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <regex>
+
+#include <fmt/format.h>
+
+namespace frictionlab::detail {
+
+namespace {
+
+std::optional<std::string> read_text(const std::filesystem::path& file, const std::string& what,
+                                     Diagnostics& diagnostics) {
+    std::error_code ec;
+    const auto fail = [&](const std::string& why) {
+        diagnostics.error({file.string(), 0, 0}, "", fmt::format("cannot read the {} file: {}", what, why));
+        return std::nullopt;
+    };
+    if (!std::filesystem::is_regular_file(file, ec))
+        return fail(std::filesystem::exists(file, ec) ? "it is not a file" : "it does not exist");
+    if (std::filesystem::file_size(file, ec) > largest_campaign_file) return fail("it is larger than 4 MiB");
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+std::optional<YAML::Node> read_campaign_yaml(const std::filesystem::path& file, const std::string& what,
+                                             const std::string& expected, Diagnostics& diagnostics) {
+    const auto text = read_text(file, what, diagnostics);
+    if (!text) return std::nullopt;
+    auto root = read_yaml(*text, file.string(), diagnostics);
+    if (root && (!root->IsDefined() || root->IsNull())) {
+        diagnostics.error({file.string(), 1, 1}, "", fmt::format("the {} is empty; expected {}", what, expected));
+        return std::nullopt;
+    }
+    return root;
+}
+
+std::string flow_text(const YAML::Node& node) {
+    if (node.IsScalar()) return node.Scalar();
+    YAML::Emitter out;
+    out.SetMapFormat(YAML::Flow);
+    out.SetSeqFormat(YAML::Flow);
+    out << node;
+    return out.c_str();
+}
+
+Section CampaignReader::read_top(const YAML::Node& root, const SectionKeys& keys, Campaign& campaign) const {
+    const auto top = read_section({YAML::Node(YAML::NodeType::Undefined), root}, "", keys, reporter_);
+    if (!root.IsMap()) return top;
+    campaign.title = value_or(top, "title", std::string());
+    if (const auto scene = given(top, "scene"); scene && top.values.contains("scene")) {
+        campaign.scene = campaign.file.parent_path() / std::get<std::string>(top.values.at("scene"));
+        campaign.scene_where = reporter_.where(scene->site());
+    }
+    if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) {
+        campaign.seeds_where = reporter_.where(seeds->site());
+        campaign.seeds = read_seeds(*seeds);
+    }
+    return top;
+}
+
+std::vector<Entry> CampaignReader::case_items(const Entry& list) const {
+    if (!list.value.IsSequence() || list.value.size() == 0) {
+        reporter_.error(list.site(), "cases",
+                        "expected a non-empty list of cases, got " +
+                            (list.value.IsSequence() ? std::string("an empty list") : describe(list.value)));
+        return {};
+    }
+    std::vector<Entry> items;
+    for (const auto& item : list.value) items.push_back({YAML::Node(YAML::NodeType::Undefined), item});
+    return items;
+}
+
+Section CampaignReader::read_case(const Entry& entry, const std::string& path, const SectionKeys& keys,
+                                  CampaignCase& c) const {
+    c.where = reporter_.where(entry.site());
+    const auto s = read_section(entry, path, keys, reporter_);
+    c.name = value_or(s, "name", std::string());
+    if (const auto set = given(s, "set"); set && s.values.contains("set"))
+        for (const auto& item : set->value) {
+            // An override's errors point at its first character: after the quote of a quoted scalar.
+            SourceLocation at = reporter_.where(item);
+            if (is_quoted(item) && at.column > 0) ++at.column;
+            c.overrides.push_back({item.Scalar(), at});
+        }
+    return s;
+}
+
+bool CampaignReader::check_name_rule(const CampaignCase& c, const std::string& path) const {
+    static const std::regex name_rule("[a-z][a-z0-9_.-]*");
+    if (std::regex_match(c.name, name_rule)) return true;
+    reporter_.error(c.where, join_path(path, "name"),
+                    "expected a name of a-z, 0-9, _, . and -, starting with a letter, got " + quote(c.name));
+    return false;
+}
+
+std::optional<Entry> CampaignReader::given(const Section& section, const std::string& key) {
+    const auto it = section.given.find(key);
+    if (it == section.given.end()) return std::nullopt;
+    return it->second;
+}
+
+std::vector<std::int64_t> CampaignReader::read_seeds(const Entry& entry) const {
+    std::vector<std::int64_t> seeds;
+    for (std::size_t i = 0; i < entry.value.size(); ++i) {
+        const double seed = entry.value[i].as<double>();
+        // Above 2^53 a double no longer holds every whole number.
+        if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) {
+            reporter_.error(entry.value[i], index_path("seeds", i),
+                            "expected a whole number >= 0, got " + quote(entry.value[i].Scalar()));
+            continue;
+        }
+        seeds.push_back(static_cast<std::int64_t>(seed));
+    }
+    if (seeds.empty() && entry.value.size() == 0)
+        reporter_.error(entry.site(), "seeds", "expected a non-empty list of seeds, got an empty list");
+    return seeds;
+}
+
+}  // namespace frictionlab::detail

@@ -1,0 +1,43 @@
+#pragma once
+// Runs an accuracy study (study.hpp): every run, the reference's first, each an ordinary run into
+// its directory below <output>/cases, then the errors of each run against the reference's run of
+// the same seed (study_metrics.hpp). One run at a time (the default) keeps the wall times
+// comparable; each run is bit-reproducible however many run at once.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <spdlog/logger.h>
+
+#include "frictionlab/campaign/runner.hpp"
+#include "frictionlab/campaign/study.hpp"
+#include "frictionlab/campaign/study_metrics.hpp"
+
+namespace frictionlab {
+
+struct StudyRow {
+    std::string name, family;
+    std::string label;               // the name, with the seed where the study has seeds
+    std::string scene_hash;          // of the run's resolved scene (seed included), as its run.yaml records it
+    std::vector<std::string> knobs;  // one value per StudyResult::knob_columns ("" where it does not apply)
+    RunSummary summary;
+    CaseOutcome outcome;
+    CaseErrors errors;
+};
+
+struct StudyResult {
+    /// integrator.type, then every key path the study's overrides set, in order of first use.
+    std::vector<std::string> knob_columns;
+    std::vector<StudyRow> rows;  // one per run, the reference's first
+    std::uint64_t seed = 0;      // the base scene's (a case may set its own)
+};
+
+/// The study's output directory is created (replaced with `options.overwrite`) and every run runs
+/// afresh, never reused from an earlier attempt: the study compares its runs' times. A run that
+/// fails is a row of NaN errors with the reason in its note; a failing reference throws RunError,
+/// a stop signal Interrupted.
+StudyResult run_study(const Study& study, const std::vector<CampaignRun>& runs, const std::filesystem::path& output,
+                      const Registry& registry, spdlog::logger& log, CampaignOptions options);
+
+}  // namespace frictionlab

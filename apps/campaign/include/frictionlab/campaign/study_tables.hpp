@@ -1,0 +1,15 @@
+#pragma once
+// The tables of an accuracy study (study_run.hpp): study.csv for scripts, study.md for reading.
+#include <filesystem>
+
+#include "frictionlab/campaign/study.hpp"
+#include "frictionlab/campaign/study_run.hpp"
+
+namespace frictionlab {
+
+/// study.csv: case, family, knobs, wall_seconds, cpu_seconds, steps, evaluations, the errors, note.
+void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);
+/// study.md: the same as a Markdown table, with the reference's values.
+void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file);
+
+}  // namespace frictionlab

@@ -1,0 +1,132 @@
+#include "frictionlab/campaign/study_tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "frictionlab/base/version.hpp"
+#include "frictionlab/campaign/csv_cell.hpp"
+#include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/output/provenance.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+struct ErrorColumn {
+    const char* name;
+    const char* title;  // in study.md
+    double CaseErrors::*member;
+};
+
+const std::vector<ErrorColumn> error_columns{
+    {"err_settled_normal_force", "settled normal force", &CaseErrors::settled_normal_force},
+    {"err_settled_friction_force", "settled friction force", &CaseErrors::settled_friction_force},
+    {"err_first_precursor_time", "first precursor time", &CaseErrors::first_precursor_time},
+    {"err_first_precursor_force", "first precursor F_S", &CaseErrors::first_precursor_force},
+    {"err_global_static_coefficient", "global F_S/F_N", &CaseErrors::global_static_coefficient},
+    {"err_event_slip", "slip of first event", &CaseErrors::event_slip},
+    {"err_event_time", "event times", &CaseErrors::event_time},
+    {"err_event_force", "event F_S", &CaseErrors::event_force},
+    {"err_event_length", "event l/L (abs.)", &CaseErrors::event_length},
+};
+
+std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.6g}", v); }
+
+/// The largest and the median of values (NaN, a failed run's, counts as the largest); NaN if none.
+std::pair<double, double> largest_and_median(std::vector<double> values) {
+    if (values.empty()) return {NAN, NAN};
+    if (std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); })) return {NAN, NAN};
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return {values.back(), n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2};
+}
+
+/// Over the study's seeds: per case, each error's largest (and median) value and the median times.
+std::string seeds_table(const StudyResult& result, const Study& study) {
+    std::string text = fmt::format(
+        "\n## Over the {} seeds\n\nEach case against the reference of the same seed: the largest error over "
+        "the seeds (the median in brackets), the median times.\n\n| case | family | wall (s) | CPU (s) |",
+        study.seeds.size());
+    for (const auto& c : error_columns) text += std::string(" ") + c.title + " |";
+    text += "\n|";
+    for (std::size_t i = 0; i < 4 + error_columns.size(); ++i) text += " --- |";
+    text += "\n";
+    const std::size_t per_case = study.seeds.size();
+    for (std::size_t first = per_case; first + per_case <= result.rows.size(); first += per_case) {
+        const auto column = [&](auto value) {
+            std::vector<double> values;
+            for (std::size_t k = first; k < first + per_case; ++k) values.push_back(value(result.rows[k]));
+            return largest_and_median(values);
+        };
+        const StudyRow& row = result.rows[first];
+        text += fmt::format("| {} | {} | {:.3g} | {:.3g} |", row.name, row.family,
+                            column([](const StudyRow& r) { return r.summary.wall_seconds; }).second,
+                            column([](const StudyRow& r) { return r.summary.cpu_seconds; }).second);
+        for (const auto& c : error_columns) {
+            const auto [largest, median] = column([&](const StudyRow& r) { return r.errors.*c.member; });
+            text += fmt::format(" {:.3g} ({:.3g}) |", largest, median);
+        }
+        text += "\n";
+    }
+    return text;
+}
+
+}  // namespace
+
+void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
+    // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
+    write_file_atomically(
+        table_sidecar_path(file),
+        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\n{}\nnote: errors relative to "
+                    "the reference case{}; each case's run.yaml in cases/ records its resolved scene and plugins\n",
+                    framework_version(), study.file.filename().string(),
+                    study.seeds.empty() ? fmt::format("seed: {}", result.seed)
+                                        : fmt::format("seeds: [{}]", fmt::join(study.seeds, ", ")),
+                    study.seeds.empty() ? "; the seed unless a case sets it" : " of the same seed"));
+    std::string text = "case,family,scene_hash";
+    for (const auto& k : result.knob_columns) text += fmt::format(",{}", csv_cell(k));
+    text += ",wall_seconds,cpu_seconds,steps,evaluations";
+    for (const auto& c : error_columns) text += std::string(",") + c.name;
+    text += ",note\n";
+    for (const auto& row : result.rows) {
+        text += fmt::format("{},{},{}", row.name, csv_cell(row.family), row.scene_hash);
+        for (const auto& v : row.knobs) text += fmt::format(",{}", csv_cell(v));
+        text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds,
+                            row.summary.steps, row.summary.evaluations);
+        for (const auto& c : error_columns) text += fmt::format(",{}", number(row.errors.*c.member));
+        text += fmt::format(",{}\n", csv_cell(row.errors.note));
+    }
+    write_file_atomically(file, text);
+}
+
+void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
+    const CaseOutcome& ref = result.rows.front().outcome;
+    std::string text = fmt::format("# {}\n\n", study.title.empty() ? "Accuracy study" : study.title);
+    text += fmt::format(
+        "Study `{}` on `{}`. Reference{}: first precursor {} s after loading began at F_S = {} N; "
+        "global F_S/F_N = {}. Errors are relative (profiles: relative L2 on x/L).\n\n",
+        study.file.filename().string(), study.scene.filename().string(),
+        study.seeds.empty() ? "" : fmt::format(" (seed {})", study.seeds.front()), number(ref.first_precursor_time),
+        number(ref.first_precursor_force), number(ref.global_static_coefficient));
+    text += "| case | family |";
+    for (const auto& k : result.knob_columns) text += " " + k + " |";
+    text += " wall (s) | CPU (s) | steps | evaluations |";
+    for (const auto& c : error_columns) text += std::string(" ") + c.title + " |";
+    text += " note |\n|";
+    for (std::size_t i = 0; i < 7 + result.knob_columns.size() + error_columns.size(); ++i) text += " --- |";
+    text += "\n";
+    for (const auto& row : result.rows) {
+        text += "| " + row.name + " | " + row.family + " |";  // the seed, if any, is a knob column
+        for (const auto& v : row.knobs) text += " " + v + " |";
+        text += fmt::format(" {:.3g} | {:.3g} | {} | {} |", row.summary.wall_seconds, row.summary.cpu_seconds,
+                            row.summary.steps, row.summary.evaluations);
+        for (const auto& c : error_columns) text += fmt::format(" {} |", number(row.errors.*c.member));
+        text += " " + row.errors.note + " |\n";
+    }
+    if (study.seeds.size() > 1) text += seeds_table(result, study);
+    write_file_atomically(file, text);
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,31 @@
+// `frictionlab list`: every kind and type, with the library that provides it.
+#include <iostream>
+
+#include "command.hpp"
+#include "frictionlab/base/errors.hpp"
+#include "frictionlab/plugins/search.hpp"
+#include "type_selector.hpp"
+
+namespace frictionlab::cli {
+
+namespace {
+
+int list(const Invocation& in) {
+    Registry registry;
+    load_plugins(registry, in.global.directories({}), in.log);
+    for (const auto* t : all_types(registry))
+        std::cout << to_string(t->kind) << "/" << t->type << "  " << (t->library.empty() ? "built in" : t->library)
+                  << "\n";
+    return exit_code::ok;
+}
+
+Execute set_up(CLI::App& cmd, GlobalOptions& global) {
+    global.attach(cmd);
+    return list;
+}
+
+}  // namespace
+
+Command list_command() { return {"list", "List every kind and type, with the library that provides it", set_up}; }
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,22 @@
+#pragma once
+// The stable-step estimate `check` makes for a scene (stable_step_check.hpp), made for every run of
+// a campaign, each finding naming its run.
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../global_options.hpp"
+#include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/scene/scene.hpp"
+
+namespace frictionlab::cli {
+
+/// A sweep with a run above its stable step fails, so there it is an error (`as_errors`, into
+/// `diagnostics`); a study records such a run as a failed row by design, so there it is a warning,
+/// printed. Returns how many runs are above their stable step.
+std::size_t report_stable_steps(const std::vector<std::pair<std::string, const Scene*>>& runs, bool as_errors,
+                                const GlobalOptions& global, const Registry& registry, Diagnostics& diagnostics);
+
+}  // namespace frictionlab::cli
