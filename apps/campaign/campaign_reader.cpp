@@ -56,7 +56,7 @@ Section CampaignReader::read_top(const YAML::Node& root, const SectionKeys& keys
         campaign.scene = campaign.file.parent_path() / std::get<std::string>(top.values.at("scene"));
         campaign.scene_where = reporter_.where(scene->site());
     }
-    if (const auto seeds = given(top, "seeds"); seeds && top.values.contains("seeds")) {
+    if (const auto seeds = given(top, "seeds")) {
         campaign.seeds_where = reporter_.where(seeds->site());
         campaign.seeds = read_seeds(*seeds);
     }
@@ -105,19 +105,54 @@ std::optional<Entry> CampaignReader::given(const Section& section, const std::st
 }
 
 std::vector<std::int64_t> CampaignReader::read_seeds(const Entry& entry) const {
+    static const std::string expected =
+        "expected a list of whole numbers >= 0, a count N (seeds 1 to N) or a range FIRST..LAST";
+    // Above 2^53 a double no longer holds every whole number.
+    const auto whole = [](const std::string& text) -> std::optional<std::int64_t> {
+        static const std::regex digits("[0-9]{1,15}");
+        if (!std::regex_match(text, digits)) return std::nullopt;
+        return std::stoll(text);
+    };
     std::vector<std::int64_t> seeds;
-    for (std::size_t i = 0; i < entry.value.size(); ++i) {
-        const double seed = entry.value[i].as<double>();
-        // Above 2^53 a double no longer holds every whole number.
-        if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) {
-            reporter_.error(entry.value[i], index_path("seeds", i),
-                            "expected a whole number >= 0, got " + quote(entry.value[i].Scalar()));
+    const YAML::Node& value = entry.value;
+    if (value.IsScalar()) {
+        static const std::regex range("([0-9]{1,15})\\.\\.([0-9]{1,15})");
+        std::smatch m;
+        const std::string text = value.Scalar();
+        std::int64_t first = 1, last = 0;
+        if (const auto count = whole(text)) {
+            last = *count;
+        } else if (std::regex_match(text, m, range)) {
+            first = std::stoll(m[1]), last = std::stoll(m[2]);
+        } else {
+            reporter_.error(entry.site(), "seeds", expected + ", got " + quote(text));
+            return seeds;
+        }
+        if (last < first || last - first >= 100000) {
+            reporter_.error(entry.site(), "seeds", "expected from 1 to 100000 seeds, got " + quote(text));
+            return seeds;
+        }
+        for (std::int64_t s = first; s <= last; ++s) seeds.push_back(s);
+        return seeds;
+    }
+    if (!value.IsSequence()) {
+        reporter_.error(entry.site(), "seeds", expected + ", got " + describe(value));
+        return seeds;
+    }
+    if (value.size() == 0) {
+        reporter_.error(entry.site(), "seeds", "expected a non-empty list of seeds, got an empty list");
+        return seeds;
+    }
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const auto seed = value[i].IsScalar() ? whole(value[i].Scalar()) : std::nullopt;
+        if (!seed) {
+            reporter_.error(value[i], index_path("seeds", i),
+                            "expected a whole number >= 0, got " +
+                                quote(value[i].IsScalar() ? value[i].Scalar() : describe(value[i])));
             continue;
         }
-        seeds.push_back(static_cast<std::int64_t>(seed));
+        seeds.push_back(*seed);
     }
-    if (seeds.empty() && entry.value.size() == 0)
-        reporter_.error(entry.site(), "seeds", "expected a non-empty list of seeds, got an empty list");
     return seeds;
 }
 

@@ -11,7 +11,6 @@ struct Study {
     std::string title, scene;
     double observe_every = 1.0e-6;
     double profile_every = 1.0e-4;
-    std::vector<double> seeds;
 };
 
 struct StudyCase {
@@ -21,7 +20,6 @@ struct StudyCase {
 
 struct Sweep {
     std::string title, scene;
-    std::vector<double> seeds;
 };
 
 }  // namespace
@@ -43,17 +41,13 @@ const std::vector<ParamInfo>& study_params() {
               "stage's duration.")
             .unit("s")
             .greater_than(0);
-        s.add("seeds", &Study::seeds,
-              "Seeds every case, the reference too, runs with (whole numbers >= 0), each compared with the "
-              "reference of its seed: how far a case lands from the reference is then seen over several draws of "
-              "the junctions, not one. Absent: the base scene's seed only.");
         return s;
     }();
     return spec.params();
 }
 
 const std::vector<std::string>& study_sections() {
-    static const std::vector<std::string> keys = {"reference", "cases"};
+    static const std::vector<std::string> keys = {"seeds", "reference", "half_step", "cases"};
     return keys;
 }
 
@@ -83,15 +77,13 @@ const std::vector<ParamInfo>& sweep_params() {
         ParamSpec<Sweep> s;
         s.add("title", &Sweep::title, "A line describing the sweep, for its tables and figures.");
         s.add("scene", &Sweep::scene, "The base scene, relative to the sweep file's folder.").required();
-        s.add("seeds", &Sweep::seeds,
-              "Seeds each case runs with (whole numbers >= 0); absent: the base scene's seed only.");
         return s;
     }();
     return spec.params();
 }
 
 const std::vector<std::string>& sweep_sections() {
-    static const std::vector<std::string> keys = {"grid", "cases"};
+    static const std::vector<std::string> keys = {"seeds", "grid", "cases"};
     return keys;
 }
 

@@ -255,6 +255,11 @@ TEST_F(BadStudy, SeedsAreWholeNumbersAndDecideEveryCasesSeed) {
                        "case's seed"});
     expect_refused(study("scene: tiny_scene.yaml\nseeds: []\nreference: {set: []}\ncases: [{name: a}]\n"),
                    {"bad.yaml:2:8: error: seeds: expected a non-empty list of seeds, got an empty list"});
+    // A count N (seeds 1 to N) or a range FIRST..LAST, as the ensemble standard asks for.
+    for (const char* bad : {"0", "5..3", "1.5", "many", "{first: 1}"})
+        expect_refused(study(fmt::format(
+                           "scene: tiny_scene.yaml\nseeds: {}\nreference: {{set: []}}\ncases: [{{name: a}}]\n", bad)),
+                       {"bad.yaml:2:8: error: seeds: expected"});
 }
 
 TEST_F(BadStudy, ErrorsInACaseOverridePointIntoTheStudyFile) {

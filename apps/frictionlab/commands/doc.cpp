@@ -32,12 +32,20 @@ std::string campaign_doc(const std::string& which) {
                 "  " + p.key + (p.required ? " (required)" : "") + ": " + detail::expectation(p) + ". " + p.doc + "\n";
     };
     section("top-level keys", sweep ? detail::sweep_params() : detail::study_params());
+    out +=
+        "  seeds: a list of whole numbers >= 0, a count N (seeds 1 to N) or a range FIRST..LAST; every case runs "
+        "with each. A case's runs over the seeds are its ensemble: n, mean, sd and 95 % CI of each event statistic "
+        "(accuracy-standard.md). Absent: the base scene's seed only.\n";
     if (sweep) {
         out += "  grid: a mapping of key paths to lists of values; the cases take every combination.\n";
         out += "  cases: a list of cases, each times the whole grid.\n";
         section("keys of each listed case", detail::sweep_case_params());
     } else {
-        out += "  reference: the converged run.\n  cases: the cases compared with it.\n";
+        out += "  reference: the converged run.\n";
+        out +=
+            "  half_step: optional, the reference at half its step: over seeds, its difference from the reference "
+            "is the reference's own spread, which a case may differ by and still pass.\n";
+        out += "  cases: the cases compared with it.\n";
         section("keys of the reference", detail::study_case_params(true));
         section("keys of each case", detail::study_case_params(false));
     }

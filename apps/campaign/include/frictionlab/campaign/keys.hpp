@@ -10,14 +10,14 @@ namespace frictionlab::detail {
 
 /// An accuracy study's keys (study.hpp): title, scene, observe_every, profile_every.
 const std::vector<ParamInfo>& study_params();
-/// reference, cases: read by the study reader itself.
+/// seeds, reference, half_step, cases: read by the study reader itself.
 const std::vector<std::string>& study_sections();
 /// The keys of the reference (set) or of one case (name, family, set).
 const std::vector<ParamInfo>& study_case_params(bool reference);
 
 /// A sweep's keys (sweep.hpp): title, scene, seeds.
 const std::vector<ParamInfo>& sweep_params();
-/// grid, cases: read by the sweep reader itself.
+/// seeds, grid, cases: read by the sweep reader itself.
 const std::vector<std::string>& sweep_sections();
 /// The keys of one listed case of a sweep (name, set).
 const std::vector<ParamInfo>& sweep_case_params();

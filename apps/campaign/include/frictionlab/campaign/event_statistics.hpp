@@ -1,0 +1,34 @@
+#pragma once
+// The statistics of one run's rupture events that an ensemble over seeds is judged on
+// (share/docs/accuracy-standard.md), read back from the run's outputs: its precursors table and
+// summary, and its loading curve. A statistic the run does not reach (no global slip, a second
+// precursor that never came) is NaN, and an ensemble counts it apart.
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "frictionlab/campaign/case_outputs.hpp"
+
+namespace frictionlab {
+
+struct EventStatistic {
+    std::string name, unit, doc;
+};
+
+/// The statistics, in the order of EventStatistics::values.
+const std::vector<EventStatistic>& event_statistics();
+
+struct EventStatistics {
+    static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> values = std::vector<double>(event_statistics().size(), nan);
+    double& operator[](const std::string& name);
+    double at(const std::string& name) const;
+};
+
+/// From a run's `rupture` files and its loading curve (the loading_curve observer's table; absent:
+/// no drops), with `load_start` the time loading began, s.
+EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::filesystem::path& loading_curve,
+                                      double load_start);
+
+}  // namespace frictionlab

@@ -1,0 +1,104 @@
+// Ensemble statistics on fixed tables, against values worked out by hand (Student t quantiles from
+// tables), and the bootstrap against the distributions it must reproduce exactly.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "frictionlab/campaign/ensemble_statistics.hpp"
+#include "frictionlab/model/random.hpp"
+
+namespace frictionlab {
+namespace {
+
+TEST(EnsembleStatistics, MeanSdAndStudentTIntervalOfAFixedTable) {
+    const std::vector<double> v{1, 2, 3, 4, 5};
+    const EnsembleSummary s = summarize(v);
+    EXPECT_EQ(s.n, 5u);
+    EXPECT_EQ(s.missing, 0u);
+    EXPECT_DOUBLE_EQ(s.mean, 3.0);
+    EXPECT_NEAR(s.sd, std::sqrt(2.5), 1e-15);                     // sum of squares 10 over n - 1 = 4
+    EXPECT_NEAR(s.standard_error, std::sqrt(0.5), 1e-15);         // sd / sqrt(5)
+    EXPECT_NEAR(s.ci_low, 3 - 2.7764451 * std::sqrt(0.5), 1e-6);  // t(0.975, 4 dof) = 2.7764451
+    EXPECT_NEAR(s.ci_high, 3 + 2.7764451 * std::sqrt(0.5), 1e-6);
+}
+
+TEST(EnsembleStatistics, SeedsWithoutTheEventAreLeftOutAndCounted) {
+    const double nan = std::nan("");
+    const EnsembleSummary s = summarize(std::vector<double>{10, nan, 14, nan});
+    EXPECT_EQ(s.n, 2u);
+    EXPECT_EQ(s.missing, 2u);
+    EXPECT_DOUBLE_EQ(s.mean, 12.0);
+    EXPECT_NEAR(s.sd, std::sqrt(8.0), 1e-14);
+    EXPECT_NEAR(s.ci_high - s.mean, 12.706205 * 2.0, 1e-5);  // t(0.975, 1 dof) = 12.706205, se = 2
+    const EnsembleSummary one = summarize(std::vector<double>{7});
+    EXPECT_DOUBLE_EQ(one.mean, 7.0);
+    EXPECT_TRUE(std::isnan(one.sd));
+    EXPECT_TRUE(std::isnan(one.ci_low));
+    EXPECT_EQ(summarize(std::vector<double>{}).n, 0u);
+}
+
+TEST(EnsembleStatistics, DifferenceOfMeansWithTheCombinedStandardError) {
+    const std::vector<double> a{1, 2, 3, 4, 5}, b{2, 4, 6};
+    const MeanDifference d = difference_of_means(a, b, 1);
+    EXPECT_DOUBLE_EQ(d.value, -1.0);
+    EXPECT_NEAR(d.standard_error, std::sqrt(0.5 + 4.0 / 3.0), 1e-14);  // se_a^2 = 2.5/5, se_b^2 = 4/3
+    EXPECT_LT(d.ci_low, d.value);
+    EXPECT_GT(d.ci_high, d.value);
+}
+
+TEST(EnsembleStatistics, TheBootstrapIsKeyedBySeed) {
+    // Fifteen irregular values a side: the resampled means are nearly continuous, so another seed
+    // moves the percentiles.
+    std::vector<double> a, b;
+    for (int i = 0; i < 15; ++i)
+        a.push_back(0.4 + 0.01 * std::sin(1.3 * i)), b.push_back(0.41 + 0.01 * std::cos(0.7 * i));
+    const MeanDifference first = difference_of_means(a, b, 7), again = difference_of_means(a, b, 7);
+    EXPECT_EQ(first.ci_low, again.ci_low);
+    EXPECT_EQ(first.ci_high, again.ci_high);
+    const MeanDifference other = difference_of_means(a, b, 8);
+    EXPECT_NE(first.ci_low, other.ci_low);
+    EXPECT_NEAR(other.ci_low, first.ci_low, 0.1 * (first.ci_high - first.ci_low)) << "another draw, same spread";
+}
+
+TEST(EnsembleStatistics, TheBootstrapOfATwoPointEnsembleIsExact) {
+    // Resampled means of {0, 1} are 0, 1/2 or 1 with probabilities 1/4, 1/2, 1/4: both 2.5 % tails
+    // fall on the outer values, so the interval of mean({0, 1}) - mean({5, 5}) is [-5, -4].
+    const MeanDifference d = difference_of_means(std::vector<double>{0, 1}, std::vector<double>{5, 5}, 3);
+    EXPECT_DOUBLE_EQ(d.value, -4.5);
+    EXPECT_DOUBLE_EQ(d.ci_low, -5.0);
+    EXPECT_DOUBLE_EQ(d.ci_high, -4.0);
+    // Constant ensembles have no spread: the interval is the difference itself.
+    const MeanDifference c = difference_of_means(std::vector<double>{2, 2, 2}, std::vector<double>{1, 1}, 3);
+    EXPECT_DOUBLE_EQ(c.ci_low, 1.0);
+    EXPECT_DOUBLE_EQ(c.ci_high, 1.0);
+    EXPECT_DOUBLE_EQ(c.standard_error, 0.0);
+}
+
+TEST(EnsembleStatistics, TheBootstrapIntervalOfManyNormalDrawsIsTheNormalOne) {
+    // 400 + 400 keyed normal draws: the percentile interval is d +- 1.96 se to within its own noise.
+    std::vector<double> a, b;
+    const random::Key key{99, 0, 0, random::Purpose::user};
+    for (std::uint64_t k = 0; k < 400; ++k)
+        a.push_back(1.0 + random::normal(key, k)), b.push_back(random::normal(key, 1000 + k));
+    const MeanDifference d = difference_of_means(a, b, 5);
+    EXPECT_NEAR(d.ci_high - d.value, 1.959964 * d.standard_error, 0.1 * d.standard_error);
+    EXPECT_NEAR(d.value - d.ci_low, 1.959964 * d.standard_error, 0.1 * d.standard_error);
+}
+
+TEST(EnsembleStatistics, TwoSidedNormalP) {
+    EXPECT_NEAR(two_sided_p(2.0), 0.0455003, 1e-7);
+    EXPECT_NEAR(two_sided_p(-1.959964), 0.05, 1e-7);
+    EXPECT_DOUBLE_EQ(two_sided_p(0.0), 1.0);
+}
+
+TEST(EnsembleStatistics, HolmStepsDownAndStopsAtTheFirstKeptHypothesis) {
+    // Sorted: 0.005 <= 0.05/4, 0.01 <= 0.05/3, 0.03 > 0.05/2: stop; 0.04 is kept although <= 0.05.
+    const std::vector<double> p{0.01, 0.04, 0.03, 0.005, std::nan("")};
+    const std::vector<bool> rejected = holm_rejections(p, 0.05);
+    EXPECT_EQ(rejected, (std::vector<bool>{true, false, false, true, false}));
+    EXPECT_EQ(holm_rejections(std::vector<double>{0.04}, 0.05), std::vector<bool>{true}) << "one test: alpha itself";
+}
+
+}  // namespace
+}  // namespace frictionlab
