@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -41,12 +42,14 @@ std::string data_lines(const fs::path& file) {
     return out;
 }
 
-/// sweep.csv's rows, by case name, cells by column name (no cell of the tiny sweep is quoted).
-std::map<std::string, std::map<std::string, std::string>> sweep_rows(const fs::path& file) {
+using Row = std::map<std::string, std::string>;
+
+/// A campaign table's rows, cells by column name (no cell of the tiny sweep is quoted).
+std::vector<Row> table_rows(const fs::path& file) {
     std::ifstream in(file);
     std::string line;
     std::vector<std::string> header;
-    std::map<std::string, std::map<std::string, std::string>> rows;
+    std::vector<Row> rows;
     while (std::getline(in, line)) {
         if (line.empty() || line[0] == '#') continue;
         std::vector<std::string> cells;
@@ -57,9 +60,16 @@ std::map<std::string, std::map<std::string, std::string>> sweep_rows(const fs::p
             header = cells;
             continue;
         }
-        auto& row = rows[cells.at(0)];
+        auto& row = rows.emplace_back();
         for (std::size_t k = 0; k < header.size() && k < cells.size(); ++k) row[header[k]] = cells[k];
     }
+    return rows;
+}
+
+/// sweep.csv's rows, by case name.
+std::map<std::string, Row> sweep_rows(const fs::path& file) {
+    std::map<std::string, Row> rows;
+    for (auto& row : table_rows(file)) rows[row.at("case")] = std::move(row);
     return rows;
 }
 
@@ -105,9 +115,19 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
         EXPECT_EQ(data_lines(case_dir / "ruptures.csv"), data_lines(dir / "j2" / "cases" / name / "ruptures.csv"));
     }
     EXPECT_GT(all_events, 0u) << "the tiny sweep should see rupture events";
-    EXPECT_EQ(data_lines(dir / "j1" / "sweep.csv").size() > 0, true);
+    // Every table is one header line and its rows (pandas.read_csv reads it as is); what wrote it,
+    // the sweep's title and the columns' units are in its sidecar.
+    for (const char* table : {"sweep.csv", "events.csv"}) {
+        const std::string text = read_text(dir / "j1" / table);
+        EXPECT_EQ(text.rfind("case,loaders[2].velocity,", 0), 0u) << table << "\n" << text.substr(0, 200);
+        EXPECT_EQ(text.find("\n#"), std::string::npos) << table;
+        const std::string sidecar = read_text(dir / "j1" / (std::string(table) + ".meta.yaml"));
+        for (const char* line : {"sweep_file: tiny_sweep.yaml\n", "title: tiny sweep\n", "seeds: [1, 2]\n",
+                                 "  loaders[2].velocity: \"m/s\"\n"})
+            EXPECT_NE(sidecar.find(line), std::string::npos) << table << ": " << line << "\n" << sidecar;
+    }
     // events.csv: one row per event of every case.
-    const std::string events = data_lines(dir / "j1" / "events.csv");
+    const std::string events = read_text(dir / "j1" / "events.csv");
     EXPECT_EQ(static_cast<std::size_t>(std::count(events.begin(), events.end(), '\n')), all_events + 1);
 
     // A case is an ordinary run: `frictionlab run` with the same values writes the same events.

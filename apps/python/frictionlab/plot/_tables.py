@@ -38,8 +38,8 @@ def scene_of(run):
 
 
 def campaign_rows(directory, name):
-    """The rows of a campaign's table (sweep.csv, events.csv, study.csv) as dicts of strings, its
-    comment lines left out."""
+    """The rows of a campaign's table (sweep.csv, events.csv, study.csv) as dicts of strings; the
+    comment lines of tables written before the provenance moved to the sidecar are left out."""
     with open(os.path.join(directory, name), newline="") as f:
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
