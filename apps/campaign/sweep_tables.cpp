@@ -2,14 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "frictionlab/campaign/accuracy_standard.hpp"
 #include "frictionlab/campaign/campaign_table.hpp"
 #include "frictionlab/campaign/case_outputs.hpp"
 #include "frictionlab/campaign/csv_cell.hpp"
+#include "frictionlab/campaign/ensemble_statistics.hpp"
+#include "frictionlab/campaign/event_statistics.hpp"
 #include "frictionlab/campaign/key_unit.hpp"
 #include "frictionlab/output/csv_columns.hpp"
 
@@ -80,6 +84,30 @@ CaseEvents read_events(const CampaignRun& c) {
     return out;
 }
 
+/// sweep_statistics.csv's rows: for each case (a point of the grid), each event statistic over the
+/// seeds of its runs that finished.
+std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs,
+                            const std::vector<CaseRecord>& records, const std::vector<CampaignColumn>& values) {
+    std::vector<std::vector<EventStatistics>> ensembles(sweep.cases.size());
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (records.at(i).status != "done") continue;
+        if (auto s = run_event_statistics(runs[i].scene)) ensembles.at(runs[i].case_index).push_back(std::move(*s));
+    }
+    const auto& list = event_statistics();
+    std::string text;
+    for (std::size_t c = 0; c < sweep.cases.size(); ++c) {
+        const CampaignCase& point = sweep.cases[c];
+        const std::string cells =
+            csv_cell(point.name.empty() ? "base" : point.name) + value_cells(point.values, values);
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const EnsembleSummary e = summarize(column(ensembles[c], k));
+            text += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,
+                                number(e.mean), number(e.sd), number(e.ci_low), number(e.ci_high));
+        }
+    }
+    return text;
+}
+
 }  // namespace
 
 void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs,
@@ -128,6 +156,28 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
     }
     write_campaign_table(sweep, "sweep", output / "sweep.csv", columns, table, note);
     write_campaign_table(sweep, "sweep", output / "events.csv", events_columns, events, note);
+    if (sweep.seeds.empty()) return;
+    // Per case over its seeds, as a study's ensemble.csv describes an ensemble; mean, sd and the
+    // interval are in the unit each row names.
+    std::vector<CampaignColumn> point;  // the varied keys without the seed
+    std::copy_if(values.begin(), values.end(), std::back_inserter(point),
+                 [](const auto& v) { return v.name != "seed"; });
+    std::vector<CampaignColumn> statistics_columns{{"case", ""}};
+    statistics_columns.insert(statistics_columns.end(), point.begin(), point.end());
+    const std::string row_unit = "(unit column)";
+    statistics_columns.insert(statistics_columns.end(), {{"statistic", ""},
+                                                         {"unit", ""},
+                                                         {"n", "1"},
+                                                         {"missing", "1"},
+                                                         {"mean", row_unit},
+                                                         {"sd", row_unit},
+                                                         {"ci_low", row_unit},
+                                                         {"ci_high", row_unit}});
+    write_campaign_table(sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
+                         statistics_rows(sweep, runs, records, point),
+                         "per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "
+                         "finished: n that reach it, missing that do not, their mean, sample sd and Student-t 95 % "
+                         "interval of the mean");
 }
 
 }  // namespace frictionlab

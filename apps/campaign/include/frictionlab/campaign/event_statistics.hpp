@@ -5,6 +5,7 @@
 // precursor that never came) is NaN, and an ensemble counts it apart.
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,9 @@ struct EventStatistics {
 /// no drops), with `load_start` the time loading began, s.
 EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::filesystem::path& loading_curve,
                                       double load_start);
+
+/// The statistics of the run of `scene` from the files it wrote into its output directory, loading
+/// taken to begin with its last stage; nothing if the scene has no `precursors` observer.
+std::optional<EventStatistics> run_event_statistics(const Scene& scene);
 
 }  // namespace frictionlab
