@@ -34,6 +34,13 @@ public:
         study.families.emplace_back();
         if (const auto reference = given(top, "reference")) read_one(*reference, "reference", true, study);
         study.cases.front().name = "reference";
+        if (const auto half_step = given(top, "half_step")) {
+            study.cases.emplace_back();
+            study.families.emplace_back();
+            read_one(*half_step, "half_step", true, study);
+            study.cases.back().name = "half_step";
+            study.half_step = true;
+        }
         if (const auto cases = given(top, "cases"))
             read_cases(*cases, study);
         else
@@ -47,7 +54,7 @@ public:
 
 private:
     void read_cases(const Entry& list, Study& study) {
-        std::map<std::string, int> first_line{{"reference", 0}};
+        std::map<std::string, int> first_line{{"reference", 0}, {"half_step", 0}};
         const auto items = case_items(list);
         for (std::size_t i = 0; i < items.size(); ++i) {
             const std::string path = detail::index_path("cases", i);
@@ -79,10 +86,12 @@ private:
         if (!check_name_rule(c, path)) return;
         const auto [it, first] = first_line.emplace(c.name, c.where.line);
         if (first) return;
-        reporter_.error(c.where, detail::join_path(path, "name"),
-                        it->second == 0 ? std::string("'reference' names the reference run; choose another name")
-                                        : fmt::format("duplicate case name {}, first used at line {}",
-                                                      detail::quote(c.name), it->second));
+        reporter_.error(
+            c.where, detail::join_path(path, "name"),
+            it->second == 0
+                ? fmt::format("{} names the study's own {} run; choose another name", detail::quote(c.name),
+                              c.name == "reference" ? "reference" : "half-step")
+                : fmt::format("duplicate case name {}, first used at line {}", detail::quote(c.name), it->second));
     }
 };
 
@@ -104,8 +113,11 @@ std::vector<SceneOverride> study_observers(const Study& study, const Scene& scen
     precursors["stage"] = scene.stages.back().name;
     std::string detector = fmt::format("type: precursors, every: {}", detail::yaml_text(study.observe_every));
     for (const auto& [key, value] : precursors) detector += fmt::format(", {}: {}", key, detail::yaml_text(value));
-    const std::string observers = fmt::format("observers=[{{{}}}, {{type: interface_history, every: {}}}]", detector,
-                                              detail::yaml_text(study.profile_every));
+    // The loading curve for the drops of F_S through global slips: at the detection's cadence, but
+    // no finer than 10 us, so a long run's table stays small.
+    const std::string observers = fmt::format(
+        "observers=[{{{}}}, {{type: interface_history, every: {}}}, {{type: loading_curve, every: {}}}]", detector,
+        detail::yaml_text(study.profile_every), detail::yaml_text(std::max(study.observe_every, 1e-5)));
     return {{observers, study.scene_where}, {"output=" + detail::yaml_text(out.string()), study.scene_where}};
 }
 
@@ -168,14 +180,11 @@ void add_knobs(const Study& study, std::vector<CampaignRun>& runs) {
         }
 }
 
-}  // namespace
-
-Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics) {
-    return detail::read_campaign_file<Study, StudyReader>(file, "study", "scene, reference and cases", diagnostics);
-}
-
-std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::path& output, const Registry& registry,
-                                    Diagnostics& diagnostics) {
+/// Each of `planned` (a case and a seed) with its scene, observed as the study needs and writing
+/// below `output`, and its knobs.
+std::vector<CampaignRun> observed_runs(const Study& study, std::vector<CampaignRun> planned,
+                                       const std::filesystem::path& output, const Registry& registry,
+                                       Diagnostics& diagnostics) {
     std::vector<CampaignRun> runs;
     const auto base = base_scene(study, registry, diagnostics);
     if (!base) return runs;
@@ -183,7 +192,7 @@ std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::p
         diagnostics.error(study.scene_where, "scene", problem);
         return runs;
     }
-    for (CampaignRun run : study.runs()) {
+    for (CampaignRun& run : planned) {
         const CampaignCase& c = study.cases[run.case_index];
         const auto scene = run_scene(study, c, run.seed, {}, registry, diagnostics);
         if (!scene) continue;
@@ -200,6 +209,31 @@ std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::p
     }
     if (diagnostics.empty()) add_knobs(study, runs);
     return runs;
+}
+
+}  // namespace
+
+Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics) {
+    return detail::read_campaign_file<Study, StudyReader>(file, "study", "scene, reference and cases", diagnostics);
+}
+
+std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::path& output, const Registry& registry,
+                                    Diagnostics& diagnostics) {
+    return observed_runs(study, study.runs(), output, registry, diagnostics);
+}
+
+std::vector<CampaignRun> study_runs(const Study& study, const std::vector<std::size_t>& cases,
+                                    const std::vector<std::int64_t>& seeds, const std::filesystem::path& output,
+                                    const Registry& registry, Diagnostics& diagnostics) {
+    std::vector<CampaignRun> runs;
+    for (const std::size_t c : cases)
+        for (const std::int64_t seed : seeds) {
+            CampaignRun run;
+            run.case_index = c;
+            run.seed = seed;
+            runs.push_back(std::move(run));
+        }
+    return observed_runs(study, std::move(runs), output, registry, diagnostics);
 }
 
 }  // namespace frictionlab

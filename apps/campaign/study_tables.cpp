@@ -73,7 +73,77 @@ std::string seeds_table(const StudyResult& result, const Study& study) {
     return text;
 }
 
+/// One row of ensemble.csv per statistic of an ensemble: its summary, and for a case its
+/// difference to the reference with the judgement.
+std::string ensemble_rows(const StudyEnsemble& e) {
+    std::string text;
+    const auto& list = event_statistics();
+    const bool reference = e.case_index == 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const EnsembleSummary s = reference ? summarize(column(e.runs, i)) : e.judgement.statistics[i].summary;
+        const StatisticJudgement j = reference ? StatisticJudgement{} : e.judgement.statistics[i];
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},", e.name, csv_cell(e.family), e.ensemble, list[i].name,
+                            list[i].unit, s.n, s.missing, number(s.mean), number(s.sd), number(s.ci_low),
+                            number(s.ci_high));
+        text += fmt::format("{},{},{},{},{},{},{},{},{:.4g}\n", number(j.difference.value), number(j.difference.ci_low),
+                            number(j.difference.ci_high), number(j.difference.standard_error), number(j.halving_spread),
+                            number(j.tolerance), number(j.p), reference ? "reference" : to_string(j.verdict),
+                            e.cpu_seconds);
+    }
+    return text;
+}
+
+/// study.md's section on the ensembles: per case, its verdict and each statistic's difference.
+std::string ensembles_section(const StudyResult& result, const Study& study) {
+    std::string text = fmt::format(
+        "\n## Ensembles over the {} seeds\n\nEach case's mean against the reference's, statistic by statistic "
+        "(share/docs/accuracy-standard.md): the difference with its 95 % bootstrap interval, and the verdict "
+        "(pass: |difference| <= max(2 se, the reference's step-halving spread), the 2-se test corrected by Holm "
+        "over the case's statistics). A case that failed on the first seeds was run again on as many other "
+        "seeds (ensemble 2), and is rejected only for a statistic that fails on both.\n\n",
+        study.seeds.size());
+    text += "| case | ensemble | CPU per run (s) | verdict |";
+    const auto& list = event_statistics();
+    for (const auto& st : list) text += " " + st.name + " |";
+    text += "\n|";
+    for (std::size_t i = 0; i < 4 + list.size(); ++i) text += " --- |";
+    text += "\n";
+    for (const auto& e : result.ensembles) {
+        const bool reference = e.case_index == 0;
+        text += fmt::format("| {} | {} | {:.3g} | {} |", e.name, e.ensemble, e.cpu_seconds,
+                            reference ? "reference" : to_string(e.judgement.verdict()));
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            if (reference) {
+                const EnsembleSummary s = summarize(column(e.runs, i));
+                text += fmt::format(" {} ± {} (n {}) |", number(s.mean), number(s.sd), s.n);
+                continue;
+            }
+            const StatisticJudgement& j = e.judgement.statistics[i];
+            text += j.verdict == Verdict::not_judged
+                        ? " – |"
+                        : fmt::format(" {} [{}, {}] {} |", number(j.difference.value), number(j.difference.ci_low),
+                                      number(j.difference.ci_high), to_string(j.verdict));
+        }
+        text += "\n";
+    }
+    return text;
+}
+
 }  // namespace
+
+void write_ensemble_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
+    write_file_atomically(
+        table_sidecar_path(file),
+        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseeds: [{}]\nnote: "
+                    "each case's runs over the seeds judged against the reference's "
+                    "(share/docs/accuracy-standard.md); the columns are in share/docs/glossary.md\n",
+                    framework_version(), study.file.filename().string(), fmt::join(study.seeds, ", ")));
+    std::string text =
+        "case,family,ensemble,statistic,unit,n,missing,mean,sd,ci_low,ci_high,difference,difference_ci_low,"
+        "difference_ci_high,standard_error,halving_spread,tolerance,p,verdict,cpu_seconds\n";
+    for (const auto& e : result.ensembles) text += ensemble_rows(e);
+    write_file_atomically(file, text);
+}
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
     // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
@@ -126,6 +196,7 @@ void write_study_markdown(const StudyResult& result, const Study& study, const s
         text += " " + row.errors.note + " |\n";
     }
     if (study.seeds.size() > 1) text += seeds_table(result, study);
+    if (!result.ensembles.empty()) text += ensembles_section(result, study);
     write_file_atomically(file, text);
 }
 

@@ -143,6 +143,51 @@ const Row& row_at(const StudyTable& table, const std::string& name, const std::s
 // Over seeds, each case is compared with the reference of its own seed, not of the first: a case
 // run as the reference is has no error at any seed, and a coarser step's errors stay those of
 // the step, far below the difference between two seeds' runs.
+// The accuracy standard on ensembles (accuracy-standard.md) through the command: a case within the
+// reference's spread passes every statistic; another model fails, is run again on other seeds and
+// is rejected for the statistics that fail on both.
+TEST(Study, EnsemblesOverSeedsAreJudgedAndAFailingCaseIsRunAgainOnOtherSeeds) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    const auto result = frictionlab("study -q -j 2 " STUDY_FILES "/tiny_ensemble_study.yaml -o out", dir);
+    ASSERT_EQ(result.code, 0) << result.output;
+    const StudyTable table(dir / "out" / "ensemble.csv");
+    EXPECT_EQ(table.header().front(), "case") << "one header line, no comment: pandas reads it as it is";
+    const auto rows_of = [&](const std::string& name, const std::string& ensemble) {
+        std::vector<std::map<std::string, std::string>> out;
+        for (const auto& row : table.rows())
+            if (row.at("case") == name && row.at("ensemble") == ensemble) out.push_back(row);
+        return out;
+    };
+    const auto value = [&](const std::string& name, const std::string& ensemble, const std::string& statistic,
+                           const std::string& column) {
+        for (const auto& row : rows_of(name, ensemble))
+            if (row.at("statistic") == statistic) return row.at(column);
+        return std::string("missing");
+    };
+    ASSERT_EQ(rows_of("reference", "1").size(), 10u) << "one row per event statistic";
+    EXPECT_EQ(value("reference", "1", "global_slip_force_ratio", "n"), "3");
+    EXPECT_EQ(value("reference", "1", "global_slip_force_ratio", "verdict"), "reference");
+    for (const auto& row : rows_of("rk4_coarse", "1")) EXPECT_NE(row.at("verdict"), "fail") << row.at("statistic");
+    EXPECT_EQ(value("rk4_coarse", "1", "global_slip_force_ratio", "verdict"), "pass");
+    EXPECT_TRUE(rows_of("rk4_coarse", "2").empty()) << "a passing case is not run again";
+    // The 300 N slider slips globally at another F_S/F_N: fails, on both ensembles.
+    EXPECT_EQ(value("lighter", "1", "global_slip_force_ratio", "verdict"), "fail");
+    EXPECT_EQ(value("lighter", "2", "global_slip_force_ratio", "verdict"), "fail");
+    EXPECT_LT(std::stod(value("lighter", "1", "global_slip_force_ratio", "difference_ci_high")), 0);
+    EXPECT_EQ(rows_of("reference", "2").size(), 10u) << "the reference again, on the retest's seeds";
+    for (const char* seed : {"seed_4", "seed_5", "seed_6"}) {
+        EXPECT_TRUE(fs::exists(dir / "out" / "cases" / "lighter" / seed / "precursors.csv")) << seed;
+        EXPECT_TRUE(fs::exists(dir / "out" / "cases" / "reference" / seed / "precursors.csv")) << seed;
+        EXPECT_FALSE(fs::exists(dir / "out" / "cases" / "rk4_coarse" / seed)) << seed;
+    }
+    // The half-step case's difference is the spread every case may differ by.
+    EXPECT_EQ(value("rk4_coarse", "1", "global_slip_force_ratio", "halving_spread"),
+              value("half_step", "1", "global_slip_force_ratio", "halving_spread"));
+    const std::string md = read_text(dir / "out" / "study.md");
+    EXPECT_NE(md.find("## Ensembles over the 3 seeds"), std::string::npos);
+    EXPECT_NE(md.find("| lighter | 2 |"), std::string::npos);
+}
+
 TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
     const fs::path dir = frictionlab::testing::work_directory();
     const auto result = frictionlab("study -q -j 2 " STUDY_FILES "/tiny_seeds_study.yaml -o out", dir);

@@ -22,13 +22,18 @@ struct Study : Campaign {
     /// Of each case, the reference's first: the curve of the work-precision plot it belongs to
     /// (empty: its integrator type).
     std::vector<std::string> families;
+    /// Whether case 1 is the reference at half its step (`half_step:`): over seeds, its difference
+    /// from the reference is the reference's own spread (accuracy_standard.hpp).
+    bool half_step = false;
+    /// Whether the runs over the seeds are judged as ensembles (two seeds or more).
+    bool ensembles() const { return seeds.size() >= 2; }
 
     /// The case's name, with the seed where the study has seeds: "hybrid (seed 2)".
     std::string label(const CampaignRun& run) const;
 };
 
 /// The study's own keys, with file:line:column errors; the base scene is not read yet. Its first
-/// case is the reference, named "reference".
+/// case is the reference, named "reference", then the reference at half its step, "half_step", if given.
 Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics);
 
 /// Every run, the reference's first (one per seed): the base scene with the case's overrides and
@@ -38,5 +43,11 @@ Study read_study(const std::filesystem::path& file, Diagnostics& diagnostics);
 /// the seed, then every key path the cases set, "" where a run's scene has no such key.
 std::vector<CampaignRun> study_runs(const Study& study, const std::filesystem::path& output, const Registry& registry,
                                     Diagnostics& diagnostics);
+
+/// The same for the given cases (indices into `cases`) with the given seeds only: an ensemble run
+/// again on other seeds (accuracy_standard.hpp).
+std::vector<CampaignRun> study_runs(const Study& study, const std::vector<std::size_t>& cases,
+                                    const std::vector<std::int64_t>& seeds, const std::filesystem::path& output,
+                                    const Registry& registry, Diagnostics& diagnostics);
 
 }  // namespace frictionlab

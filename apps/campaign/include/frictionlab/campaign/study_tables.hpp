@@ -11,5 +11,8 @@ namespace frictionlab {
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);
 /// study.md: the same as a Markdown table, with the reference's values.
 void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file);
+/// ensemble.csv (with two seeds or more): per case, ensemble and event statistic, the ensemble's n,
+/// mean, sd and interval, the difference to the reference with its interval and the verdict.
+void write_ensemble_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);
 
 }  // namespace frictionlab
