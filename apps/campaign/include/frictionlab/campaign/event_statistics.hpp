@@ -32,8 +32,11 @@ struct EventStatistics {
 EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::filesystem::path& loading_curve,
                                       double load_start);
 
-/// The statistics of the run of `scene` from the files it wrote into its output directory, loading
-/// taken to begin with its last stage; nothing if the scene has no `precursors` observer.
+/// When loading begins in a run of `scene`: the start of its last stage, s.
+double load_start(const Scene& scene);
+
+/// The statistics of the run of `scene` from the files it wrote into its output directory (its
+/// loading curve: loading_curve.csv); nothing if the scene has no `precursors` observer.
 std::optional<EventStatistics> run_event_statistics(const Scene& scene);
 
 }  // namespace frictionlab
