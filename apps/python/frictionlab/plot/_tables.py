@@ -51,6 +51,16 @@ def sidecar_text(directory, name):
     return open(path).read() if os.path.exists(path) else ""
 
 
+def campaign_meta(directory, name):
+    """The provenance a campaign recorded beside its table `name` (NAME.meta.yaml) as a dict:
+    title, seeds, units, ...; empty if there is none."""
+    try:
+        import yaml
+        return yaml.safe_load(sidecar_text(directory, name)) or {}
+    except Exception:  # noqa: BLE001 - a figure without its units is still a figure
+        return {}
+
+
 def number(text):
     """A campaign table's cell as a number; NaN for an empty or text cell."""
     try:
