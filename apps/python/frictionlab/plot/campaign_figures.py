@@ -187,7 +187,7 @@ def sweep_loading_curves(sweep, ax=None):
     if ax.lines:
         ax.legend(fontsize=8)
     else:
-        no_data(ax, "no case has a loading_curve table: the sweep's scene has no loading_curve observer")
+        no_data(ax, "no case has a loading_curve table:\nthe sweep's scene has no loading_curve observer")
     ax.set_title(f"{sweep_title(sweep)}: the loading curves of its cases", fontsize=10)
     return ax
 
