@@ -10,6 +10,17 @@
 
 namespace frictionlab {
 
+std::vector<CampaignColumn> statistic_summary_columns() {
+    return {{"statistic", ""},
+            {"unit", ""},
+            {"n", "1"},
+            {"missing", "1"},
+            {"mean", unit_of_row},
+            {"sd", unit_of_row},
+            {"ci_low", unit_of_row},
+            {"ci_high", unit_of_row}};
+}
+
 void write_campaign_table(const Campaign& campaign, const std::string& kind, const std::filesystem::path& file,
                           const std::vector<CampaignColumn>& columns, const std::string& rows,
                           const std::string& note) {

@@ -164,15 +164,7 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
                  [](const auto& v) { return v.name != "seed"; });
     std::vector<CampaignColumn> statistics_columns{{"case", ""}};
     statistics_columns.insert(statistics_columns.end(), point.begin(), point.end());
-    const std::string row_unit = "(unit column)";
-    statistics_columns.insert(statistics_columns.end(), {{"statistic", ""},
-                                                         {"unit", ""},
-                                                         {"n", "1"},
-                                                         {"missing", "1"},
-                                                         {"mean", row_unit},
-                                                         {"sd", row_unit},
-                                                         {"ci_low", row_unit},
-                                                         {"ci_high", row_unit}});
+    for (auto c : statistic_summary_columns()) statistics_columns.push_back(std::move(c));
     write_campaign_table(sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
                          statistics_rows(sweep, runs, records, point),
                          "per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "

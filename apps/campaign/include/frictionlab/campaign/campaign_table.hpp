@@ -13,8 +13,16 @@ namespace frictionlab {
 
 struct CampaignColumn {
     std::string name;
-    std::string unit;  // SI, "1" for a pure number, empty for text
+    std::string unit;  // SI, "1" for a pure number, empty for text, or unit_of_row
 };
+
+/// The unit of a column whose rows each name their unit in the column `unit` (a statistic's mean).
+inline constexpr const char* unit_of_row = "(unit column)";
+
+/// The columns that summarize an event statistic over an ensemble, as a sweep's
+/// sweep_statistics.csv and a study's ensemble.csv give them: statistic, unit, n, missing, mean,
+/// sd, ci_low, ci_high (ensemble_statistics.hpp).
+std::vector<CampaignColumn> statistic_summary_columns();
 
 /// Writes `rows` (CSV lines, each ending in a newline) under the header of `columns` into `file`,
 /// and its sidecar, each atomically. `kind` names the campaign file's key in the sidecar
