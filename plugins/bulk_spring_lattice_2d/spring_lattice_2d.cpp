@@ -17,14 +17,24 @@ ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
     ParamSpec<Params> s(
         "Square spring-block lattice with diagonal springs (Li et al. 2020, Eqs. 1, 2, 6): straight "
         "springs K = 3BE/4, diagonals K/2 (Poisson's ratio 1/3), equal masses M/N, dashpots "
-        "eta = sqrt(c K m) on every bond. doi:10.1007/s10409-020-00955-2");
-    add_slider_params(s, "K = 3BE/4 (straight) and K/2 (diagonal)");
+        "eta = sqrt(c K m) on every bond; a lattice finer or coarser than reference_spacing resolves the same "
+        "continuum. doi:10.1007/s10409-020-00955-2");
+    add_slider_params(s, "K = 3BE/4 (straight) and K/2 (diagonal)",
+                      "shared equally by all nodes at reference_spacing (at another spacing the nodes keep that "
+                      "lattice's density)");
     s.add("nx", &Params::nx, "Number of node columns along x.").unit("1").at_least(2);
     s.add("nz", &Params::nz, "Number of node rows along z; L/(nx-1) must equal H/(nz-1).").unit("1").at_least(2);
     s.add("damping_factor", &Params::damping_factor,
-          "Factor c in the bond dashpot eta = sqrt(c K m) (0.5 in Li2020, 0.1 in Tromborg 2014); 0 switches "
-          "bond damping off.")
+          "Factor c in the bond dashpot eta = sqrt(c K m) (0.5 in Li2020, 0.1 in Tromborg 2014), m the node mass at "
+          "reference_spacing; 0 switches bond damping off.")
         .unit("1")
+        .at_least(0);
+    s.add("reference_spacing", &Params::reference_spacing,
+          "Spacing at which the node mass and the bond dashpot take the per-block values M/(nx nz) and "
+          "sqrt(c K m) (the paper's 41 x 9 slider); at another spacing the lattice keeps their density and "
+          "viscosity, so that a finer lattice resolves the same continuum (theory.md 1a). 0: the per-block values "
+          "at every spacing, as Li2020 prints them.")
+        .unit("m")
         .at_least(0);
     s.choice("damping_mode", &Params::damping_mode,
              {{"full_vector", BondDamping::Mode::full_vector}, {"bond_projected", BondDamping::Mode::bond_projected}},
@@ -53,6 +63,17 @@ std::string SpringLattice2d::spacing_mismatch(const Params& p) {
                        along_x, along_z);
 }
 
+SpringLattice2d::NodeScales SpringLattice2d::node_scales(const Params& p) {
+    const double spacing = p.length / (p.nx - 1), reference = p.reference_spacing;
+    const double per_block = p.mass / (static_cast<double>(p.nx) * p.nz);
+    // At the reference spacing (to the square-cell check's tolerance) exactly the per-block values.
+    if (reference <= 0 || std::abs(spacing - reference) <= 1e-9 * reference) return {per_block, per_block};
+    const double reference_nodes = (p.length / reference + 1) * (p.height / reference + 1);
+    const double reference_mass = p.mass / reference_nodes;
+    const double ratio = spacing / reference;
+    return {reference_mass * ratio * ratio, reference_mass};
+}
+
 SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)
     : law_(spec().checked(p).springs), damping_mode_(p.damping_mode) {
     grid_ = {p.nx, p.nz, p.length / (p.nx - 1)};
@@ -64,13 +85,14 @@ SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)
             body_.x0(grid_.node(ix, iz)) = ix * grid_.spacing;
             body_.z0(grid_.node(ix, iz)) = iz * grid_.spacing;
         }
-    body_.mass = Eigen::ArrayXd::Constant(n, p.mass / n);
+    const NodeScales scales = node_scales(p);
+    body_.mass = Eigen::ArrayXd::Constant(n, scales.mass);
     body_.length = p.length;
     body_.height = p.height;
     body_.width = p.width;
     body_.spacing = grid_.spacing;
     body_.bond_stiffness = 0.75 * p.width * p.youngs_modulus;
-    eta_ = std::sqrt(p.damping_factor * body_.bond_stiffness * node_mass());
+    eta_ = std::sqrt(p.damping_factor * body_.bond_stiffness * scales.damping_mass);
     build_node_sets();
     build_connectivity();
     ctx.log.debug("{}: {}x{} lattice, l_s = {:.4g} m, m = {:.4g} kg, K = {:.4g} N/m, eta = {:.4g} N s/m", ctx.name,

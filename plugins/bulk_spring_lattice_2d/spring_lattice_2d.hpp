@@ -17,9 +17,16 @@ namespace frictionlab {
 /// nodes are not lightened, theory.md B.20) with spacing l_s = L/(nx-1) = H/(nz-1), joined by
 /// central springs to their 4 nearest neighbours (stiffness K = 3BE/4, rest length l_s) and to their
 /// 4 next-nearest neighbours (K/2, sqrt(2) l_s), plus a dashpot eta = sqrt(c K m) on every bond
-/// (Li2020 Eqs. 1, 2, 6). The springs give plane-stress constants C11 = 9E/8, C12 = C44 = 3E/8,
-/// i.e. Young's modulus E and Poisson's ratio exactly 1/3 (theory.md A.2); long-wave speeds
-/// c_L = sqrt(9E/8 rho), c_S = sqrt(3E/8 rho) with the lattice density rho = m/(l_s^2 B).
+/// (Li2020 Eqs. 1, 2, 6).
+///
+/// The lattice size is a resolution (theory.md §1a): m and eta take these values at
+/// reference_spacing l_ref (the paper's 41 x 9). At another spacing the lattice keeps their density
+/// and viscosity, m = m_ref (l_s/l_ref)^2 and eta = sqrt(c K m_ref), with m_ref = M/n_ref and
+/// n_ref = (L/l_ref + 1)(H/l_ref + 1) the reference lattice's nodes; K = 3BE/4 is the same at any
+/// spacing. reference_spacing 0 keeps the per-block values at every spacing, as Li2020 prints them. The springs give
+/// plane-stress constants C11 = 9E/8, C12 = C44 = 3E/8, i.e. Young's modulus E and Poisson's ratio exactly 1/3
+/// (theory.md A.2); long-wave speeds c_L = sqrt(9E/8 rho), c_S = sqrt(3E/8 rho) with the lattice density rho = m/(l_s^2
+/// B).
 ///
 /// Two consequences of not halving boundary masses and springs: rho is M/(LHB) times
 /// (nx-1)(nz-1)/(nx nz) (0.867 for 41x9, so wave speeds are 7.4 % above those of M/(LHB):
@@ -37,7 +44,8 @@ public:
     struct Params : SliderParams {
         int nx = 41;
         int nz = 9;
-        double damping_factor = 0.5;  // c in eta = sqrt(c K m)
+        double damping_factor = 0.5;        // c in eta = sqrt(c K m)
+        double reference_spacing = 2.5e-3;  // l_ref, m; 0: per-block m and eta at every spacing
         BondDamping::Mode damping_mode = BondDamping::Mode::full_vector;
         LatticeSprings::Law springs = LatticeSprings::Law::geometric;
     };
@@ -47,6 +55,14 @@ public:
     static std::string spacing_mismatch(const Params& p);
     /// Why the lattice is too large to build (with the memory it would take), or "".
     static std::string too_large(const Params& p);
+
+    /// Node mass m and bond dashpot eta of a lattice (see the class comment), eta before c is applied:
+    /// sqrt(K m_ref).
+    struct NodeScales {
+        double mass = 0;
+        double damping_mass = 0;  // m_ref: the mass in eta = sqrt(c K m_ref)
+    };
+    static NodeScales node_scales(const Params& p);
 
     SpringLattice2d(const Params& p, const Context& ctx);
 

@@ -84,14 +84,15 @@ TEST(SpringLattice2d, NonSquareCellsAreRejectedWithBothSpacings) {
 
 TEST(SpringLattice2d, SpecDeclaresEveryKeyWithDocAndDefaults) {
     const auto spec = SpringLattice2d::spec();
-    const std::vector<std::string> keys{"length", "height", "width",          "mass",         "youngs_modulus",
-                                        "nx",     "nz",     "damping_factor", "damping_mode", "springs"};
+    const std::vector<std::string> keys{
+        "length",       "height", "width", "mass", "youngs_modulus", "nx", "nz", "damping_factor", "reference_spacing",
+        "damping_mode", "springs"};
     ASSERT_EQ(spec.params().size(), keys.size());
     for (std::size_t i = 0; i < keys.size(); ++i) {
         EXPECT_EQ(spec.params()[i].key, keys[i]);
         EXPECT_FALSE(spec.params()[i].doc.empty()) << keys[i];
     }
-    EXPECT_EQ(spec.params()[9].choices, (std::vector<std::string>{"geometric", "small_strain"}));
+    EXPECT_EQ(spec.params()[10].choices, (std::vector<std::string>{"geometric", "small_strain"}));
     const auto rules = spec.erased_rules();  // by value: a reference into the temporary would dangle
     ASSERT_EQ(rules.size(), 2u);
     EXPECT_FALSE(rules[0].check({{"nz", std::int64_t{10}}}).empty());

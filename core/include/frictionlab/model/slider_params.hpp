@@ -18,16 +18,18 @@ struct SliderParams {
 };
 
 /// Declares the SliderParams keys on the spec of a Params derived from it; `springs` says how the
-/// model's spring stiffness follows from them (e.g. "K = 3BE/4"), for the docs.
+/// model's spring stiffness follows from them (e.g. "K = 3BE/4"), and `masses` how the nodes share
+/// the mass, for the docs.
 template <class P>
-void add_slider_params(ParamSpec<P>& s, const std::string& springs) {
+void add_slider_params(ParamSpec<P>& s, const std::string& springs,
+                       const std::string& masses = "shared equally by all nodes") {
     const auto key = [&](const char* name, double SliderParams::*member, const std::string& doc, const char* unit) {
         s.template add<double>(name, static_cast<double P::*>(member), doc).unit(unit).greater_than(0);
     };
     key("length", &SliderParams::length, "Slider length L along x, the sliding direction.", "m");
     key("height", &SliderParams::height, "Slider height H along z, normal to the interface.", "m");
     key("width", &SliderParams::width, "Slider width B along y (out of plane).", "m");
-    key("mass", &SliderParams::mass, "Total mass M of the slider, shared equally by all nodes.", "kg");
+    key("mass", &SliderParams::mass, "Total mass M of the slider, " + masses + ".", "kg");
     key("youngs_modulus", &SliderParams::youngs_modulus,
         "Young's modulus E of the slider material; the springs are " + springs + ".", "Pa");
 }
