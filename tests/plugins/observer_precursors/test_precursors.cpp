@@ -147,11 +147,11 @@ protected:
 
 TEST_F(PrecursorsTest, ThePinnedFractionCriterionDeclaresTheJunctionCountsItNeeds) {
     // Declared when built, so that a scene without a law that publishes them is refused at
-    // assembly, at this observer (Simulation::build_observers), not when the run starts.
+    // assembly, at this observer (the Simulation builds it), not when the run starts.
     make();
     const auto unpublished = quantities_.unpublished_fields();
     ASSERT_EQ(unpublished.size(), 3u);
-    for (const auto& u : unpublished) EXPECT_EQ(u.reader, "observers[0]") << u.name;
+    for (const auto& u : unpublished) EXPECT_EQ(u.reader.component, "observers[0]") << u.name;
 }
 
 TEST_F(PrecursorsTest, TheSlipCriterionNeedsNoJunctionCounts) {
