@@ -104,4 +104,16 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
     return s;
 }
 
+double load_start(const Scene& scene) {
+    double t = 0;
+    for (std::size_t i = 0; i + 1 < scene.stages.size(); ++i) t += scene.stages[i].duration;
+    return t;
+}
+
+std::optional<EventStatistics> run_event_statistics(const Scene& scene) {
+    const auto files = rupture_files(scene);
+    if (!files) return std::nullopt;
+    return read_event_statistics(*files, scene.output_directory / "loading_curve.csv", load_start(scene));
+}
+
 }  // namespace frictionlab

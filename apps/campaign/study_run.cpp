@@ -12,12 +12,6 @@ namespace frictionlab {
 
 namespace {
 
-double load_start(const Scene& scene) {
-    double t = 0;
-    for (std::size_t i = 0; i + 1 < scene.stages.size(); ++i) t += scene.stages[i].duration;
-    return t;
-}
-
 /// Runs the study's `runs`; stops the study if asked to.
 std::vector<CaseRecord> run_all(const std::vector<CampaignRun>& runs, const std::filesystem::path& output,
                                 const Registry& registry, spdlog::logger& log, const CampaignOptions& options) {
@@ -45,11 +39,11 @@ std::vector<StudyEnsemble> ensembles_of(const Study& study, const std::vector<Ca
             e.ensemble = ensemble;
             out.push_back(std::move(e));
         }
-        const auto files = rupture_files(run.scene);
-        if (records[k].status != "done" || !files) continue;
+        if (records[k].status != "done") continue;
+        auto statistics = run_event_statistics(run.scene);
+        if (!statistics) continue;
         StudyEnsemble& e = out.back();
-        e.runs.push_back(
-            read_event_statistics(*files, run.scene.output_directory / "loading_curve.csv", load_start(run.scene)));
+        e.runs.push_back(std::move(*statistics));
         e.cpu_seconds += records[k].summary.cpu_seconds;
     }
     for (auto& e : out) e.cpu_seconds /= std::max<std::size_t>(1, e.runs.size());

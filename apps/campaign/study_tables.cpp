@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/version.hpp"
+#include "frictionlab/campaign/campaign_table.hpp"
 #include "frictionlab/campaign/csv_cell.hpp"
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/provenance.hpp"
@@ -132,17 +133,23 @@ std::string ensembles_section(const StudyResult& result, const Study& study) {
 }  // namespace
 
 void write_ensemble_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
-    write_file_atomically(
-        table_sidecar_path(file),
-        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\nseeds: [{}]\nnote: "
-                    "each case's runs over the seeds judged against the reference's "
-                    "(share/docs/accuracy-standard.md); the columns are in share/docs/glossary.md\n",
-                    framework_version(), study.file.filename().string(), fmt::join(study.seeds, ", ")));
-    std::string text =
-        "case,family,ensemble,statistic,unit,n,missing,mean,sd,ci_low,ci_high,difference,difference_ci_low,"
-        "difference_ci_high,standard_error,halving_spread,tolerance,p,verdict,cpu_seconds\n";
-    for (const auto& e : result.ensembles) text += ensemble_rows(e);
-    write_file_atomically(file, text);
+    std::vector<CampaignColumn> columns{{"case", ""}, {"family", ""}, {"ensemble", "1"}};
+    for (auto c : statistic_summary_columns()) columns.push_back(std::move(c));
+    const std::string as_row = unit_of_row;
+    columns.insert(columns.end(), {{"difference", as_row},
+                                   {"difference_ci_low", as_row},
+                                   {"difference_ci_high", as_row},
+                                   {"standard_error", as_row},
+                                   {"halving_spread", as_row},
+                                   {"tolerance", as_row},
+                                   {"p", "1"},
+                                   {"verdict", ""},
+                                   {"cpu_seconds", "s"}});
+    std::string rows;
+    for (const auto& e : result.ensembles) rows += ensemble_rows(e);
+    write_campaign_table(study, "study", file, columns, rows,
+                         "each case's runs over the seeds judged against the reference's "
+                         "(share/docs/accuracy-standard.md); the columns are in share/docs/glossary.md");
 }
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {

@@ -21,7 +21,7 @@ std::vector<CaseRecord> run_sweep(const Sweep& sweep, const std::vector<Campaign
         log.info("sweep {}: {} cases, {} at a time{}", sweep.file.filename().string(), runs.size(), options.jobs,
                  mpi_size() > 1 ? fmt::format(" on rank 0 and one on each of {} other ranks", mpi_size() - 1) : "");
     const auto records = run_campaign(runs, output, registry, log, options);
-    if (root) write_sweep_tables(sweep, runs, records, output);
+    if (root) write_sweep_tables(sweep, runs, records, registry, output);
     return records;
 }
 

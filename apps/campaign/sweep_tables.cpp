@@ -2,24 +2,50 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "frictionlab/campaign/accuracy_standard.hpp"
+#include "frictionlab/campaign/campaign_table.hpp"
 #include "frictionlab/campaign/case_outputs.hpp"
 #include "frictionlab/campaign/csv_cell.hpp"
+#include "frictionlab/campaign/ensemble_statistics.hpp"
+#include "frictionlab/campaign/event_statistics.hpp"
+#include "frictionlab/campaign/key_unit.hpp"
 #include "frictionlab/output/csv_columns.hpp"
-#include "frictionlab/base/errors.hpp"
-#include "frictionlab/output/atomic_file.hpp"
 
 namespace frictionlab {
 
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+const char* const note = "each run's run.yaml in cases/<case>/ records its resolved scene and plugins";
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.10g}", v); }
+
+/// What sets the runs apart (the varied key paths, then `seed`), in order of first use, with units.
+std::vector<CampaignColumn> value_columns(const std::vector<CampaignRun>& runs, const Registry& registry) {
+    std::vector<CampaignColumn> columns;
+    for (const auto& run : runs)
+        for (const auto& [key, value] : run.values)
+            if (std::none_of(columns.begin(), columns.end(), [&](const auto& c) { return c.name == key; }))
+                columns.push_back({key, key_unit(run.scene, registry, key)});
+    return columns;
+}
+
+/// The run's value of each column, as the sweep file writes it; empty where it has none.
+std::string value_cells(const CampaignValues& values, const std::vector<CampaignColumn>& columns) {
+    std::string text;
+    for (const auto& column : columns) {
+        const auto it =
+            std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == column.name; });
+        text += fmt::format(",{}", csv_cell(it == values.end() ? std::string() : it->second));
+    }
+    return text;
+}
 
 /// What a case's rupture outputs say: its events and the figures of its row.
 struct CaseEvents {
@@ -58,54 +84,92 @@ CaseEvents read_events(const CampaignRun& c) {
     return out;
 }
 
+/// sweep_statistics.csv's rows: for each case (a point of the grid), each event statistic over the
+/// seeds of its runs that finished.
+std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs,
+                            const std::vector<CaseRecord>& records, const std::vector<CampaignColumn>& values) {
+    std::vector<std::vector<EventStatistics>> ensembles(sweep.cases.size());
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (records.at(i).status != "done") continue;
+        if (auto s = run_event_statistics(runs[i].scene)) ensembles.at(runs[i].case_index).push_back(std::move(*s));
+    }
+    const auto& list = event_statistics();
+    std::string text;
+    for (std::size_t c = 0; c < sweep.cases.size(); ++c) {
+        const CampaignCase& point = sweep.cases[c];
+        const std::string cells =
+            csv_cell(point.name.empty() ? "base" : point.name) + value_cells(point.values, values);
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const EnsembleSummary e = summarize(column(ensembles[c], k));
+            text += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,
+                                number(e.mean), number(e.sd), number(e.ci_low), number(e.ci_high));
+        }
+    }
+    return text;
+}
+
 }  // namespace
 
 void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs,
-                        const std::vector<CaseRecord>& records, const std::filesystem::path& output) {
-    std::vector<std::string> columns;  // the varied values, in order of first use
-    for (const auto& c : runs)
-        for (const auto& [key, value] : c.values)
-            if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
-    const auto values_of = [&](const CampaignRun& c) {
-        std::string text;
-        for (const auto& key : columns) {
-            const auto it =
-                std::find_if(c.values.begin(), c.values.end(), [&](const auto& v) { return v.first == key; });
-            text += fmt::format(",{}", csv_cell(it == c.values.end() ? std::string() : it->second));
-        }
-        return text;
-    };
-    std::string header = "case";
-    // fmt, not "," + a temporary string: GCC 12 reports a false -Wrestrict on that.
-    for (const auto& key : columns) header += fmt::format(",{}", csv_cell(key));
+                        const std::vector<CaseRecord>& records, const Registry& registry,
+                        const std::filesystem::path& output) {
+    const std::vector<CampaignColumn> values = value_columns(runs, registry);
+    std::vector<CampaignColumn> columns{{"case", ""}};
+    columns.insert(columns.end(), values.begin(), values.end());
+    std::vector<CampaignColumn> events_columns = columns;
+    events_columns.insert(events_columns.end(), {{"event", "1"},
+                                                 {"t_start", "s"},
+                                                 {"t_end", "s"},
+                                                 {"force_ratio", "1"},
+                                                 {"extent_over_length", "1"},
+                                                 {"kind", ""}});
+    columns.insert(columns.end(), {{"status", ""},
+                                   {"reason", ""},
+                                   {"scene_hash", ""},
+                                   {"global_static_coefficient", "1"},
+                                   {"events", "1"},
+                                   {"precursor_count", "1"},
+                                   {"first_precursor_force_ratio", "1"},
+                                   {"steps", "1"},
+                                   {"wall_seconds", "s"},
+                                   {"cpu_seconds", "s"}});
 
-    const std::string comment =
-        fmt::format("# frictionlab sweep {}{}: each case's run.yaml in cases/ records its resolved scene\n",
-                    sweep.file.filename().string(), sweep.title.empty() ? "" : " (" + sweep.title + ")");
-    std::string table = comment + header +
-                        ",status,reason,scene_hash,global_static_coefficient,events,precursor_count,"
-                        "first_precursor_force_ratio,steps,wall_seconds,cpu_seconds\n";
-    std::string events = comment + header + ",event,t_start,t_end,force_ratio,extent_over_length,kind\n";
+    std::string table, events;
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const auto& c = runs[i];
         const auto& r = records.at(i);
         const CaseEvents e = r.status == "done" ? read_events(c) : CaseEvents{};
-        table += fmt::format("{}{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", c.name, values_of(c), r.status,
-                             csv_cell(r.reason), r.scene_hash, number(e.global_static_coefficient), e.count,
-                             e.precursors, number(e.first_precursor_ratio), r.summary.steps, r.summary.wall_seconds,
-                             r.summary.cpu_seconds);
+        const std::string cells = csv_cell(c.name) + value_cells(c.values, values);
+        table +=
+            fmt::format("{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", cells, r.status, csv_cell(r.reason), r.scene_hash,
+                        number(e.global_static_coefficient), e.count, e.precursors, number(e.first_precursor_ratio),
+                        r.summary.steps, r.summary.wall_seconds, r.summary.cpu_seconds);
         auto column = [&](const char* name, std::size_t k) {
             const auto it = e.events.find(name);
             return it == e.events.end() || k >= it->second.size() ? nan : it->second[k];
         };
         for (std::size_t k = 0; k < e.count; ++k)
-            events += fmt::format("{}{},{},{},{},{},{},{}\n", c.name, values_of(c), number(column("event", k)),
+            events += fmt::format("{},{},{},{},{},{},{}\n", cells, number(column("event", k)),
                                   number(column("t_start", k)), number(column("t_end", k)),
                                   number(column("force_ratio", k)), number(column("extent_over_length", k)),
                                   column("global", k) > 0.5 ? "global" : "precursor");
     }
-    write_file_atomically(output / "sweep.csv", table);
-    write_file_atomically(output / "events.csv", events);
+    write_campaign_table(sweep, "sweep", output / "sweep.csv", columns, table, note);
+    write_campaign_table(sweep, "sweep", output / "events.csv", events_columns, events, note);
+    if (sweep.seeds.empty()) return;
+    // Per case over its seeds, as a study's ensemble.csv describes an ensemble; mean, sd and the
+    // interval are in the unit each row names.
+    std::vector<CampaignColumn> point;  // the varied keys without the seed
+    std::copy_if(values.begin(), values.end(), std::back_inserter(point),
+                 [](const auto& v) { return v.name != "seed"; });
+    std::vector<CampaignColumn> statistics_columns{{"case", ""}};
+    statistics_columns.insert(statistics_columns.end(), point.begin(), point.end());
+    for (auto c : statistic_summary_columns()) statistics_columns.push_back(std::move(c));
+    write_campaign_table(sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
+                         statistics_rows(sweep, runs, records, point),
+                         "per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "
+                         "finished: n that reach it, missing that do not, their mean, sample sd and Student-t 95 % "
+                         "interval of the mean");
 }
 
 }  // namespace frictionlab

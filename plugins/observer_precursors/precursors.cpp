@@ -19,12 +19,29 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 /// YAML 1.2 reads a JSON number; NaN (unknown yet) is written as null.
 std::string yaml_number(double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null"; }
 
-const std::vector<std::string> event_columns{
-    "event",          "finished",       "t_start",          "t_end",        "duration",    "driving_force",
-    "normal_load",    "force_ratio",    "nucleation_block", "nucleation_x", "extent",      "extent_over_length",
-    "min_ruptured_x", "max_ruptured_x", "ruptured_blocks",  "global",       "front_speed", "crossing_speed",
-    "max_slip",       "out_of_contact"};
-const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay"};
+const std::vector<std::string> event_columns{"event",
+                                             "finished",
+                                             "t_start",
+                                             "t_end",
+                                             "duration",
+                                             "driving_force",
+                                             "normal_load",
+                                             "force_ratio",
+                                             "nucleation_block",
+                                             "nucleation_x",
+                                             "extent",
+                                             "extent_over_length",
+                                             "min_ruptured_x",
+                                             "max_ruptured_x",
+                                             "ruptured_blocks",
+                                             "global",
+                                             "front_speed",
+                                             "crossing_speed",
+                                             "max_slip",
+                                             "out_of_contact",
+                                             "front_speed_error",
+                                             "crossing_speed_error"};
+const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay", "resolution"};
 const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
 
 }  // namespace
@@ -64,6 +81,11 @@ ParamSpec<Precursors::Params> Precursors::spec() {
           "An event ends once this long has passed without a ruptured block; ruptures closer in time are one event.")
         .unit("s")
         .greater_than(0);
+    s.add("front_every", &Params::front_every,
+          "While an event runs, the observer samples this often (besides `every`), so that a front's arrival at a "
+          "block, and its speed, are resolved finer than the table's cadence; 0: at `every` only.")
+        .unit("s")
+        .at_least(0);
     s.add("stage", &Params::stage,
           "Observe only during stages of this name (empty: every stage), so settling is not taken for rupture.")
         .names_a_stage();
@@ -156,8 +178,7 @@ void Precursors::begin(const RunView& view) {
     if (!view.resuming) write_summary(view, false);
 }
 
-void Precursors::observe(const RunView& view) {
-    if (!detector_ || (!params_.stage.empty() && view.stage.name != params_.stage)) return;
+void Precursors::classify(const RunView& view, bool rearm) {
     for (std::size_t i = 0; i < interface_.size(); ++i) {
         const Index node = interface_[i];
         slip_(static_cast<Index>(i)) = view.state.x(node) - view.body.x0(node);
@@ -165,9 +186,22 @@ void Precursors::observe(const RunView& view) {
     if (params_.criterion == Criterion::pinned_fraction)
         ruptured_by_pinned_fraction(*counts_->pinned, *counts_->sliding, *counts_->dislocated,
                                     params_.ruptured_fraction, ruptured_);
-    else
+    else if (rearm)
         slip_criterion_->apply(view.state.t, slip_, ruptured_);
+    else
+        slip_criterion_->peek(slip_, ruptured_);
     observe_contact(view);
+}
+
+void Precursors::observe_between(const RunView& view) {
+    if (!detector_ || (!params_.stage.empty() && view.stage.name != params_.stage)) return;
+    classify(view, false);
+    detector_->observe_between(view.state.t, ruptured_, contact_, slip_);
+}
+
+void Precursors::observe(const RunView& view) {
+    if (!detector_ || (!params_.stage.empty() && view.stage.name != params_.stage)) return;
+    classify(view, true);
     const double f_s = driving_force_ ? *driving_force_ : nan;
     const double f_n = normal_load_ ? *normal_load_ : nan;
     if (auto ended = detector_->observe(view.state.t, ruptured_, contact_, slip_, f_s, f_n)) {
@@ -212,14 +246,17 @@ void Precursors::write(const RuptureEvent& e) {
                  e.front_speed,
                  e.crossing_speed,
                  e.max_slip,
-                 double(e.out_of_contact)});
+                 double(e.out_of_contact),
+                 e.front_speed_error,
+                 e.crossing_speed_error});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
         const double t = e.first_rupture[i];
         if (std::isnan(t)) continue;
         const double xi = x(static_cast<Index>(i));
-        fronts_->row({double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start});
+        fronts_->row(
+            {double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start, t - e.sampled_before[i]});
     }
 }
 

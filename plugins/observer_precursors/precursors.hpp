@@ -42,7 +42,8 @@ namespace frictionlab {
 ///
 ///     precursors.csv             one row per event, written when the event ends; at the end of
 ///                                the run an open event is written with finished = 0
-///     precursor_fronts.csv       per event and ruptured block: when it first ruptured
+///     precursor_fronts.csv       per event and ruptured block: when it first ruptured (sampled
+///                                every front_every while the event runs, so to that resolution)
 ///     contact_changes.csv        per block that lifts off or touches down again: when
 ///     precursors_summary.yaml    precursors before the first global slip, the global static
 ///                                coefficient F_S/F_N at its start (B.20), the peak F_S, the number
@@ -66,6 +67,7 @@ public:
         double ruptured_fraction = 0.5;
         double slip_threshold = 0.5e-6;
         double quiet_time = 2e-3;
+        double front_every = 1e-6;
         double global_span = 0.95;
         double nucleation_window_quiet_times = 5;
         std::string stage = "load";
@@ -81,8 +83,12 @@ public:
     Precursors(const Params& p, const Context& ctx);
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
+    /// While an event runs: refines its blocks' first-rupture times, decides nothing else.
+    void observe_between(const RunView& view) override;
     void resumed(const RunView& view) override { write_summary(view, false); }
     void end(const RunView& view) override;
+    /// front_every while an event is open: its front's arrivals resolved to it.
+    double finer_cadence() const override { return detector_ && detector_->open_event() ? params_.front_every : 0.0; }
 
     /// The summary file's text: what the detector found so far and the run's record.
     static std::string summary_text(const RuptureSummary& s, const ContactChanges& contact, const RunInfo& info,
@@ -90,6 +96,9 @@ public:
 
 private:
     void write(const RuptureEvent& e);
+    /// The blocks ruptured now (`rearm`: at the observer's own cadence, where the slip criterion
+    /// may move its reference), and which are in contact.
+    void classify(const RunView& view, bool rearm);
     void observe_contact(const RunView& view);
     void write_summary(const RunView& view, bool run_ended) const;
 

@@ -27,4 +27,11 @@ void SlipRuptureCriterion::apply(double t, const Eigen::ArrayXd& slip, RuptureMa
     since_ = rearm.select(t, since_);
 }
 
+void SlipRuptureCriterion::peek(const Eigen::ArrayXd& slip, RuptureMask& out) const {
+    if (reference_.size() != slip.size())
+        out = RuptureMask::Constant(slip.size(), false);
+    else
+        out = slip - reference_ > threshold_;
+}
+
 }  // namespace frictionlab

@@ -33,6 +33,9 @@ class SlipRuptureCriterion {
 public:
     SlipRuptureCriterion(double threshold, double window) : threshold_(threshold), window_(window) {}
     void apply(double t, const Eigen::ArrayXd& slip, RuptureMask& out);
+    /// As apply, without re-arming: between two observations at its cadence, so that the slip it
+    /// measures is still over (about) one cadence, whatever the finer sampling.
+    void peek(const Eigen::ArrayXd& slip, RuptureMask& out) const;
 
     template <class Archive>
     void serialize(Archive& ar) {

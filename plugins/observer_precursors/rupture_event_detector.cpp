@@ -18,10 +18,11 @@ std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const Ruptur
                                                           const BlockMask& contact, const Eigen::ArrayXd& slip,
                                                           double driving_force, double normal_load) {
     if (t <= last_t_) return std::nullopt;
+    const double before = std::isinf(last_sampled_t_) ? t : last_sampled_t_;
     ruptured_ = ruptured_flags && contact;
     const RuptureMask& ruptured = ruptured_;
     if (previous_slip_.size() != slip.size()) previous_slip_ = slip;  // the first observation
-    last_t_ = t;
+    last_t_ = last_sampled_t_ = t;
     if (std::isfinite(driving_force) && !(driving_force <= summary_.peak_driving_force)) {
         summary_.peak_driving_force = driving_force;
         summary_.peak_time = t;
@@ -33,17 +34,11 @@ std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const Ruptur
         if (quiet_long_enough) settle(finish(true));  // the observations were sparser than quiet_time
         if (!open_) start(t, ruptured, slip, driving_force, normal_load);
         RuptureEvent& e = *open_;
-        for (Index i = 0; i < ruptured.size(); ++i)
-            if (ruptured(i) && std::isnan(e.first_rupture[i])) e.first_rupture[i] = t;
-        e.t_end = last_ruptured_t_ = t;
+        record(ruptured, t, before);
     } else if (quiet_long_enough) {
         settle(finish(true));
     }
-    if (open_) {
-        for (Index i = 0; i < contact.size(); ++i) open_->in_contact[i] |= contact(i);
-        open_->max_slip = std::max(open_->max_slip, (slip - base_slip_).maxCoeff());
-        if (held_) open_slip_since_held_ = std::max(open_slip_since_held_, (slip - held_base_slip_).maxCoeff());
-    }
+    if (open_) follow(contact, slip);
     // The held event can no longer be a nucleation once its window has passed with no event
     // started within it. At most one report per observation: a second waits for the next one.
     // The same slack as for quiet_time, the other way: "more than" must not hinge on rounding.
@@ -55,6 +50,29 @@ std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const Ruptur
     }
     previous_slip_ = slip;
     return take_reported();
+}
+
+void RuptureEventDetector::observe_between(double t, const RuptureMask& ruptured_flags, const BlockMask& contact,
+                                           const Eigen::ArrayXd& slip) {
+    if (!open_ || t <= last_sampled_t_) return;
+    const double before = last_sampled_t_;
+    last_sampled_t_ = t;
+    ruptured_ = ruptured_flags && contact;
+    if (ruptured_.any()) record(ruptured_, t, before);
+    follow(contact, slip);
+}
+
+void RuptureEventDetector::record(const RuptureMask& ruptured, double t, double before) {
+    RuptureEvent& e = *open_;
+    for (Index i = 0; i < ruptured.size(); ++i)
+        if (ruptured(i) && std::isnan(e.first_rupture[i])) e.first_rupture[i] = t, e.sampled_before[i] = before;
+    e.t_end = last_ruptured_t_ = t;
+}
+
+void RuptureEventDetector::follow(const BlockMask& contact, const Eigen::ArrayXd& slip) {
+    for (Index i = 0; i < contact.size(); ++i) open_->in_contact[i] |= contact(i);
+    open_->max_slip = std::max(open_->max_slip, (slip - base_slip_).maxCoeff());
+    if (held_) open_slip_since_held_ = std::max(open_slip_since_held_, (slip - held_base_slip_).maxCoeff());
 }
 
 std::optional<RuptureEvent> RuptureEventDetector::close() {
@@ -81,6 +99,7 @@ void RuptureEventDetector::start(double t, const RuptureMask& ruptured, const Ei
     e.driving_force = driving_force;
     e.normal_load = normal_load;
     e.first_rupture.assign(static_cast<std::size_t>(ruptured.size()), nan);
+    e.sampled_before.assign(static_cast<std::size_t>(ruptured.size()), nan);
     e.in_contact.assign(static_cast<std::size_t>(ruptured.size()), 0);
     double most = -std::numeric_limits<double>::infinity();
     for (Index i = 0; i < ruptured.size(); ++i) {
@@ -115,7 +134,8 @@ void RuptureEventDetector::settle(RuptureEvent e) {
         RuptureEvent merged = std::move(*held_);
         held_.reset();
         for (std::size_t i = 0; i < merged.first_rupture.size(); ++i) {
-            if (std::isnan(merged.first_rupture[i])) merged.first_rupture[i] = e.first_rupture[i];
+            if (std::isnan(merged.first_rupture[i]))
+                merged.first_rupture[i] = e.first_rupture[i], merged.sampled_before[i] = e.sampled_before[i];
             merged.in_contact[i] |= e.in_contact[i];
         }
         merged.t_end = e.t_end;
@@ -182,15 +202,46 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.global = e.ruptured_blocks > 0 && span(ruptured) >= options_.global_span * span(in_contact) * (1 - 1e-12);
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
+    // A first rupture within (sampled_before, first_rupture], uniformly: its variance.
+    const auto variance = [&](std::size_t i) {
+        const double w = e.first_rupture[i] - e.sampled_before[i];
+        return std::isnan(w) ? 0.0 : w * w / 12;
+    };
     e.front_speed = farthest > 0 && delay > 0 ? farthest / delay : nan;
-    e.crossing_speed = nan;
+    e.front_speed_error = nan;
+    if (!std::isnan(e.front_speed))
+        for (std::size_t i = 0; i < e.first_rupture.size(); ++i)
+            if (std::abs(x(static_cast<Index>(i)) - x_nucleation) == farthest &&
+                e.first_rupture[i] - e.t_start == delay)
+                e.front_speed_error =
+                    e.front_speed * std::sqrt(variance(i) + variance(static_cast<std::size_t>(e.nucleation))) / delay;
+    e.crossing_speed = e.crossing_speed_error = nan;
     if (!(farthest > 0)) return;
-    double halfway = 0, halfway_delay = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
-        const double distance = std::abs(x(static_cast<Index>(i)) - x_nucleation), t = e.first_rupture[i] - e.t_start;
-        if (!std::isnan(t) && distance >= 0.5 * farthest && t < halfway_delay) halfway = distance, halfway_delay = t;
-    }
-    if (delay > halfway_delay && farthest > halfway) e.crossing_speed = (farthest - halfway) / (delay - halfway_delay);
+    // Least squares of time against distance over the far half: t = a + d / v.
+    const auto far_half = [&](auto visit) {
+        for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
+            const double d = std::abs(x(static_cast<Index>(i)) - x_nucleation), t = e.first_rupture[i];
+            if (!std::isnan(t) && d >= 0.5 * farthest) visit(i, d, t);
+        }
+    };
+    double n = 0, d_mean = 0, t_mean = 0, quantisation = 0;
+    far_half([&](std::size_t i, double d, double t) { n += 1, d_mean += d, t_mean += t, quantisation += variance(i); });
+    if (n < 2) return;
+    d_mean /= n, t_mean /= n, quantisation /= n;
+    double sdd = 0, sdt = 0;
+    far_half([&](std::size_t, double d, double t) {
+        sdd += (d - d_mean) * (d - d_mean), sdt += (d - d_mean) * (t - t_mean);
+    });
+    if (!(sdd > 0) || !(sdt > 0)) return;
+    const double slope = sdt / sdd;  // s/m
+    double residuals = 0;
+    far_half([&](std::size_t, double d, double t) {
+        const double r = t - (t_mean + slope * (d - d_mean));
+        residuals += r * r;
+    });
+    const double time_variance = std::max(quantisation, n > 2 ? residuals / (n - 2) : 0.0);
+    e.crossing_speed = 1 / slope;
+    e.crossing_speed_error = std::sqrt(time_variance / sdd) / (slope * slope);
 }
 
 }  // namespace frictionlab

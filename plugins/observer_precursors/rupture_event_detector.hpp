@@ -22,8 +22,9 @@ struct RuptureEvent {
     double driving_force = 0;       // F_S at the start (nucleation), N
     double normal_load = 0;         // F_N at the start, N
     int nucleation = 0;             // block first ruptured (index along the interface)
-    /// Per block: the time it first ruptured within the event, NaN if it did not.
-    std::vector<double> first_rupture;
+    /// Per block: the time it first ruptured within the event, NaN if it did not, and the
+    /// observation before, when it had not: it ruptured within (sampled_before, first_rupture].
+    std::vector<double> first_rupture, sampled_before;
     /// Per block: 1 if it was in contact at some observation of the event (B.19b).
     std::vector<char> in_contact;
     double max_slip = 0;  // m, the largest slip of any block since the event started
@@ -37,13 +38,14 @@ struct RuptureEvent {
     double extent_over_length = 0;  // l/L
     double front_speed = 0;         // m/s, see RuptureEventDetector; NaN if unresolved
     double crossing_speed = 0;      // m/s, over the far half of the front's path; NaN if unresolved
-    int out_of_contact = 0;         // blocks out of contact at every observation of the event (B.19b)
+    double front_speed_error = 0, crossing_speed_error = 0;  // m/s, one standard error
+    int out_of_contact = 0;  // blocks out of contact at every observation of the event (B.19b)
 
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, in_contact, max_slip,
-           ruptured_blocks, global, nucleation_x, min_x, max_x, extent, extent_over_length, front_speed, crossing_speed,
-           out_of_contact);
+        ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, sampled_before,
+           in_contact, max_slip, ruptured_blocks, global, nucleation_x, min_x, max_x, extent, extent_over_length,
+           front_speed, crossing_speed, front_speed_error, crossing_speed_error, out_of_contact);
     }
 
     double duration() const { return t_end - t_start; }
@@ -100,12 +102,17 @@ struct RuptureSummary {
 /// - Slip of a block: its displacement now minus at the observation before the event started.
 /// - Front speed: the distance from the nucleation block to the farthest block ruptured in the event,
 ///   divided by the delay between the event's start and that block's first rupture (of several at
-///   the same distance, the earliest). A mean speed, resolved to the observation interval; NaN when
-///   only the nucleation block ruptured or the front crossed within one observation.
-/// - Crossing speed: the same over the far half of the path only, from the first block at least half
-///   the farthest distance from nucleation to the farthest one. A front that creeps near its
-///   nucleation and then crosses the slider fast (Rubinstein et al. 2004) has a mean speed far below
-///   its crossing speed; NaN when the far half was crossed within one observation.
+///   the same distance, the earliest). A mean speed; NaN when only the nucleation block ruptured or
+///   the front crossed within one observation.
+/// - Crossing speed: over the far half of the path only, the blocks at least half the farthest
+///   distance from nucleation: the inverse slope of a least-squares line of their first-rupture
+///   times against distance. A front that creeps near its nucleation and then crosses the slider
+///   fast (Rubinstein et al. 2004) has a mean speed far below its crossing speed; NaN when the far
+///   half was crossed within one observation.
+/// - Their errors, one standard error: a block is known to have ruptured within the interval
+///   since the observation before (uniform: variance interval^2 / 12), and the crossing line's
+///   residuals count where they are larger. The observer samples finer while an event runs
+///   (Precursors' front_every), so the intervals are those of that cadence.
 class RuptureEventDetector {
 public:
     struct Interface {
@@ -125,6 +132,10 @@ public:
     /// stage ends) is ignored.
     std::optional<RuptureEvent> observe(double t, const RuptureMask& ruptured, const BlockMask& contact,
                                         const Eigen::ArrayXd& slip, double driving_force, double normal_load);
+    /// An observation between two of those above, while an event is open: it refines the event's
+    /// first-rupture times, end and extent, and decides nothing (no event starts or ends at it), so
+    /// the events are those of the cadence of observe(), resolved finer.
+    void observe_between(double t, const RuptureMask& ruptured, const BlockMask& contact, const Eigen::ArrayXd& slip);
     /// End of the history: closes the open event as unfinished and returns the events not yet
     /// reported, one per call, in order; nothing once all are.
     std::optional<RuptureEvent> close();
@@ -136,8 +147,8 @@ public:
     /// What changes as it observes (checkpoints); the geometry and options come from the scene.
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(open_, held_, held_base_slip_, open_slip_since_held_, reported_, reported_count_, last_t_, last_ruptured_t_,
-           previous_slip_, base_slip_, next_index_, summary_);
+        ar(open_, held_, held_base_slip_, open_slip_since_held_, reported_, reported_count_, last_t_, last_sampled_t_,
+           last_ruptured_t_, previous_slip_, base_slip_, next_index_, summary_);
     }
 
 private:
@@ -146,6 +157,10 @@ private:
     /// The span, each block covering l_s clipped to [0, L], from the first to the last block flagged.
     template <class Flagged>
     double span(const Flagged& flagged) const;
+    /// The open event's blocks ruptured at t (first ruptures within (before, t]) and its end.
+    void record(const RuptureMask& ruptured, double t, double before);
+    /// The open event's contact and largest slip, at every observation.
+    void follow(const BlockMask& contact, const Eigen::ArrayXd& slip);
     RuptureEvent finish(bool finished);
     /// An ended event: merged into the held one, held, or reported.
     void settle(RuptureEvent e);
@@ -164,6 +179,7 @@ private:
     std::vector<RuptureEvent> reported_;  // reported, not yet returned
     int reported_count_ = 0;
     double last_t_ = -std::numeric_limits<double>::infinity();
+    double last_sampled_t_ = -std::numeric_limits<double>::infinity();  // by either kind of observation
     double last_ruptured_t_ = 0;
     Eigen::ArrayXd previous_slip_;  // at the previous observation
     Eigen::ArrayXd base_slip_;      // at the observation before the open event started

@@ -10,7 +10,8 @@
 // - Fenced ```yaml blocks: a scene (it has `bulk:`) is written out and checked; a study or sweep (it has
 //   `scene:`) is written beside the base scene it names and checked with `check`.
 // - share/docs/glossary.md names every CSV column, VTU array and run.yaml and precursors_summary.yaml
-//   key a run writes, and every column of a sweep's and a study's tables, each with its unit.
+//   key a run writes, and every column of a sweep's and a study's tables, each with its unit; every
+//   table starts with its header.
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -253,12 +254,13 @@ public:
             EXPECT_FALSE(it->second.empty()) << where << ": '" << name << "' has no unit";
         }
     }
-    /// Every column of a CSV table's header (after any '#' lines).
+    /// Every column of a CSV table's header, its first line (glossary.md, "Table files").
     void expect_columns(const fs::path& csv) {
         ASSERT_TRUE(fs::exists(csv)) << csv;
         std::istringstream in(read_text(csv));
         std::string header;
-        while (std::getline(in, header) && header.rfind("#", 0) == 0) {}
+        std::getline(in, header);
+        EXPECT_NE(header.rfind("#", 0), 0u) << csv.filename() << ": a table starts with its header";
         std::istringstream columns(header);
         for (std::string column; std::getline(columns, column, ',');)
             expect_documented(column, csv.filename().string());
@@ -322,6 +324,7 @@ TEST_F(Docs, TheGlossaryNamesEveryColumnOfTheCampaignTablesWithItsUnit) {
     Glossary glossary;
     glossary.expect_columns(dir_ / "sweep_out/sweep.csv");
     glossary.expect_columns(dir_ / "sweep_out/events.csv");
+    glossary.expect_columns(dir_ / "sweep_out/sweep_statistics.csv");
     glossary.expect_columns(dir_ / "study_out/study.csv");
     EXPECT_GE(glossary.checked(), 40);
 }

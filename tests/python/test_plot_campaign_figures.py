@@ -1,7 +1,10 @@
-"""frictionlab.plot's campaign figures, of a sweep and an accuracy study written here: every point
-drawn is a row of the campaign's tables, seeds together or summarised as the figures say."""
+"""frictionlab.plot's campaign figures, of a sweep and an accuracy study written here and of a real
+small sweep and ensemble study run here: every point drawn is a row of the campaign's tables, seeds
+told apart or summarised as the figures say, axes named by symbol and unit, titles from the
+campaign file."""
 import os
 import shutil
+import subprocess
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -11,22 +14,38 @@ import frictionlab.plot
 from conftest import plot_command
 from frictionlab.plot import _tables, campaign_figures
 
-SWEEP = """# frictionlab sweep theta.yaml
-case,loaders[1].theta,seed,status,reason,scene_hash,global_static_coefficient,events,precursor_count,\
+SWEEP = """case,loaders[1].theta,seed,status,reason,scene_hash,global_static_coefficient,events,precursor_count,\
 first_precursor_force_ratio,steps,wall_seconds,cpu_seconds
 theta--0.5_seed-1,-0.5,1,done,,a1,0.30,3,2,0.20,100,1.0,1.0
 theta--0.5_seed-2,-0.5,2,done,,a2,0.34,2,1,0.22,100,1.0,1.0
 theta-0.5_seed-1,0.5,1,done,,b1,0.40,1,0,nan,100,1.0,1.0
 theta-0.5_seed-2,0.5,2,failed,diverged,b2,nan,0,0,nan,100,1.0,1.0
 """
-EVENTS = """# frictionlab sweep theta.yaml
-case,loaders[1].theta,seed,event,t_start,t_end,force_ratio,extent_over_length,kind
+SIDECAR = """framework: frictionlab
+sweep_file: theta.yaml
+title: precursors against theta
+seeds: [1, 2]
+units:
+  case: ""
+  loaders[1].theta: "1"
+  seed: "1"
+"""
+EVENTS = """case,loaders[1].theta,seed,event,t_start,t_end,force_ratio,extent_over_length,kind
 theta--0.5_seed-1,-0.5,1,0,0.001,0.002,0.20,0.3,precursor
 theta--0.5_seed-1,-0.5,1,1,0.003,0.004,0.25,0.6,precursor
 theta--0.5_seed-1,-0.5,1,2,0.005,0.006,0.30,1,global
 theta--0.5_seed-2,-0.5,2,0,0.001,0.002,0.22,0.5,precursor
 theta--0.5_seed-2,-0.5,2,1,0.003,0.004,0.34,1,global
 theta-0.5_seed-1,0.5,1,0,0.001,0.002,0.40,1,global
+"""
+# As the sweep writes it: the mean over the seeds that reach the event, with its 95 % interval.
+STATISTICS = """case,loaders[1].theta,statistic,unit,n,missing,mean,sd,ci_low,ci_high
+theta--0.5,-0.5,precursor_count,1,2,0,1.5,0.7071067812,-4.853102368,7.853102368
+theta--0.5,-0.5,first_precursor_force_ratio,1,2,0,0.21,0.01414213562,0.03,0.39
+theta--0.5,-0.5,global_slip_force_ratio,1,2,0,0.32,0.02828427125,-0.04,0.68
+theta-0.5,0.5,precursor_count,1,1,0,0,nan,nan,nan
+theta-0.5,0.5,first_precursor_force_ratio,1,0,1,nan,nan,nan,nan
+theta-0.5,0.5,global_slip_force_ratio,1,1,0,0.4,nan,nan,nan
 """
 ERRORS = [column for column, _ in campaign_figures.STUDY_ERRORS]
 STUDY_CASES = [  # case, family, seed, wall seconds, every error
@@ -41,7 +60,9 @@ STUDY_CASES = [  # case, family, seed, wall seconds, every error
 def sweep(tmp_path, csv_run):
     """A sweep over theta, two seeds each, one case failed; one case has its run's tables."""
     (tmp_path / "sweep.csv").write_text(SWEEP)
+    (tmp_path / "sweep.csv.meta.yaml").write_text(SIDECAR)
     (tmp_path / "events.csv").write_text(EVENTS)
+    (tmp_path / "sweep_statistics.csv").write_text(STATISTICS)
     shutil.copytree(csv_run.directory, tmp_path / "cases" / "theta--0.5_seed-1")
     yield str(tmp_path)
     plt.close("all")
@@ -60,14 +81,17 @@ def study(tmp_path):
     plt.close("all")
 
 
-def test_the_sweeps_rupture_lengths_are_every_event_coloured_by_case(sweep):
+def test_the_sweeps_rupture_lengths_are_every_event_coloured_by_case_a_marker_per_seed(sweep):
     fig, ax = plt.subplots()
     assert frictionlab.plot.sweep_precursor_lengths(sweep, ax=ax) is ax
-    minus, plus = ax.lines  # the seeds of a case together
-    assert (minus.get_label(), plus.get_label()) == ("theta=-0.5", "theta=0.5")
-    assert list(minus.get_xdata()) == [0.20, 0.25, 0.30, 0.22, 0.34]
-    assert list(minus.get_ydata()) == [0.3, 0.6, 1, 0.5, 1]
-    assert list(plus.get_xdata()) == [0.40] and plus.get_color() != minus.get_color()
+    minus_1, minus_2, plus_1 = ax.lines  # a case's colour, a seed's marker
+    assert minus_1.get_label() == r"$\theta$ = -0.5" and plus_1.get_label() == r"$\theta$ = 0.5"
+    assert list(minus_1.get_xdata()) == [0.20, 0.25, 0.30] and list(minus_2.get_xdata()) == [0.22, 0.34]
+    assert list(minus_1.get_ydata()) == [0.3, 0.6, 1] and list(minus_2.get_ydata()) == [0.5, 1]
+    assert minus_1.get_color() == minus_2.get_color() != plus_1.get_color()
+    assert minus_1.get_marker() == plus_1.get_marker() != minus_2.get_marker()
+    assert ax.get_title().startswith("precursors against theta")  # the sweep file's title
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["seed 1", "seed 2"]
 
 
 def drawn(ax, marker):
@@ -76,14 +100,30 @@ def drawn(ax, marker):
             if line.get_marker() == marker}
 
 
-def test_against_a_varied_key_each_seed_and_their_mean_of_the_finished_cases(sweep):
+def error_bars(ax):
+    """[(low, high), ...] of the error bars on ax."""
+    return [tuple(float(y) for y in segment[:, 1]) for c in ax.collections for segment in c.get_segments()]
+
+
+def test_against_a_varied_key_each_seed_faint_and_the_mean_with_its_interval(sweep):
     assert campaign_figures.numeric_keys(_tables.campaign_rows(sweep, "sweep.csv")) == ["loaders[1].theta"]
     count, first, coefficient = frictionlab.plot.sweep_against(sweep, "loaders[1].theta", axes=plt.subplots(1, 3)[1])
     assert drawn(count, "o") == {-0.5: [2, 1], 0.5: [0]}
+    assert all(line.get_alpha() < 0.5 for line in count.lines if line.get_marker() == "o")  # faint
     assert drawn(count, "s") == {-0.5: [1.5], 0.5: [0]}
+    assert error_bars(coefficient) == [pytest.approx((-0.04, 0.68))]  # none for one seed
     assert drawn(coefficient, "o") == {-0.5: [0.30, 0.34], 0.5: [0.40]}  # the failed case left out
     assert drawn(first, "o") == {-0.5: [0.20, 0.22]}  # no precursor at theta = 0.5: NaN, not drawn
-    assert coefficient.get_xlabel() == "loaders[1].theta"
+    assert coefficient.get_xlabel() == r"$\theta$"  # the symbol, not the key path
+
+
+def test_an_empty_panel_says_why(sweep):
+    with open(os.path.join(sweep, "events.csv")) as f:
+        lines = f.readlines()
+    with open(os.path.join(sweep, "events.csv"), "w") as f:  # no precursors: only global slips
+        f.writelines(line for line in lines if not line.rstrip().endswith("precursor"))
+    _, first, _ = frictionlab.plot.sweep_against(sweep, "loaders[1].theta", axes=plt.subplots(1, 3)[1])
+    assert not first.lines and [t.get_text() for t in first.texts] == ["no case had a precursor"]
 
 
 def test_the_sweeps_loading_curves_are_its_cases_that_have_one(sweep, csv_run):
@@ -92,7 +132,7 @@ def test_the_sweeps_loading_curves_are_its_cases_that_have_one(sweep, csv_run):
     expected = frictionlab.plot.loading_curve(csv_run).lines[0]
     np.testing.assert_array_equal(curve.get_xdata(), expected.get_xdata())
     np.testing.assert_array_equal(curve.get_ydata(), expected.get_ydata())
-    assert curve.get_label() == "theta=-0.5"
+    assert curve.get_label() == r"$\theta$ = -0.5, seed 1"
 
 
 def test_work_precision_draws_each_families_largest_error_over_the_seeds_against_wall_time(study):
@@ -113,3 +153,79 @@ def test_the_study_command_titles_the_plot_with_the_study_over_its_seeds(study):
     with open(os.path.join(study, "work_precision.svg")) as f:
         svg = f.read()
     assert "a study for the tests: relative error against the reference, the largest over 2 seeds" in svg
+
+
+@pytest.fixture(scope="session")
+def real_sweep(cli, source_dir, tmp_path_factory):
+    """tests/sweep/tiny_sweep.yaml run here: two loading rates x seeds 1 and 2, drawn by
+    `frictionlab plot DIR`."""
+    out = tmp_path_factory.mktemp("sweep") / "out"
+    for args in (["sweep", "-q", os.path.join(source_dir, "tests", "sweep", "tiny_sweep.yaml"), "-o", str(out)],
+                 ["plot", str(out)]):
+        result = subprocess.run([cli, *args], capture_output=True, text=True)
+        assert result.returncode == 0, result.stdout + result.stderr
+    return str(out)
+
+
+def test_a_real_sweeps_figures_are_its_means_with_intervals_by_symbol_and_unit(real_sweep):
+    for name in ("sweep_precursor_lengths", "sweep_against_velocity", "sweep_loading_curves"):
+        assert os.path.exists(os.path.join(real_sweep, "plots", name + ".svg")), name
+    with open(os.path.join(real_sweep, "plots", "sweep_against_velocity.svg")) as f:
+        svg = f.read()
+    assert "tiny sweep: the mean over 2 seeds" in svg and "loaders[2].velocity" not in svg
+    count, first, coefficient = frictionlab.plot.sweep_against(real_sweep, "loaders[2].velocity",
+                                                               axes=plt.subplots(1, 3)[1])
+    assert coefficient.get_xlabel() == "$V$ [m/s]"
+    statistics = [r for r in _tables.campaign_rows(real_sweep, "sweep_statistics.csv")
+                  if r["statistic"] == "global_slip_force_ratio"]
+    assert drawn(coefficient, "s") == {float(r["loaders[2].velocity"]): [float(r["mean"])] for r in statistics}
+    assert error_bars(coefficient) == [pytest.approx((float(r["ci_low"]), float(r["ci_high"]))) for r in statistics]
+    assert all(len(ys) == 2 for ys in drawn(coefficient, "o").values())  # each seed a dot
+    assert [t.get_text() for t in first.texts] == ["no case had a precursor"]  # the tiny sweep has none
+    plt.close("all")
+
+
+@pytest.fixture(scope="session")
+def real_study(cli, source_dir, tmp_path_factory):
+    """An ensemble study of tests/study/tiny_scene.yaml over two seeds run here: the reference (RK4
+    at 0.2 us), the same at half its step, and at twice it. `frictionlab study` draws its figures."""
+    folder = tmp_path_factory.mktemp("study")
+    (folder / "study.yaml").write_text(
+        f"title: tiny ensemble figures\nscene: {os.path.join(source_dir, 'tests', 'study', 'tiny_scene.yaml')}\n"
+        "observe_every: 1.0e-5\nprofile_every: 1.0e-4\nseeds: 2\n"
+        "reference:\n  set: [integrator.dt=2.0e-7]\nhalf_step:\n  set: [integrator.dt=1.0e-7]\n"
+        "cases:\n  - name: rk4_coarse\n    set: [integrator.dt=4.0e-7]\n")
+    result = subprocess.run([cli, "study", "-q", "-j", "2", str(folder / "study.yaml"), "-o", str(folder / "out")],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return str(folder / "out")
+
+
+def test_a_real_ensemble_studys_work_precision_is_each_cases_error_with_its_interval(real_study):
+    for name in ("work_precision", "ensemble_work_precision", "single_seed_divergence"):
+        assert os.path.exists(os.path.join(real_study, name + ".svg")), name
+    axes = frictionlab.plot.ensemble_work_precision(real_study, axes=plt.subplots(2, 5)[1])
+    rows = [r for r in _tables.campaign_rows(real_study, "ensemble.csv")
+            if r["statistic"] == "global_slip_force_ratio" and r["verdict"] != "reference"]
+    (panel,) = [ax for ax in axes if ax.get_title() == "global slip force ratio"]
+    assert sorted(r["case"] for r in rows) == ["half_step", "rk4_coarse"]
+    assert drawn(panel, "o") == {float(r["cpu_seconds"]): [float(r["difference"])] for r in rows}
+    assert error_bars(panel) == [pytest.approx((float(r["difference_ci_low"]), float(r["difference_ci_high"])))
+                                 for r in rows]
+    assert axes[-1].get_xlabel() == "CPU time per run [s]"
+    plt.close("all")
+
+
+def test_a_real_ensemble_studys_single_seeds_part_under_step_halving_by_event_rank(real_study):
+    times, ratios = frictionlab.plot.single_seed_divergence(real_study, axes=plt.subplots(1, 2)[1])
+    seed_1, seed_2 = times.lines  # one curve per seed, told apart by marker
+    assert (seed_1.get_label(), seed_2.get_label()) == ("seed 1", "seed 2")
+    assert seed_1.get_marker() != seed_2.get_marker()
+    reference = frictionlab.plot.table(os.path.join(real_study, "cases", "reference", "seed_2"), "precursors")
+    half = frictionlab.plot.table(os.path.join(real_study, "cases", "half_step", "seed_2"), "precursors")
+    n = min(len(reference), len(half))
+    assert list(seed_2.get_xdata()) == list(range(1, n + 1))
+    np.testing.assert_allclose(ratios.lines[1].get_ydata(),
+                               np.abs(np.sort(reference, order="t_start")["force_ratio"][:n]
+                                      - np.sort(half, order="t_start")["force_ratio"][:n]))
+    plt.close("all")

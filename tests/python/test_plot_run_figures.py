@@ -105,7 +105,8 @@ def test_runs_overlaid_on_one_axes_are_labelled_apart(csv_run, hdf5_run, figure)
         np.testing.assert_array_equal(line.get_ydata(), events["extent_over_length"])
     frictionlab.plot.loading_curves([csv_run, hdf5_run], ax=right)
     csv_label, hdf5_label = [text.get_text() for text in right.get_legend().get_texts()]
-    assert "observers[1].format=csv" in csv_label and "observers[1].format=hdf5" in hdf5_label
+    # The same physics written in two formats: told apart by directory, not by an output key.
+    assert (csv_label, hdf5_label) == (csv_run.directory, hdf5_run.directory)
     assert right.get_title() == "tiny rupture for the Python tests: the loading curves of 2 runs"
 
 
@@ -158,18 +159,32 @@ def test_a_figure_of_one_event_names_the_scene_it_comes_from(csv_plots):
     assert "tiny rupture for the Python tests" in svg_text(csv_plots, "four_phase_3")  # the scene's title
 
 
-def test_overlaid_loading_curves_are_titled_and_labelled_apart(csv_run, tmp_path):
+def test_overlaid_loading_curves_are_titled_and_labelled_by_the_physics_that_differs(csv_run, tmp_path):
     runs = [shutil.copytree(csv_run.directory, tmp_path / name) for name in ("a", "b", "c")]
     record = yaml.safe_load(open(runs[1] / "run.yaml"))
-    record["scene"]["loaders"][2]["velocity"] = 0.03  # not among the label's facts
+    record["scene"]["loaders"][2]["velocity"] = 0.03
+    record["scene"]["output"] = "elsewhere"  # where a run writes tells nothing of its physics
+    record["scene"]["checkpoint"] = {"every": 1.0e-3}
     with open(runs[1] / "run.yaml", "w") as f:
         yaml.safe_dump(record, f)
     a, b, c = _labels.run_labels([str(r) for r in runs])
-    assert len({a, b, c}) == 3
-    assert b.endswith("loaders[2].velocity=0.03")
-    assert "loaders[2].velocity=0.02" in a and a.endswith(f"({runs[0]})")  # a and c alike: by directory
-    assert c.endswith(f"({runs[2]})")
+    assert b == "$V$ = 0.03 m/s"  # the symbol and unit; not the output nor the checkpoint
+    assert a == f"$V$ = 0.02 m/s ({runs[0]})"  # a and c alike: by directory
+    assert c == f"$V$ = 0.02 m/s ({runs[2]})"
     plot_command(str(runs[0]), str(runs[1]), "-o", str(tmp_path / "both"))
     both = svg_text(tmp_path / "both", "loading_curves")
     assert "tiny rupture for the Python tests: the loading curves of 2 runs" in both
-    assert "loaders[2].velocity=0.03" in both
+    assert "= 0.03 m/s" in both and "checkpoint" not in both and "output" not in both
+
+
+def test_overlays_tell_seeds_apart_by_line_style_and_marker(csv_run, tmp_path):
+    runs = [shutil.copytree(csv_run.directory, tmp_path / name) for name in ("one", "two")]
+    record = yaml.safe_load(open(runs[1] / "run.yaml"))
+    record["scene"]["seed"] = 7
+    with open(runs[1] / "run.yaml", "w") as f:
+        yaml.safe_dump(record, f)
+    assert _labels.run_labels([str(r) for r in runs])[1] == "seed 7"
+    first, second = frictionlab.plot.loading_curves([str(r) for r in runs]).lines
+    assert first.get_linestyle() != second.get_linestyle()
+    first, second = frictionlab.plot.precursor_lengths([str(r) for r in runs]).lines
+    assert first.get_marker() != second.get_marker()

@@ -152,6 +152,10 @@ TEST(Study, EnsemblesOverSeedsAreJudgedAndAFailingCaseIsRunAgainOnOtherSeeds) {
     ASSERT_EQ(result.code, 0) << result.output;
     const StudyTable table(dir / "out" / "ensemble.csv");
     EXPECT_EQ(table.header().front(), "case") << "one header line, no comment: pandas reads it as it is";
+    const std::string sidecar = read_text(dir / "out" / "ensemble.csv.meta.yaml");
+    for (const char* line : {"study_file: tiny_ensemble_study.yaml\n", "title: tiny ensemble study\n",
+                             "seeds: [1, 2, 3]\n", "  mean: \"(unit column)\"\n", "  cpu_seconds: \"s\"\n"})
+        EXPECT_NE(sidecar.find(line), std::string::npos) << line << "\n" << sidecar;
     const auto rows_of = [&](const std::string& name, const std::string& ensemble) {
         std::vector<std::map<std::string, std::string>> out;
         for (const auto& row : table.rows())

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -41,12 +42,14 @@ std::string data_lines(const fs::path& file) {
     return out;
 }
 
-/// sweep.csv's rows, by case name, cells by column name (no cell of the tiny sweep is quoted).
-std::map<std::string, std::map<std::string, std::string>> sweep_rows(const fs::path& file) {
+using Row = std::map<std::string, std::string>;
+
+/// A campaign table's rows, cells by column name (no cell of the tiny sweep is quoted).
+std::vector<Row> table_rows(const fs::path& file) {
     std::ifstream in(file);
     std::string line;
     std::vector<std::string> header;
-    std::map<std::string, std::map<std::string, std::string>> rows;
+    std::vector<Row> rows;
     while (std::getline(in, line)) {
         if (line.empty() || line[0] == '#') continue;
         std::vector<std::string> cells;
@@ -57,9 +60,16 @@ std::map<std::string, std::map<std::string, std::string>> sweep_rows(const fs::p
             header = cells;
             continue;
         }
-        auto& row = rows[cells.at(0)];
+        auto& row = rows.emplace_back();
         for (std::size_t k = 0; k < header.size() && k < cells.size(); ++k) row[header[k]] = cells[k];
     }
+    return rows;
+}
+
+/// sweep.csv's rows, by case name.
+std::map<std::string, Row> sweep_rows(const fs::path& file) {
+    std::map<std::string, Row> rows;
+    for (auto& row : table_rows(file)) rows[row.at("case")] = std::move(row);
     return rows;
 }
 
@@ -105,10 +115,67 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
         EXPECT_EQ(data_lines(case_dir / "ruptures.csv"), data_lines(dir / "j2" / "cases" / name / "ruptures.csv"));
     }
     EXPECT_GT(all_events, 0u) << "the tiny sweep should see rupture events";
-    EXPECT_EQ(data_lines(dir / "j1" / "sweep.csv").size() > 0, true);
+    // Every table is one header line and its rows (pandas.read_csv reads it as is); what wrote it,
+    // the sweep's title and the columns' units are in its sidecar.
+    for (const char* table : {"sweep.csv", "events.csv", "sweep_statistics.csv"}) {
+        const std::string text = read_text(dir / "j1" / table);
+        EXPECT_EQ(text.rfind("case,loaders[2].velocity,", 0), 0u) << table << "\n" << text.substr(0, 200);
+        EXPECT_EQ(text.find("\n#"), std::string::npos) << table;
+        const std::string sidecar = read_text(dir / "j1" / (std::string(table) + ".meta.yaml"));
+        for (const char* line : {"sweep_file: tiny_sweep.yaml\n", "title: tiny sweep\n", "seeds: [1, 2]\n",
+                                 "  loaders[2].velocity: \"m/s\"\n"})
+            EXPECT_NE(sidecar.find(line), std::string::npos) << table << ": " << line << "\n" << sidecar;
+    }
     // events.csv: one row per event of every case.
-    const std::string events = data_lines(dir / "j1" / "events.csv");
+    const std::string events = read_text(dir / "j1" / "events.csv");
     EXPECT_EQ(static_cast<std::size_t>(std::count(events.begin(), events.end(), '\n')), all_events + 1);
+
+    // sweep_statistics.csv: per case over its seeds, each statistic's n, mean, sd and 95 % interval,
+    // here computed by hand from events.csv for those events.csv alone determines.
+    const std::vector<Row> statistics = table_rows(dir / "j1" / "sweep_statistics.csv");
+    EXPECT_EQ(statistics.size(), 2u * 10u) << "two cases, ten statistics each";
+    const std::vector<Row> event_rows = table_rows(dir / "j1" / "events.csv");
+    for (const std::string velocity : {"0.08", "0.12"}) {
+        SCOPED_TRACE(velocity);
+        std::map<std::string, std::vector<double>> by_hand;  // statistic -> one value per seed
+        for (const std::string seed : {"1", "2"}) {
+            // The seed's events by start; the precursors are those before its first global slip.
+            std::vector<std::pair<double, const Row*>> own;
+            for (const auto& e : event_rows)
+                if (e.at("loaders[2].velocity") == velocity && e.at("seed") == seed)
+                    own.emplace_back(std::stod(e.at("t_start")), &e);
+            std::sort(own.begin(), own.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+            const auto global =
+                std::find_if(own.begin(), own.end(), [](const auto& e) { return e.second->at("kind") == "global"; });
+            if (global == own.end()) continue;  // the seed reaches none of these: missing
+            const double load_start = 1.5e-3;   // the settle stage of tiny_scene.yaml
+            by_hand["precursor_count"].push_back(double(global - own.begin()));
+            by_hand["global_slip_force_ratio"].push_back(std::stod(global->second->at("force_ratio")));
+            by_hand["global_slip_time"].push_back(global->first - load_start);
+        }
+        for (const auto& [statistic, values] : by_hand) {
+            SCOPED_TRACE(statistic);
+            const auto row = std::find_if(statistics.begin(), statistics.end(), [&](const Row& r) {
+                return r.at("loaders[2].velocity") == velocity && r.at("statistic") == statistic;
+            });
+            ASSERT_NE(row, statistics.end());
+            EXPECT_EQ(row->at("case"), "velocity-" + velocity);
+            ASSERT_EQ(row->at("n"), std::to_string(values.size()));
+            EXPECT_EQ(std::stoul(row->at("n")) + std::stoul(row->at("missing")), 2u);
+            ASSERT_EQ(values.size(), 2u) << "both seeds of the tiny sweep reach a global slip";
+            const double mean = (values[0] + values[1]) / 2;
+            const double sd = std::abs(values[0] - values[1]) / std::sqrt(2.0);
+            const double half = 12.706204736174707 * sd / std::sqrt(2.0);  // Student t, 1 dof, 97.5 %
+            const double tol = 1e-8 * (std::abs(mean) + sd) + 1e-15;
+            EXPECT_NEAR(std::stod(row->at("mean")), mean, tol);
+            EXPECT_NEAR(std::stod(row->at("sd")), sd, tol);
+            EXPECT_NEAR(std::stod(row->at("ci_low")), mean - half, 10 * tol);
+            EXPECT_NEAR(std::stod(row->at("ci_high")), mean + half, 10 * tol);
+        }
+        EXPECT_EQ(by_hand.size(), 3u);
+    }
+    EXPECT_NE(read_text(dir / "j1" / "sweep_statistics.csv.meta.yaml").find("  mean: \"(unit column)\"\n"),
+              std::string::npos);
 
     // A case is an ordinary run: `frictionlab run` with the same values writes the same events.
     const auto single = frictionlab(

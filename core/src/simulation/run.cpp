@@ -132,10 +132,14 @@ private:
         const Integrator& integrator = sim_.integrator();
         const double tolerance = (integrator.steps_to_observations() ? 1e-6 : 0.5) * integrator.nominal_dt();
         for (auto& o : observers_) {
-            if (o.seen(sys.step_index(), sys.time()) || (!all && !o.due(sys.time(), sys.step_index(), tolerance)))
-                continue;
+            if (o.seen(sys.step_index(), sys.time())) continue;
+            const bool own = all || o.due(sys.time(), sys.step_index(), tolerance);
+            if (!own && !o.due_between(sys.time(), tolerance)) continue;
             sys.refresh();
-            o.observer->observe(view(stage));
+            if (own)
+                o.observer->observe(view(stage));
+            else
+                o.observer->observe_between(view(stage));
             o.advance(sys.time(), tolerance);
             o.last_step = sys.step_index();
             o.last_time = sys.time();
@@ -195,8 +199,7 @@ private:
     /// The earliest time an observer with a time cadence is due next (+infinity if none is).
     double next_observation() const {
         double next = std::numeric_limits<double>::infinity();
-        for (const auto& o : observers_)
-            if (o.every > 0) next = std::min(next, o.next_time);
+        for (const auto& o : observers_) next = std::min(next, o.next());
         return next;
     }
 
@@ -256,7 +259,7 @@ private:
         c.quantities = archived([&](StateOut& out) { sim_.quantities().save_state(out); });
         c.integrator = archived_state(sim_.integrator());
         for (const auto& o : observers_)
-            c.observers.push_back({o.next_time, o.last_step, o.last_time, archived_state(*o.observer)});
+            c.observers.push_back({o.next_time, o.last_step, o.last_time, o.finer_next, archived_state(*o.observer)});
         c.outputs = output_lengths(output_);
         write_checkpoint_file(output_, c.payload());
         schedule_next_checkpoint();
@@ -295,6 +298,7 @@ private:
             o.next_time = c.observers[i].next_time;
             o.last_step = c.observers[i].last_step;
             o.last_time = c.observers[i].last_time;
+            o.finer_next = c.observers[i].finer_next;
             restore_archived_state(*o.observer, c.observers[i].state, o.path);
             o.observer->resumed(view(last_stage_));
         }

@@ -29,10 +29,11 @@ struct RunCheckpoint {
         double next_time = 0;
         long long last_step = -1;
         double last_time = -INFINITY;
+        double finer_next = INFINITY;
         std::string state;
         template <class Archive>
         void serialize(Archive& ar) {
-            ar(next_time, last_step, last_time, state);
+            ar(next_time, last_step, last_time, finer_next, state);
         }
     };
     std::vector<ObserverState> observers;

@@ -54,6 +54,19 @@ TEST(PrecursorsScene, TheFirstPrecursorsOfAFastLoadedSlider) {
     }
     EXPECT_LE(out_of_order, first.size() / 5) << "front times increase away from nucleation, up to stragglers";
 
+    // The front is sampled every front_every (1 us) while the event runs, finer than the 10 us of the
+    // table: each block after the first observation is known to 1 us, and the speeds carry their error.
+    std::size_t fine = 0;
+    for (std::size_t r = 0; r < fronts["event"].size(); ++r)
+        if (fronts["event"][r] == 0 && fronts["delay"][r] > 0) {
+            EXPECT_LE(fronts["resolution"][r], 1e-6 * (1 + 1e-9)) << "block " << fronts["block"][r];
+            ++fine;
+        }
+    EXPECT_GE(fine, 1u);
+    const double speed = events["front_speed"][0], error = events["front_speed_error"][0];
+    EXPECT_GT(error, 0);
+    EXPECT_LT(error, speed) << "resolved: an error below the speed itself";
+
     // contact_area in the same run: block 5 of the paper's Fig. 9 has valid fractions throughout.
     auto block = read_csv(out / "contact_area_block_5.csv");
     ASSERT_FALSE(block["pinned_fraction"].empty());

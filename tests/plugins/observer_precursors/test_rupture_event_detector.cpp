@@ -115,10 +115,60 @@ TEST(RuptureEventDetector, APrecursorFromTheTrailingEdge) {
     }
     EXPECT_NEAR(e.front_speed, x(9) / (9 * dt), 1e-6) << "farthest distance over its delay";
     EXPECT_NEAR(e.crossing_speed, (x(9) - x(5)) / (4 * dt), 1e-6) << "a steady front: the same speed on its far half";
+    // Each arrival known to within the dt since the observation before: variance dt^2 / 12. The far
+    // half (blocks 5 to 9, a line through them) gives the slope's error, and the front speed's comes
+    // from its two ends (block 0 at the start, block 9).
+    double sdd = 0;
+    for (int b = 5; b <= 9; ++b) sdd += (x(b) - x(7)) * (x(b) - x(7));
+    const double v = ls / dt;
+    EXPECT_NEAR(e.crossing_speed_error, std::sqrt(dt * dt / 12 / sdd) * v * v, 1e-6 * v);
+    EXPECT_NEAR(e.front_speed_error, e.front_speed * std::sqrt(2 * dt * dt / 12) / (9 * dt), 1e-6 * v);
     EXPECT_NEAR(e.max_slip, 1e-6, 1e-15);
     EXPECT_EQ(d.summary().events, 1);
     EXPECT_FALSE(d.summary().global_seen);
     EXPECT_EQ(d.summary().precursors_before_global, 1);
+}
+
+/// A front crossing four blocks per observation, also sampled four times finer while the event is
+/// open (Precursors' front_every): the arrivals come out to the finer cadence, the speed exact and
+/// its error four times smaller, while the event starts and ends where the coarse cadence puts it.
+TEST(RuptureEventDetector, ObservationsBetweenRefineArrivalsAndDecideNothing) {
+    const double t0 = 0.1, fine = dt / 4, hold = 5e-4;
+    const auto ruptured_at = [&](int b) { return t0 + b * fine; };  // blocks 0..19
+    RuptureEventDetector coarse(interface41(), quiet), refined(interface41(), quiet);
+    std::vector<RuptureEvent> coarse_events, refined_events;
+    RuptureMask mask(blocks);
+    Eigen::ArrayXd slip = Eigen::ArrayXd::Zero(blocks);
+    const auto sample = [&](double t) {
+        mask.setConstant(false);
+        for (int b = 0; b < 20; ++b) mask(b) = t >= ruptured_at(b) - 1e-12 && t < ruptured_at(b) + hold - 1e-12;
+    };
+    for (long k = 0; k <= 1000; ++k) {
+        const double t = t0 - 1e-3 + k * dt;
+        sample(t);
+        if (auto e = coarse.observe(t, mask, all_in_contact, slip, loading_rate * t, normal_load))
+            coarse_events.push_back(*e);
+        if (auto e = refined.observe(t, mask, all_in_contact, slip, loading_rate * t, normal_load))
+            refined_events.push_back(*e);
+        for (int j = 1; j < 4; ++j) {
+            sample(t + j * fine);
+            refined.observe_between(t + j * fine, mask, all_in_contact, slip);  // ignored while no event is open
+        }
+    }
+    ASSERT_EQ(coarse_events.size(), 1u);
+    ASSERT_EQ(refined_events.size(), 1u);
+    const RuptureEvent &c = coarse_events[0], &r = refined_events[0];
+    EXPECT_EQ(r.t_start, c.t_start) << "an event starts only at the observer's own cadence";
+    EXPECT_EQ(r.ruptured_blocks, c.ruptured_blocks);
+    EXPECT_NEAR(r.t_end, ruptured_at(19) + hold - fine, 1e-9) << "its end resolved to the finer cadence";
+    for (int b = 1; b < 20; ++b) {
+        EXPECT_NEAR(r.first_rupture[b], ruptured_at(b), 1e-12) << b;
+        EXPECT_NEAR(r.sampled_before[b], ruptured_at(b) - fine, 1e-12) << b;
+    }
+    const double v = ls / fine;
+    EXPECT_NEAR(r.crossing_speed, v, 1e-6 * v) << "a steady front, resolved";
+    EXPECT_NEAR(c.first_rupture[1], t0 + dt, 1e-12) << "the coarse cadence sees the arrival only at its next sample";
+    EXPECT_LT(r.crossing_speed_error, c.crossing_speed_error / 2);
 }
 
 TEST(RuptureEventDetector, ACreepingThenCrossingFrontHasAMeanAndACrossingSpeed) {

@@ -42,29 +42,39 @@ event it draws.
 
     frictionlab plot SWEEP_DIR                 (python3 -m frictionlab.plot --sweep SWEEP_DIR)
 
-draws into SWEEP_DIR/plots/ from its sweep.csv and events.csv (plot_sweep): sweep_precursor_lengths
-(l/L against F_S/F_N, coloured by case, seeds together: Li2020 Fig. 7), sweep_against_<key> for a
-numeric varied key such as theta (precursor count, first-precursor and global-slip F_S/F_N, mean and
-seed spread: Li2020 Fig. 8) and sweep_loading_curves (every case's F_S against time since loading,
-overlaid).
+draws into SWEEP_DIR/plots/ from its sweep.csv, events.csv and sweep_statistics.csv (plot_sweep):
+sweep_precursor_lengths (l/L against F_S/F_N, coloured by case, a marker per seed: Li2020 Fig. 7),
+sweep_against_<key> for a numeric varied key such as theta (precursor count, first-precursor and
+global-slip F_S/F_N: each seed a faint dot, the mean over the seeds with its 95 % interval; a series
+per value of the other varied keys: Li2020 Fig. 8) and sweep_loading_curves (every case's F_S
+against time since loading, overlaid, a line style per seed). Axes name the varied keys by symbol
+and unit (θ, F_N [N], h [mm], V [m/s]); titles are the sweep file's `title`.
 
     python3 -m frictionlab.plot --study STUDY_DIR      (run by `frictionlab study`)
 
 draws work_precision (PNG and SVG) into STUDY_DIR from its study.csv (plot_study): each error against
-wall time, log-log, one curve per family of cases.
+wall time, log-log, one curve per family of cases; over seeds (ensemble.csv) also
+ensemble_work_precision (each case's mean less the reference's, with its 95 % bootstrap interval
+and the accuracy standard's tolerance, against CPU time per run, a panel per event statistic) and
+single_seed_divergence (per seed, how far RK4 at dt and at dt/2, the `half_step` case, part on the
+k-th rupture event's start time and F_S/F_N, against k).
+
+Overlays tell runs apart by the physics values that differ between them (never where they write:
+output, observers, checkpoint), and their seeds by marker or line style.
 """
 from ._clock import time_origin
 from ._command import main
 from ._figure import NothingToDraw
 from ._labels import run_label
 from ._tables import table
-from .campaign_figures import (plot_study, plot_sweep, sweep_against, sweep_loading_curves, sweep_precursor_lengths,
-                               work_precision)
+from .campaign_figures import (ensemble_work_precision, plot_study, plot_sweep, single_seed_divergence, sweep_against,
+                               sweep_loading_curves, sweep_precursor_lengths, work_precision)
 from .lattice_rendering import lattice, plot_lattice, render_lattice
 from .run_figures import (energy, event_lengths, four_phase, fronts, loading_curve, loading_curves, plot_run,
                           plot_runs, precursor_lengths, spacetime)
 
 __all__ = ["loading_curve", "event_lengths", "precursor_lengths", "loading_curves", "four_phase", "spacetime",
            "fronts", "energy", "lattice", "render_lattice", "sweep_precursor_lengths", "sweep_against",
-           "sweep_loading_curves", "work_precision", "plot_run", "plot_runs", "plot_lattice", "plot_sweep",
-           "plot_study", "main", "table", "time_origin", "run_label", "NothingToDraw"]
+           "sweep_loading_curves", "work_precision", "ensemble_work_precision", "single_seed_divergence", "plot_run",
+           "plot_runs", "plot_lattice", "plot_sweep", "plot_study", "main", "table", "time_origin", "run_label",
+           "NothingToDraw"]

@@ -22,6 +22,17 @@ def no_data(ax, what):
     ax.text(0.5, 0.5, what, transform=ax.transAxes, ha="center", va="center", color="0.4", fontsize=9)
 
 
+# What tells the seeds of overlaid runs apart, the colour telling their cases apart.
+SEED_MARKERS = "os^vDP*Xh<>p"
+SEED_LINESTYLES = ["-", "--", ":", "-.", (0, (5, 1, 1, 1, 1, 1)), (0, (1, 3)), (0, (8, 2)), (0, (3, 1, 1, 1))]
+
+
+def seed_style(seeds, seed):
+    """{marker, linestyle} of `seed` among `seeds` (all the seeds drawn, in order)."""
+    k = sorted(set(seeds)).index(seed)
+    return {"marker": SEED_MARKERS[k % len(SEED_MARKERS)], "linestyle": SEED_LINESTYLES[k % len(SEED_LINESTYLES)]}
+
+
 def save(fig, out_dir, name):
     """out_dir/NAME.png and NAME.svg of the figure, which is then closed; the SVG keeps its text as
     text (searchable, editable)."""

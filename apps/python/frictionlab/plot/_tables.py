@@ -38,8 +38,8 @@ def scene_of(run):
 
 
 def campaign_rows(directory, name):
-    """The rows of a campaign's table (sweep.csv, events.csv, study.csv) as dicts of strings, its
-    comment lines left out."""
+    """The rows of a campaign's table (sweep.csv, events.csv, study.csv) as dicts of strings; the
+    comment lines of tables written before the provenance moved to the sidecar are left out."""
     with open(os.path.join(directory, name), newline="") as f:
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
@@ -49,6 +49,16 @@ def sidecar_text(directory, name):
     if there is none."""
     path = os.path.join(directory, name + ".meta.yaml")
     return open(path).read() if os.path.exists(path) else ""
+
+
+def campaign_meta(directory, name):
+    """The provenance a campaign recorded beside its table `name` (NAME.meta.yaml) as a dict:
+    title, seeds, units, ...; empty if there is none."""
+    try:
+        import yaml
+        return yaml.safe_load(sidecar_text(directory, name)) or {}
+    except Exception:  # noqa: BLE001 - a figure without its units is still a figure
+        return {}
 
 
 def number(text):

@@ -1,16 +1,20 @@
-"""The figures of a campaign: a sweep's, from its sweep.csv and events.csv (Li2020 Figs. 7, 8), and an
-accuracy study's work-precision plot, from its study.csv. Each function draws onto the Axes it is
-given (a new figure of the command's size if None) and returns them; plot_sweep and plot_study write
-them as `frictionlab plot SWEEP_DIR` and `frictionlab study` do."""
+"""The figures of a campaign: a sweep's, from its sweep.csv, events.csv and sweep_statistics.csv
+(Li2020 Figs. 7, 8), and an accuracy study's, from its study.csv and, over seeds, its ensemble.csv.
+Each function draws onto the Axes it is given (a new figure of the command's size if None) and
+returns them; plot_sweep and plot_study write them as `frictionlab plot SWEEP_DIR` and
+`frictionlab study` do. Axes name the varied keys by symbol and unit, titles come from the
+campaign file's `title`, an empty panel says why, and the seeds of a case are told apart."""
 import os
 import re
 
+import matplotlib.lines
 import matplotlib.ticker
 import numpy as np
 
 from ._clock import from_loading, overlaid_time_label, time_origin
-from ._figure import axes_of, no_data, save
-from ._tables import campaign_rows, number, sidecar_text, table
+from ._figure import axes_of, no_data, save, seed_style
+from ._labels import key_axis_label, key_display, key_value_label
+from ._tables import campaign_meta, campaign_rows, number, sidecar_text, table
 
 # The columns of sweep.csv that are not a varied key of the scene.
 SWEEP_RESULTS = {"case", "status", "reason", "scene_hash", "global_static_coefficient", "events", "precursor_count",
@@ -27,60 +31,142 @@ def numeric_keys(cases):
     return [k for k in varied_keys(cases) if all(np.isfinite(number(r[k])) for r in cases)]
 
 
-def case_group(row, varied):
-    """The case of a row of sweep.csv or events.csv apart from its seed, as a label."""
-    return ", ".join(f"{k.split('.')[-1]}={row[k]}" for k in varied) or re.sub(r"_seed-[0-9]+$", "", row["case"])
+def sweep_units(sweep):
+    """{column: unit} of sweep.csv, as its sidecar records them (empty for a sweep without one)."""
+    return campaign_meta(sweep, "sweep.csv").get("units") or {}
+
+
+def sweep_title(sweep):
+    """The sweep file's `title` (its sidecar's), else the sweep directory's name."""
+    return campaign_meta(sweep, "sweep.csv").get("title") or os.path.basename(os.path.abspath(sweep))
+
+
+def case_group(row, varied, units=None):
+    """The case of a row of sweep.csv or events.csv apart from its seed, as a label of its values
+    by symbol and unit ("$h$ = 5 mm, $F_N$ = 400 N")."""
+    units = units or {}
+    return (", ".join(key_value_label(k, row[k], units.get(k, "")) for k in varied)
+            or re.sub(r"_seed-[0-9]+$", "", row["case"]))
+
+
+def seed_of_row(row):
+    """The seed of a row of sweep.csv or events.csv (None in a sweep without seeds)."""
+    return row.get("seed") or None
+
+
+def seed_legend(ax, seeds, **legend):
+    """A second legend of the seeds' markers, grey, below the cases' (only with two seeds or more)."""
+    if len(seeds) < 2:
+        return
+    first = ax.get_legend()
+    handles = [matplotlib.lines.Line2D([], [], color="0.4", ls="none", ms=4, marker=seed_style(seeds, s)["marker"],
+                                       label=f"seed {s}") for s in sorted(set(seeds))]
+    ax.legend(handles=handles, **legend)
+    if first is not None:
+        ax.add_artist(first)
 
 
 def sweep_precursor_lengths(sweep, ax=None):
     """l/L against F_S/F_N of every rupture event of every case of the sweep directory `sweep`,
-    coloured by case, seeds together (Li2020 Fig. 7)."""
+    coloured by case, a marker per seed (Li2020 Fig. 7)."""
     cases = campaign_rows(sweep, "sweep.csv")
     events = campaign_rows(sweep, "events.csv")
-    varied = varied_keys(cases)
-    groups = list(dict.fromkeys(case_group(r, varied) for r in cases))
+    varied, units = varied_keys(cases), sweep_units(sweep)
+    groups = list(dict.fromkeys(case_group(r, varied, units) for r in cases))
+    seeds = list(dict.fromkeys(seed_of_row(r) for r in cases))
     ax = axes_of(ax, figsize=(7, 5))
     for k, g in enumerate(groups):
-        pts = [(number(e["force_ratio"]), number(e["extent_over_length"])) for e in events if case_group(e, varied) == g]
-        if pts:
-            ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=f"C{k % 10}", label=g, ms=4, alpha=0.8)
+        for seed in seeds:
+            pts = [(number(e["force_ratio"]), number(e["extent_over_length"])) for e in events
+                   if case_group(e, varied, units) == g and seed_of_row(e) == seed]
+            if pts:
+                first = g not in ax.get_legend_handles_labels()[1]
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], ls="none", marker=seed_style(seeds, seed)["marker"],
+                        color=f"C{k % 10}", label=g if first else None, ms=4, alpha=0.8)
     ax.set_xlabel("$F_S/F_N$ at the event's start")
     ax.set_ylabel("rupture length $l/L$")
     if ax.lines:
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=8, loc="upper left")
+        seed_legend(ax, seeds, fontsize=7, loc="lower right")
     else:
-        no_data(ax, "no rupture event in any case")
-    ax.set_title("every rupture event of every case (Li2020 Fig. 7)")
+        no_data(ax, "no rupture event in any case (events.csv has no row)")
+    ax.set_title(f"{sweep_title(sweep)}: every rupture event of every case", fontsize=10)
     return ax
 
 
+# The panels of sweep_against: the event statistic (sweep_statistics.csv), its title, and why a
+# panel without a value is empty.
+SWEEP_PANELS = [
+    ("precursor_count", "precursors before the first global slip", "no case reached a global slip"),
+    ("first_precursor_force_ratio", "$F_S/F_N$ of the first precursor", "no case had a precursor"),
+    ("global_slip_force_ratio", "$F_S/F_N$ at the first global slip", "no case reached a global slip"),
+]
+
+
+def run_statistics(events):
+    """{statistic of SWEEP_PANELS: value} of one run from its rows of events.csv, as
+    sweep_statistics.csv computes them (share/docs/accuracy-standard.md); NaN where the run lacks
+    the event."""
+    order = sorted(events, key=lambda e: number(e["t_start"]))
+    first_global = next((k for k, e in enumerate(order) if e["kind"] == "global"), None)
+    precursors = [e for e in order[:first_global] if e["kind"] != "global"]
+    return {
+        "precursor_count": float("nan") if first_global is None else float(len(precursors)),
+        "first_precursor_force_ratio": number(precursors[0]["force_ratio"]) if precursors else float("nan"),
+        "global_slip_force_ratio": float("nan") if first_global is None else number(order[first_global]["force_ratio"]),
+    }
+
+
 def sweep_against(sweep, key, axes=None):
-    """The precursor count, the first precursor's F_S/F_N and F_S/F_N at global slip against the
-    numeric varied `key` of the sweep (e.g. "loaders[1].theta"), on three Axes: every seed (dots),
-    their mean (square) and spread (Li2020 Fig. 8)."""
-    cases = campaign_rows(sweep, "sweep.csv")
-    xs = sorted({number(r[key]) for r in cases})
+    """The precursor count before the first global slip, the first precursor's F_S/F_N and F_S/F_N
+    at the first global slip against the numeric varied `key` of the sweep (e.g.
+    "loaders[1].theta"), on three Axes: each seed of a case a faint dot, their mean (square) with
+    its 95 % interval (sweep_statistics.csv; no bar with fewer than two seeds), a series per value
+    of the other varied keys (Li2020 Figs. 7, 8)."""
+    cases = [r for r in campaign_rows(sweep, "sweep.csv") if r["status"] == "done"]
+    events = campaign_rows(sweep, "events.csv")
+    statistics = (campaign_rows(sweep, "sweep_statistics.csv")
+                  if os.path.exists(os.path.join(sweep, "sweep_statistics.csv")) else [])
+    units = sweep_units(sweep)
+    others = [k for k in varied_keys(cases) if k != key]
+    _, _, factor = key_display(key, units.get(key, ""))
+    series = list(dict.fromkeys(tuple(r[k] for k in others) for r in cases))
+    per_run = {r["case"]: run_statistics([e for e in events if e["case"] == r["case"]]) for r in cases}
     axes = axes_of(axes, 1, 3, figsize=(13, 4))
-    for ax, (column, label) in zip(axes, [("precursor_count", "precursors before global slip"),
-                                          ("first_precursor_force_ratio", "$F_S/F_N$ of the first precursor"),
-                                          ("global_static_coefficient", "$F_S/F_N$ at global slip")]):
-        for x in xs:
-            ys = [number(r[column]) for r in cases if number(r[key]) == x and r["status"] == "done"]
-            ys = [y for y in ys if np.isfinite(y)]
-            if ys:
-                ax.plot([x] * len(ys), ys, "o", color="0.6", ms=3)
-                ax.errorbar([x], [np.mean(ys)], yerr=[[np.mean(ys) - min(ys)], [max(ys) - np.mean(ys)]],
-                            fmt="s", color="tab:blue", capsize=3)
-        ax.set_xlabel(key)
-        ax.set_title(label, fontsize=10)
+    for ax, (statistic, title, why) in zip(axes, SWEEP_PANELS):
+        for k, values in enumerate(series):
+            colour = f"C{k % 10}"
+            label = ", ".join(key_value_label(o, v, units.get(o, "")) for o, v in zip(others, values)) or None
+            rows = [r for r in cases if tuple(r[o] for o in others) == values]
+            for x in sorted({number(r[key]) for r in rows}):
+                at = [r for r in rows if number(r[key]) == x]
+                ys = [y for y in (per_run[r["case"]][statistic] for r in at) if np.isfinite(y)]
+                if not ys:
+                    continue
+                ax.plot([x * factor] * len(ys), ys, "o", color=colour, alpha=0.3, ms=3)
+                summary = next((s for s in statistics if s["statistic"] == statistic and number(s[key]) == x
+                                and all(s.get(o) == v for o, v in zip(others, values))), None)
+                mean = number(summary["mean"]) if summary else float(np.mean(ys))
+                low, high = (number(summary["ci_low"]), number(summary["ci_high"])) if summary else (mean, mean)
+                bar = [[mean - low], [high - mean]] if np.isfinite(low) and np.isfinite(high) else None
+                ax.errorbar([x * factor], [mean], yerr=bar, fmt="s", color=colour, capsize=3, ms=5,
+                            label=label if label not in ax.get_legend_handles_labels()[1] else None)
+        ax.set_xlabel(key_axis_label(key, units.get(key, "")))
+        ax.set_title(title, fontsize=10)
+        if not ax.lines:
+            no_data(ax, why)
+        elif len(series) > 1:
+            ax.legend(fontsize=7)
     return axes
 
 
 def sweep_loading_curves(sweep, ax=None):
-    """Every case's F_S against time since its loading started, overlaid, coloured by case."""
+    """Every case's F_S against time since its loading started, overlaid, coloured by case, a line
+    style per seed."""
     cases = campaign_rows(sweep, "sweep.csv")
-    varied = varied_keys(cases)
-    groups = list(dict.fromkeys(case_group(r, varied) for r in cases))
+    varied, units = varied_keys(cases), sweep_units(sweep)
+    groups = list(dict.fromkeys(case_group(r, varied, units) for r in cases))
+    seeds = list(dict.fromkeys(seed_of_row(r) for r in cases))
     ax = axes_of(ax, figsize=(7, 5))
     unknown = False  # a case whose loading start is unknown is drawn from its own start
     for r in cases:
@@ -91,16 +177,18 @@ def sweep_loading_curves(sweep, ax=None):
         t0, since = time_origin(case)
         unknown = unknown or since != "loading started"
         loading = from_loading(curve["time"], t0)
-        group = case_group(r, varied)
+        group = case_group(r, varied, units)
+        seed = seed_of_row(r)
+        label = group + (f", seed {seed}" if len(seeds) > 1 else "")
         ax.plot(curve["time"][loading] - t0, curve["driving_force"][loading], lw=0.8,
-                color=f"C{groups.index(group) % 10}",
-                label=group if group not in ax.get_legend_handles_labels()[1] else None)
+                color=f"C{groups.index(group) % 10}", linestyle=seed_style(seeds, seed)["linestyle"], label=label)
     ax.set_xlabel(overlaid_time_label(unknown))
-    ax.set_ylabel("driving force $F_S$ (N)")
+    ax.set_ylabel("driving force $F_S$ [N]")
     if ax.lines:
         ax.legend(fontsize=8)
     else:
-        no_data(ax, "no case has a loading_curve table")
+        no_data(ax, "no case has a loading_curve table:\nthe sweep's scene has no loading_curve observer")
+    ax.set_title(f"{sweep_title(sweep)}: the loading curves of its cases", fontsize=10)
     return ax
 
 
@@ -109,9 +197,13 @@ def plot_sweep(sweep):
     sweep_loading_curves, into the sweep directory's plots/ as PNG and SVG."""
     out = os.path.join(sweep, "plots")
     save(sweep_precursor_lengths(sweep).figure, out, "sweep_precursor_lengths")
-    for key in numeric_keys(campaign_rows(sweep, "sweep.csv")):
+    cases = campaign_rows(sweep, "sweep.csv")
+    seeds = len({seed_of_row(r) for r in cases})
+    for key in numeric_keys(cases):
         fig = sweep_against(sweep, key)[0].figure
-        fig.suptitle("mean (square), seeds (dots) and their spread (Li2020 Fig. 8)")
+        over = f"the mean over {seeds} seeds (square) with its 95 % interval, each seed (faint dot)" if seeds > 1 \
+            else "each case (square)"
+        fig.suptitle(f"{sweep_title(sweep)}: {over}")
         fig.tight_layout()
         save(fig, out, "sweep_against_" + key.split(".")[-1])
     save(sweep_loading_curves(sweep).figure, out, "sweep_loading_curves")
@@ -203,3 +295,117 @@ def plot_study(study):
     fig.suptitle(f"{title}: relative error against the reference{over} (0 and NaN not drawn)")
     fig.tight_layout(rect=(0, 0.05, 1, 0.97))
     save(fig, study, "work_precision")
+    if os.path.exists(os.path.join(study, "ensemble.csv")):
+        fig = ensemble_work_precision(study)[0].figure
+        fig.suptitle(f"{title}: each case's mean less the reference's over {len(study_seeds(study))} seeds, "
+                     "with its 95 % bootstrap interval")
+        fig.tight_layout(rect=(0, 0, 1, 0.96))
+        save(fig, study, "ensemble_work_precision")
+        fig = single_seed_divergence(study)[0].figure
+        fig.suptitle(f"{title}: what one seed predicts, RK4 at dt against dt/2 (the half_step case)")
+        fig.tight_layout(rect=(0, 0, 1, 0.94))
+        save(fig, study, "single_seed_divergence")
+
+
+def study_seeds(study):
+    """The seeds of a study's first ensemble (its sidecar's `seeds`)."""
+    return list(campaign_meta(study, "ensemble.csv").get("seeds") or campaign_meta(study, "study.csv").get("seeds")
+                or [])
+
+
+def ensemble_work_precision(study, axes=None):
+    """For each event statistic of ensemble.csv, each case's ensemble error (its mean less the
+    reference's, over the study's seeds) with its 95 % bootstrap interval against its CPU time per
+    run, a colour per family; the dashed lines are ± the tolerance of the accuracy standard
+    (max(2 se, the step-halving spread)); a panel says why it is empty. Axes: 2 x 5."""
+    rows = [r for r in campaign_rows(study, "ensemble.csv") if r["ensemble"] == "1" and r["verdict"] != "reference"]
+    statistics = list(dict.fromkeys(r["statistic"] for r in campaign_rows(study, "ensemble.csv")))
+    families = list(dict.fromkeys(r["family"] for r in rows))
+    axes = np.reshape(axes_of(axes, 2, 5, figsize=(18, 7)), (-1,))
+    for ax, statistic in zip(axes, statistics):
+        of = [r for r in rows if r["statistic"] == statistic]
+        unit = of[0]["unit"] if of else ""
+        for r in of:
+            d, low, high = number(r["difference"]), number(r["difference_ci_low"]), number(r["difference_ci_high"])
+            if not np.isfinite(d):
+                continue
+            bar = [[d - low], [high - d]] if np.isfinite(low) and np.isfinite(high) else None
+            colour = f"C{families.index(r['family']) % 10}"
+            marker = "x" if r["verdict"] == "fail" else "o"
+            ax.errorbar([number(r["cpu_seconds"])], [d], yerr=bar, fmt=marker, color=colour, capsize=3, ms=5,
+                        label=r["family"] if r["family"] not in ax.get_legend_handles_labels()[1] else None)
+            ax.annotate(r["case"], (number(r["cpu_seconds"]), d), fontsize=6, xytext=(3, 3),
+                        textcoords="offset points")
+            tolerance = number(r["tolerance"])
+            if np.isfinite(tolerance):
+                ax.plot([number(r["cpu_seconds"])] * 2, [-tolerance, tolerance], "_", color=colour, ms=8, alpha=0.6)
+        ax.set_title(statistic.replace("_", " "), fontsize=9)
+        ax.set_ylabel(f"case − reference [{unit}]" if unit not in ("", "1") else "case − reference")
+        if not ax.lines:
+            no_data(ax, "no seed of the reference or of a case\nreached this event" if of else "only the reference")
+        else:
+            ax.axhline(0, color="0.6", lw=0.6)
+            ax.set_xscale("log")
+            ax.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda value, _: f"{value:g}"))
+    for ax in axes[len(statistics):]:
+        ax.set_visible(False)
+    for ax in axes[-5:]:
+        ax.set_xlabel("CPU time per run [s]")
+    handles = {lab: h for ax in axes for h, lab in zip(*ax.get_legend_handles_labels())}
+    if handles:
+        axes[0].legend(handles.values(), handles.keys(), fontsize=7)
+    return axes
+
+
+def seed_runs(study, case):
+    """{seed: run directory} of a study's case over its seeds (cases/<case>/seed_<n>)."""
+    folder = os.path.join(study, "cases", case)
+    runs = {}
+    for name in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
+        if name.startswith("seed_") and name[5:].isdigit():
+            runs[int(name[5:])] = os.path.join(folder, name)
+    return runs
+
+
+def event_divergence(coarse, fine):
+    """(ranks, |Δ t_start|, |Δ F_S/F_N|) of two runs' rupture events taken in order of their start,
+    as far as both have events; None if either has no precursors table."""
+    a, b = table(coarse, "precursors"), table(fine, "precursors")
+    if a is None or b is None:
+        return None
+    a, b = np.sort(a, order="t_start"), np.sort(b, order="t_start")
+    n = min(len(a), len(b))
+    return (np.arange(1, n + 1), np.abs(a["t_start"][:n] - b["t_start"][:n]),
+            np.abs(a["force_ratio"][:n] - b["force_ratio"][:n]))
+
+
+def single_seed_divergence(study, axes=None):
+    """Per seed of the study's first ensemble, how far RK4 at dt (the reference) and at dt/2 (the
+    `half_step` case) of that one seed part: the difference of the k-th rupture event's start time
+    and of its F_S/F_N against its rank k, a marker and line style per seed, on two Axes. A single
+    seed predicts an event only as far as this stays small."""
+    axes = axes_of(axes, 1, 2, figsize=(12, 4.5))
+    reference, half = seed_runs(study, "reference"), seed_runs(study, "half_step")
+    seeds = [s for s in (study_seeds(study) or sorted(reference)) if s in reference and s in half]
+    for seed in seeds:
+        drawn = event_divergence(reference[seed], half[seed])
+        if drawn is None:
+            continue
+        ranks, times, ratios = drawn
+        style = seed_style(seeds, seed)
+        for ax, values in zip(axes, (times * 1e3, ratios)):
+            ax.plot(ranks, values, color=f"C{seeds.index(seed) % 10}", alpha=0.8, ms=4, lw=0.8, label=f"seed {seed}",
+                    **style)
+    titles = ["start time of the k-th rupture event", "$F_S/F_N$ at the k-th event's start"]
+    for ax, title, unit in zip(axes, titles, ("|Δt| [ms]", "|Δ($F_S/F_N$)|")):
+        ax.set_title(title, fontsize=10)
+        ax.set_xlabel("event rank k (by start time)")
+        ax.set_ylabel(f"RK4 dt vs dt/2: {unit}")
+        ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+        if ax.lines:
+            ax.legend(fontsize=7)
+        elif not half:
+            no_data(ax, "the study has no half_step case (RK4 at half the reference's step)")
+        else:
+            no_data(ax, "no seed has rupture events in both the reference and the half_step case")
+    return axes

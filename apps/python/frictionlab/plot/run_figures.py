@@ -8,8 +8,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from ._clock import from_loading, overlaid_time_label, time_origin
-from ._figure import NothingToDraw, axes_of, no_data, write
-from ._labels import no_events_note, run_label, run_labels
+from ._figure import NothingToDraw, axes_of, no_data, seed_style, write
+from ._labels import no_events_note, run_label, run_labels, seed_of
 from ._tables import has_table, run_directory, scene_of, table
 from .lattice_rendering import plot_lattice
 
@@ -72,12 +72,14 @@ def precursor_lengths(runs, ax=None):
     8); `runs`: a list of runs."""
     ax = axes_of(ax, figsize=(5, 4))
     plotted = False
-    for run in runs:
+    seeds = [seed_of(run) for run in runs]
+    labels = run_labels(runs) if len(runs) > 1 else [run_label(runs[0], short=True)]
+    for run, seed, label in zip(runs, seeds, labels):
         events = table(run, "precursors")
         if events is None:
             continue
-        ax.plot(events["force_ratio"], events["extent_over_length"], "o-", ms=4, lw=0.8,
-                label=run_label(run, short=len(runs) > 1))
+        ax.plot(events["force_ratio"], events["extent_over_length"], ms=4, lw=0.8, label=label,
+                **seed_style(seeds, seed))  # the seeds told apart by marker and line
         plotted = True
     if plotted:
         ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
@@ -96,7 +98,8 @@ def loading_curves(runs, ax=None):
     labelled apart (run_labels)."""
     ax = axes_of(ax, figsize=(7, 4))
     unknown = False  # a run whose loading start is unknown is drawn from its own start
-    for run, label in zip(runs, run_labels(runs)):
+    seeds = [seed_of(run) for run in runs]
+    for run, seed, label in zip(runs, seeds, run_labels(runs)):
         curve = table(run, "loading_curve")
         if curve is None or "driving_force_over_normal_load" not in curve.dtype.names:
             continue
@@ -105,6 +108,7 @@ def loading_curves(runs, ax=None):
         unknown = unknown or not known
         loading = from_loading(curve["time"], t0)
         ax.plot(curve["time"][loading] - t0, curve["driving_force_over_normal_load"][loading], lw=1,
+                linestyle=seed_style(seeds, seed)["linestyle"],  # the seeds told apart
                 label=label + ("" if known else " (from the run's start)"))
     if ax.lines:
         ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))

@@ -53,6 +53,12 @@ public:
     /// the first step (it costs a pass per effect and evaluation, so only an observer that needs it
     /// may ask; the view an observer gets is read-only, so it cannot switch it on itself).
     virtual bool needs_work_accounting() const { return false; }
+    /// While positive, the run observes it this often (s) besides its own cadence: a detector
+    /// samples a running rupture's front finer than its table's cadence. Asked after each observation.
+    virtual double finer_cadence() const { return 0; }
+    /// An observation at the finer cadence, between two of its own: it may refine what it measures
+    /// (an arrival time) but should decide nothing its own cadence decides. By default, an ordinary one.
+    virtual void observe_between(const RunView& view) { observe(view); }
 };
 
 /// Advances the system by one accepted step, obeying the freeze-and-commit rule.

@@ -5,6 +5,7 @@
 // precursor that never came) is NaN, and an ensemble counts it apart.
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,12 @@ struct EventStatistics {
 /// no drops), with `load_start` the time loading began, s.
 EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::filesystem::path& loading_curve,
                                       double load_start);
+
+/// When loading begins in a run of `scene`: the start of its last stage, s.
+double load_start(const Scene& scene);
+
+/// The statistics of the run of `scene` from the files it wrote into its output directory (its
+/// loading curve: loading_curve.csv); nothing if the scene has no `precursors` observer.
+std::optional<EventStatistics> run_event_statistics(const Scene& scene);
 
 }  // namespace frictionlab

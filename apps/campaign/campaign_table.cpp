@@ -1,0 +1,51 @@
+#include "frictionlab/campaign/campaign_table.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "frictionlab/base/version.hpp"
+#include "frictionlab/campaign/csv_cell.hpp"
+#include "frictionlab/output/atomic_file.hpp"
+#include "frictionlab/output/provenance.hpp"
+
+namespace frictionlab {
+
+std::vector<CampaignColumn> statistic_summary_columns() {
+    return {{"statistic", ""},
+            {"unit", ""},
+            {"n", "1"},
+            {"missing", "1"},
+            {"mean", unit_of_row},
+            {"sd", unit_of_row},
+            {"ci_low", unit_of_row},
+            {"ci_high", unit_of_row}};
+}
+
+void write_campaign_table(const Campaign& campaign, const std::string& kind, const std::filesystem::path& file,
+                          const std::vector<CampaignColumn>& columns, const std::string& rows,
+                          const std::string& note) {
+    std::vector<std::string> names;
+    std::string header;
+    for (const auto& c : columns) {
+        names.push_back(c.name);
+        // fmt, not "," + a temporary string: GCC 12 reports a false -Wrestrict on that.
+        header += header.empty() ? csv_cell(c.name) : fmt::format(",{}", csv_cell(c.name));
+    }
+    YAML::Emitter y;
+    y << YAML::BeginMap;
+    y << YAML::Key << "framework" << YAML::Value << "frictionlab";
+    y << YAML::Key << "version" << YAML::Value << framework_version();
+    y << YAML::Key << kind + "_file" << YAML::Value << campaign.file.filename().string();
+    y << YAML::Key << "title" << YAML::Value << campaign.title;
+    y << YAML::Key << "seeds" << YAML::Value << YAML::Flow << campaign.seeds;
+    y << YAML::Key << "note" << YAML::Value << note;
+    y << YAML::Key << "columns" << YAML::Value << YAML::Flow << names;
+    y << YAML::Key << "units" << YAML::Value << YAML::BeginMap;
+    // Quoted, so that "1" reads back as the text of a unit, not as a number.
+    for (const auto& c : columns) y << YAML::Key << c.name << YAML::Value << YAML::DoubleQuoted << c.unit;
+    y << YAML::EndMap << YAML::EndMap;
+    write_file_atomically(table_sidecar_path(file), std::string(y.c_str()) + "\n");
+    write_file_atomically(file, header + "\n" + rows);
+}
+
+}  // namespace frictionlab
