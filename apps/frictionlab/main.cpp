@@ -10,8 +10,10 @@
 #include <CLI/CLI.hpp>
 
 #include "commands/command.hpp"
+#include "commands/scene_input.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
+#include "frictionlab/base/scene_errors.hpp"
 #include "frictionlab/base/version.hpp"
 #include "global_options.hpp"
 #include "unknown_command.hpp"
@@ -59,6 +61,10 @@ int main(int argc, char** argv) {
         *std::find_if(executes.begin(), executes.end(), [](const auto& e) { return e.first->parsed(); });
     try {
         return chosen.second({global, *log, {argv, argv + argc}});
+    } catch (const SceneErrors& e) {
+        // Each diagnostic names its severity itself ("file:line:col: error: ..."): printed as they
+        // are, once, as validation prints them, not inside a log line of their own.
+        return cli::report_errors(e.diagnostics());
     } catch (const InputError& e) {
         log->error("{}", e.what());
         return exit_code::bad_input;

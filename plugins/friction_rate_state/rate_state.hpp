@@ -70,6 +70,10 @@ public:
     /// imex_euler takes it implicitly; an explicit step would need h f_N a / (m |v|) < ~2.
     bool has_velocity_jacobian() const override { return true; }
     void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
+    std::string needs_implicit_velocity() const override {
+        return "rate_state is too stiff in the slip velocity near rest for an explicit step (dF/dv = f_N a / w, "
+               "theory.md D.2.4)";
+    }
     /// dmu/dv at (v, psi) = a / sqrt(v^2 + w^2).
     double coefficient_slope(double v, double psi) const;
 

@@ -91,7 +91,12 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
 }
 
 ContactArea::ContactArea(const Params& p, const Context& ctx)
-    : params_(spec().checked(p)), counts_(JunctionCounts::need(ctx)) {}
+    : params_(spec().checked(p)),
+      counts_(JunctionCounts::need(ctx,
+                                   "it reports the junction phases (pinned, sliding, dislocated) "
+                                   "of a friction law with junctions (two_state_junctions, "
+                                   "three_state_junctions): remove this observer, or read slip, velocity and "
+                                   "friction along the interface from interface_history")) {}
 
 double ContactArea::bond_force_x(double k, double r0, double xi, double zi, double xj, double zj) {
     const double dx = xj - xi, dz = zj - zi;

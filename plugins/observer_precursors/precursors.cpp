@@ -61,11 +61,14 @@ ParamSpec<Precursors::Params> Precursors::spec() {
         "Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
         "theory.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
         "as CSV tables and a summary with the global static coefficient.");
-    s.choice("criterion", &Params::criterion,
-             {{"pinned_fraction", Criterion::pinned_fraction}, {"slip", Criterion::slip}},
-             "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
-             "pinned; needs the junction-count fields) or 'slip' (it slipped more than slip_threshold within "
-             "quiet_time). Either way a block out of contact (lifted off) is not ruptured.");
+    s.choice(
+        "criterion", &Params::criterion,
+        {{"auto", Criterion::automatic}, {"pinned_fraction", Criterion::pinned_fraction}, {"slip", Criterion::slip}},
+        "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
+        "pinned; needs the junction-count fields) or 'slip' (it slipped more than slip_threshold within "
+        "quiet_time); 'auto': pinned_fraction where the friction law publishes junction counts, slip "
+        "otherwise (run.yaml records which, under resolved_choices). Either way a block out of contact "
+        "(lifted off) is not ruptured.");
     s.add("ruptured_fraction", &Params::ruptured_fraction,
           "Criterion pinned_fraction: fraction of a block's junctions that must be sliding or dislocated.")
         .unit("1")
@@ -112,7 +115,18 @@ ParamSpec<Precursors::Params> Precursors::spec() {
 }
 
 Precursors::Precursors(const Params& p, const Context& ctx) : params_(spec().checked(p)) {
-    if (params_.criterion == Criterion::pinned_fraction) counts_ = JunctionCounts::need(ctx);
+    if (params_.criterion == Criterion::automatic) {
+        // Built after every effect: the junction counts are published by now, or never.
+        const bool counts = ctx.quantities && JunctionCounts::published(*ctx.quantities);
+        params_.criterion = counts ? Criterion::pinned_fraction : Criterion::slip;
+        ctx.resolved("criterion", counts ? "pinned_fraction" : "slip",
+                     counts ? "the friction law publishes junction counts"
+                            : "no effect of this scene publishes junction counts");
+    }
+    if (params_.criterion == Criterion::pinned_fraction)
+        counts_ = JunctionCounts::need(ctx,
+                                       "set criterion: slip (or auto, which chooses slip without junction "
+                                       "counts), or use a friction law with junctions");
 }
 
 void Precursors::begin(const RunView& view) {

@@ -61,9 +61,9 @@ public:
     void serialize(Archive& ar) {
         ar(as_built(detector_), as_built(slip_criterion_), ruptured_, contact_changes_);
     }
-    enum class Criterion { pinned_fraction, slip };
+    enum class Criterion { automatic, pinned_fraction, slip };
     struct Params {
-        Criterion criterion = Criterion::pinned_fraction;
+        Criterion criterion = Criterion::automatic;
         double ruptured_fraction = 0.5;
         double slip_threshold = 0.5e-6;
         double quiet_time = 2e-3;

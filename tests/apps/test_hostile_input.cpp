@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -169,16 +170,45 @@ TEST_F(HostileInput, AnObserverReadingWhatNoEffectPublishesIsRefusedAtTheObserve
     // no friction law: refused by check as by run, at the observer, naming the field.
     std::ofstream(dir_ / "no_junctions.yaml") << read_text(tiny()) << "  - type: contact_area\n    every: 2.0e-5\n";
     expect_refused((dir_ / "no_junctions.yaml").string(),
-                   "no_junctions.yaml:32:5: error: observers[1]: contact_area reads the field 'junctions_dislocated' "
-                   "over node set 'interface', which no effect of this scene computes");
-    // precursors by its default criterion, the pinned fraction, likewise; by slip it reads none.
-    std::ofstream(dir_ / "precursors.yaml") << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n";
+                   "no_junctions.yaml:32:5: error: observers[1]: contact_area reads the fields 'junctions_dislocated', "
+                   "'junctions_pinned', 'junctions_sliding' over node set 'interface', which no effect of this scene "
+                   "publishes: it reports the junction phases");
+    // precursors by the pinned fraction likewise, naming the criterion that does without them.
+    std::ofstream(dir_ / "precursors.yaml")
+        << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n    criterion: pinned_fraction\n";
     expect_refused((dir_ / "precursors.yaml").string(),
-                   "precursors.yaml:32:5: error: observers[1]: precursors reads the field 'junctions_dislocated'");
-    std::ofstream(dir_ / "slip_precursors.yaml")
-        << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n    criterion: slip\n";
-    const auto slip = frictionlab("check slip_precursors.yaml", dir_);
-    EXPECT_EQ(slip.code, 0) << slip.output;
+                   "precursors.yaml:32:5: error: observers[1]: precursors reads the fields 'junctions_dislocated', "
+                   "'junctions_pinned', 'junctions_sliding' over node set 'interface', which no effect of this scene "
+                   "publishes: set criterion: slip");
+    // By its default criterion, auto, it chooses slip here, and check says so.
+    std::ofstream(dir_ / "auto_precursors.yaml") << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n";
+    const auto chosen = frictionlab("check auto_precursors.yaml", dir_);
+    EXPECT_EQ(chosen.code, 0) << chosen.output;
+    const std::string said = "observers[1].criterion: auto is slip (no effect of this scene publishes junction counts)";
+    EXPECT_NE(chosen.output.find(said), std::string::npos) << chosen.output;
+}
+
+TEST_F(HostileInput, EveryRefusalOfTheAssembledSceneAtOnceEachWithOneErrorPrefix) {
+    // Two observers that need junction counts, and a law that needs an implicit integrator: three
+    // diagnostics in one pass, printed as validation prints them, not inside a log line.
+    std::ofstream(dir_ / "three.yaml") << read_text(tiny())
+                                       << "  - type: contact_area\n    every: 2.0e-5\n"
+                                          "  - type: precursors\n    every: 2.0e-5\n    criterion: pinned_fraction\n"
+                                          "friction:\n  type: rate_state\n";
+    for (const char* command : {"check", "run -o out"}) {
+        const auto r = frictionlab(std::string(command) + " three.yaml", dir_);
+        EXPECT_EQ(r.code, 2) << r.output;
+        EXPECT_NE(r.output.find("three.yaml:32:5: error: observers[1]: contact_area"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("three.yaml:34:5: error: observers[2]: precursors"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("error: integrator: rate_state is too stiff"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("integrator: {type: imex_euler"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("3 errors in three.yaml"), std::string::npos) << r.output;
+        std::istringstream lines(r.output);
+        for (std::string line; std::getline(lines, line);)
+            EXPECT_EQ(line.find("error:"), line.rfind("error:")) << "one error: prefix: " << line;
+        EXPECT_EQ(r.output.find("] error"), std::string::npos) << "not a log line: " << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << "refused before its first step: no output directory";
 }
 
 TEST_F(HostileInput, AContactRadiusGivingNoJunctionStopsTheRunNamingIt) {

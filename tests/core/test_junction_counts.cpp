@@ -77,12 +77,13 @@ TEST(JunctionCounts, AReaderNeedsThemOverItsInterfaceAndReadsWhatTheLawWrites) {
     const Body body = three_blocks();
     Quantities q;
     const Context ctx{log, 0, &body, &q, nullptr, "observers[1]"};
-    const JunctionCounts c = JunctionCounts::need(ctx);
+    const JunctionCounts c = JunctionCounts::need(ctx, "set criterion: slip");
     const auto missing = q.unpublished_fields();
     ASSERT_EQ(missing.size(), 3u);
     for (const auto& m : missing) {
         EXPECT_EQ(m.node_set, "interface");
-        EXPECT_EQ(m.reader, "observers[1]");
+        EXPECT_EQ(m.reader.component, "observers[1]");
+        EXPECT_EQ(m.reader.remedy, "set criterion: slip");
     }
     const auto w = JunctionCounts::publish(q, "interface", 3);
     EXPECT_TRUE(q.unpublished_fields().empty());

@@ -44,17 +44,19 @@ TEST(Quantities, AFieldNeededBeforeItIsPublishedSharesThePublishersStorage) {
     EXPECT_TRUE(q.unpublished_fields().empty());
 }
 
-TEST(Quantities, AFieldNeededButNeverPublishedIsNamedWithItsFirstReader) {
+TEST(Quantities, AFieldNeededButNeverPublishedIsNamedWithEveryReaderAndItsRemedy) {
     Quantities q;
-    q.needed_field("junctions_pinned", "interface", 4, "observers[0]");
+    q.needed_field("junctions_pinned", "interface", 4, "observers[0]", "set criterion: slip");
     q.needed_field("junctions_pinned", "interface", 4, "observers[2]");
     q.field("driving_force_field", "top", 1, "N", "");  // published, read by nobody: not listed
     const auto missing = q.unpublished_fields();
-    ASSERT_EQ(missing.size(), 1u);
-    EXPECT_EQ(missing[0].name, "junctions_pinned");
-    EXPECT_EQ(missing[0].node_set, "interface");
-    EXPECT_EQ(missing[0].reader, "observers[0]");
-    EXPECT_EQ(q.find_field("junctions_pinned")->readers, (std::vector<std::string>{"observers[0]", "observers[2]"}));
+    ASSERT_EQ(missing.size(), 2u);
+    for (const auto& m : missing) {
+        EXPECT_EQ(m.name, "junctions_pinned");
+        EXPECT_EQ(m.node_set, "interface");
+    }
+    EXPECT_EQ(missing[0].reader, (Quantities::Reader{"observers[0]", "set criterion: slip"}));
+    EXPECT_EQ(missing[1].reader, (Quantities::Reader{"observers[2]", ""}));
 }
 
 TEST(Quantities, AFieldDeclaredOverAnotherNodeSetOrSizeIsAnInputError) {

@@ -1,7 +1,9 @@
 // The friction-law swap (README, "Swap the friction law"): one scene, scenes/swap_base.yaml, run by
 // the frictionlab command once per shipped friction law, with only its `friction:` block replaced by
 // the law's block (scenes/friction_<law>.yaml). Each run must show its own law's signature in the
-// observers' CSV outputs; every other line of the scene is the same.
+// observers' CSV outputs; every other line of the scene is the same. And the headline scene itself,
+// configs/headline.yaml, with each shipped law's or bulk model's block swapped in: it runs, or `check`
+// names every change still needed at once.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -34,25 +36,33 @@ std::vector<std::string> lines_of(const std::string& text) {
 /// Whether a line opens a top-level key (the end of the block before it).
 bool top_level(const std::string& line) { return !line.empty() && line[0] != ' ' && line[0] != '#'; }
 
-/// [first, last) lines of the scene's top-level `friction:` block (empty at the end if it has none).
-std::pair<std::size_t, std::size_t> friction_block(const std::vector<std::string>& lines) {
+/// [first, last) lines of the scene's top-level `key:` block (empty at the end if it has none).
+std::pair<std::size_t, std::size_t> top_level_block(const std::vector<std::string>& lines, const std::string& key) {
     std::size_t first = 0;
-    while (first < lines.size() && lines[first].rfind("friction:", 0) != 0) ++first;
+    while (first < lines.size() && lines[first].rfind(key + ":", 0) != 0) ++first;
     if (first == lines.size()) return {first, first};
     std::size_t last = first + 1;
     while (last < lines.size() && !top_level(lines[last])) ++last;
     return {first, last};
 }
 
-/// The base scene with its friction block replaced by `block`; all other lines untouched.
-std::string with_friction(const std::string& base, const std::string& block) {
+std::pair<std::size_t, std::size_t> friction_block(const std::vector<std::string>& lines) {
+    return top_level_block(lines, "friction");
+}
+
+/// The base scene with its top-level `key:` block replaced by `block`; all other lines untouched.
+std::string with_block(const std::string& base, const std::string& key, const std::string& block) {
     const auto lines = lines_of(base);
-    const auto [first, last] = friction_block(lines);
+    const auto [first, last] = top_level_block(lines, key);
     std::string out;
     for (std::size_t i = 0; i < first; ++i) out += lines[i] + "\n";
     out += block;
     for (std::size_t i = last; i < lines.size(); ++i) out += lines[i] + "\n";
     return out;
+}
+
+std::string with_friction(const std::string& base, const std::string& block) {
+    return with_block(base, "friction", block);
 }
 
 /// Lines outside the friction block.
@@ -312,6 +322,105 @@ TEST(FrictionSwap, RateStateSlidesSteadilyAtTheClosedFormSteadyFriction) {
     // Steady within the tables' 10 digits (measured: 1.5e-9 and 4e-11 after 30 ms of loading).
     EXPECT_LT(worst_v, 1e-6) << "not sliding steadily at V";
     EXPECT_LT(worst_mu, 1e-8) << "mu_ss(V) = " << mu_ss;
+}
+
+/// The headline scene with one observer (an item `  - type: <type>` of `observers:`) taken out.
+std::string without_observer(const std::string& scene, const std::string& type) {
+    std::string out;
+    bool skipping = false;
+    for (const auto& line : lines_of(scene)) {
+        if (line.rfind("  - ", 0) == 0 || top_level(line)) skipping = line == "  - type: " + type;
+        if (!skipping) out += line + "\n";
+    }
+    return out;
+}
+
+/// One swap into configs/headline.yaml: the block, the diagnostics `check` must give all at once (by
+/// key path, each naming its fix), and the fixes that then make it pass.
+struct HeadlineSwap {
+    std::string key, block;
+    std::vector<std::pair<std::string, std::string>> errors;  // key path, a phrase of its fix
+    std::vector<std::string> observers_to_remove;
+    std::string overrides;  // --set options
+};
+
+/// Lines of `output` that hold a diagnostic.
+std::vector<std::string> diagnostics_of(const std::string& output) {
+    std::vector<std::string> out;
+    for (const auto& line : lines_of(output))
+        if (line.find("error:") != std::string::npos) out.push_back(line);
+    return out;
+}
+
+void swap_into_headline(const HeadlineSwap& swap) {
+    const std::string headline = testing::read_text(HEADLINE_SCENE);
+    ASSERT_FALSE(headline.empty());
+    std::string variant = with_block(headline, swap.key, swap.block);
+    const fs::path dir = testing::work_directory();
+    std::ofstream(dir / "scene.yaml") << variant;
+    const auto checked = testing::frictionlab("check scene.yaml", dir);
+    const std::string what = swap.key + ": " + swap.block;
+    if (swap.errors.empty()) {
+        EXPECT_EQ(checked.code, 0) << what << checked.output;
+        EXPECT_NE(checked.output.find("stage 'settle': stable step"), std::string::npos) << checked.output;
+    } else {
+        EXPECT_EQ(checked.code, 2) << what << checked.output;
+        // Every change needed at once, each diagnostic once, GCC-style with one `error:`, at its
+        // place in the scene and naming the fix.
+        const auto found = diagnostics_of(checked.output);
+        EXPECT_EQ(found.size(), swap.errors.size()) << what << checked.output;
+        const std::string count = fmt::format("{} error{} in scene.yaml", found.size(), found.size() == 1 ? "" : "s");
+        EXPECT_NE(checked.output.find(count), std::string::npos) << checked.output;
+        for (const auto& line : found) {
+            EXPECT_EQ(line.find("error:"), line.rfind("error:")) << "one error: prefix: " << line;
+            EXPECT_NE(line.rfind("scene.yaml:", 0), std::string::npos) << "file:line:column first: " << line;
+        }
+        for (const auto& [path, fix] : swap.errors) {
+            const bool named = std::any_of(found.begin(), found.end(), [&](const std::string& line) {
+                return line.find(": error: " + path + ":") != std::string::npos && line.find(fix) != std::string::npos;
+            });
+            EXPECT_TRUE(named) << what << ": " << path << " naming '" << fix << "'\n" << checked.output;
+        }
+        // The fixes named, all of them at once, make the scene pass.
+        for (const auto& type : swap.observers_to_remove) variant = without_observer(variant, type);
+        std::ofstream(dir / "scene.yaml") << variant;
+        const auto fixed = testing::frictionlab("check scene.yaml" + swap.overrides, dir);
+        EXPECT_EQ(fixed.code, 0) << what << ", fixed:\n" << variant << fixed.output;
+    }
+    // And a short run of it: the settling and 2 ms of loading.
+    const auto ran =
+        testing::frictionlab("run -q scene.yaml --set stages[1].duration=0.002 --set output=out" + swap.overrides, dir);
+    EXPECT_EQ(ran.code, 0) << what << ran.output;
+    const YAML::Node record = YAML::LoadFile((dir / "out" / "run.yaml").string());
+    EXPECT_EQ(record["status"].as<std::string>(), "completed") << what;
+    const bool counts = swap.block.find("junctions") != std::string::npos || swap.key == "bulk";
+    EXPECT_EQ(record["resolved_choices"]["observers[1].criterion"]["value"].as<std::string>(),
+              counts ? "pinned_fraction" : "slip")
+        << what;
+}
+
+const std::pair<std::string, std::string> contact_area{"observers[2]", "remove this observer"};
+
+TEST(FrictionSwap, TheHeadlineTakesEveryLawByItsFrictionBlockOrCheckNamesEveryFixAtOnce) {
+    swap_into_headline({"friction", "friction:\n  type: three_state_junctions\n", {}, {}, ""});
+    swap_into_headline({"friction", "friction:\n  type: two_state_junctions\n", {}, {}, ""});
+    // Without junctions: the precursors' criterion becomes slip by itself; contact_area, which reports
+    // the junction phases, says to take it out.
+    for (const char* law : {"coulomb", "slip_weakening"})
+        swap_into_headline(
+            {"friction", fmt::format("friction:\n  type: {}\n", law), {contact_area}, {"contact_area"}, ""});
+    // Rate and state also needs an integrator that takes its velocity dependence implicitly: said by
+    // check, not at the end of settling.
+    swap_into_headline({"friction",
+                        "friction:\n  type: rate_state\n",
+                        {contact_area, {"integrator", "type: imex_euler"}},
+                        {"contact_area"},
+                        " --set 'integrator={type: imex_euler, dt: 2.0e-7}'"});
+}
+
+TEST(FrictionSwap, TheHeadlineTakesEveryBulkModelByItsBulkBlock) {
+    swap_into_headline({"bulk", "bulk:\n  type: spring_lattice_2d\n", {}, {}, ""});
+    swap_into_headline({"bulk", "bulk:\n  type: chain_1d\n", {}, {}, ""});
 }
 
 }  // namespace

@@ -14,6 +14,10 @@ int report_errors(const Diagnostics& diagnostics, const std::filesystem::path& f
     return exit_code::bad_input;
 }
 
+int report_errors(const Diagnostics& diagnostics) {
+    return report_errors(diagnostics, diagnostics.empty() ? "the scene" : diagnostics.list().front().where.file);
+}
+
 std::optional<Scene> read_scene(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                                 const GlobalOptions& global, Registry& registry) {
     Diagnostics diagnostics;

@@ -15,6 +15,8 @@ namespace frictionlab::cli {
 
 /// Prints every diagnostic of a file that has errors, and a count; returns the exit code for bad input.
 int report_errors(const Diagnostics& diagnostics, const std::filesystem::path& file);
+/// The same for errors found while a scene was assembled (SceneErrors), named after their first file.
+int report_errors(const Diagnostics& diagnostics);
 
 /// Reads and validates a scene, loading the plugins it needs. Prints every diagnostic and returns
 /// nothing if the scene has any error.

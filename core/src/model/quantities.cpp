@@ -32,16 +32,17 @@ Eigen::ArrayXd& Quantities::field(const std::string& name, const std::string& no
 }
 
 const Eigen::ArrayXd& Quantities::needed_field(const std::string& name, const std::string& node_set, Eigen::Index size,
-                                               std::string reader) {
+                                               std::string reader, std::string remedy) {
     Field& f = declared(fields_, name, node_set, size);
-    f.readers.push_back(std::move(reader));
+    f.readers.push_back({std::move(reader), std::move(remedy)});
     return f.values;
 }
 
 std::vector<Quantities::Unpublished> Quantities::unpublished_fields() const {
     std::vector<Unpublished> out;
     for (const auto& [name, f] : fields_)
-        if (!f.published && !f.readers.empty()) out.push_back({name, f.node_set, f.readers.front()});
+        if (!f.published)
+            for (const auto& reader : f.readers) out.push_back({name, f.node_set, reader});
     return out;
 }
 

@@ -53,7 +53,7 @@ public:
         : scene_(scene), log_(log), options_(options), sim_(scene, registry, log) {
         sim_.refuse_unstable_steps(!options.allow_unstable_step);
         output_ = scene.output_directory;
-        auto observers = sim_.build_observers();
+        auto observers = sim_.take_observers();
         for (std::size_t i = 0; i < observers.size(); ++i) {
             const ComponentSpec& o = scene.observers[i];
             observers_.push_back({std::move(observers[i]), o.path, o.every, o.every_steps, 0});
@@ -62,10 +62,12 @@ public:
                         [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
             sim_.system().enable_work_accounting();
         check_checkpoints();
-        // After the components accepted their parameters, so a refusal leaves no directory behind.
-        if (!options.resume)
+        // The first stage is begun (its stable step judged) before anything is written, so that a
+        // run refused before its first step, like `check`, leaves no directory behind.
+        if (!options.resume) {
+            last_stage_ = sim_.begin_stage(0);
             prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
-        else if (!created_by_frictionlab(output_))
+        } else if (!created_by_frictionlab(output_))
             throw InputError(fmt::format("'{}' holds no run of FrictionLab to resume", output_.string()));
     }
 
@@ -149,8 +151,10 @@ private:
         ProgressLine progress(log_, options_.live_progress);
         for (std::size_t i = first; i < scene_.stages.size(); ++i) {
             if (i > first || !options_.resume) {
-                if (i > 0) stop_if_asked(last_stage_);
-                last_stage_ = sim_.begin_stage(i);
+                if (i > 0) {
+                    stop_if_asked(last_stage_);
+                    last_stage_ = sim_.begin_stage(i);
+                }
                 if (i == 0)
                     for (auto& o : observers_) o.observer->begin(view(last_stage_));
                 observe_due(last_stage_, i == 0);
@@ -331,12 +335,13 @@ private:
 
 }  // namespace
 
-void check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
+ResolvedChoices check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
     Simulation sim(scene, registry, log);
-    const auto observers = sim.build_observers();
+    const auto observers = sim.take_observers();
     std::vector<const Observer*> built;
     for (const auto& o : observers) built.push_back(o.get());
     not_checkpointable(scene, sim, built);
+    return sim.info().resolved_choices;
 }
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {

@@ -53,6 +53,14 @@ std::string RunRecord::text() const {
         for (const auto& [name, value] : summary.integrator_statistics) entry(name, value);
         y << YAML::EndMap;
     }
+    // What components chose for keys the scene left `auto` (the scene below keeps `auto`).
+    if (!info.resolved_choices.empty()) {
+        y << YAML::Key << "resolved_choices" << YAML::Value << YAML::BeginMap;
+        for (const auto& c : info.resolved_choices)
+            y << YAML::Key << c.key_path << YAML::Value << YAML::BeginMap << YAML::Key << "value" << YAML::Value
+              << c.value << YAML::Key << "reason" << YAML::Value << c.reason << YAML::EndMap;
+        y << YAML::EndMap;
+    }
     y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
     y << YAML::EndMap;
     return std::string(y.c_str()) + "\n";

@@ -3,12 +3,15 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "frictionlab/base/version.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/hot_kernel.hpp"
+#include "frictionlab/base/scene_errors.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/stability.hpp"
 
@@ -42,11 +45,23 @@ bool all_finite(const double* __restrict y, Index n) {
 
 Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
     : scene_(scene), registry_(registry), log_(log) {
-    info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml};
+    info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml, {}};
     bulk_ = located_in_scene(
         scene.bulk, [&] { return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk")); });
     record_plugin(scene.bulk, Kind::bulk_model);
 
+    // Every other component is built even when one refuses, so that one pass names every change the
+    // scene needs (design.md: fail early, precisely, all at once).
+    Diagnostics refusals;
+    bool effect_refused = false;  // a refused effect publishes nothing: the fields it would have are not missing
+    const auto build = [&](const ComponentSpec& c, auto make) -> decltype(make()) {
+        try {
+            return located_in_scene(c, make);
+        } catch (const SceneErrors& e) {
+            for (const auto& d : e.diagnostics().list()) refusals.error(d.where, d.key_path, d.message);
+            return nullptr;
+        }
+    };
     struct Pending {
         std::unique_ptr<Effect> effect;
         std::vector<std::string> stages;
@@ -56,22 +71,37 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     for (auto& e : bulk_->effects(context("bulk"))) effects.push_back({std::move(e), {}, {}});
     // Loaders come before the friction law: it reads the normal force the base contact publishes.
     for (const auto& l : scene.loaders) {
-        auto loader = located_in_scene(l, [&] { return registry.create<Loader>(l.type, l.values, context(l.path)); });
-        effects.push_back({std::move(loader), l.stages, l.type});
+        auto loader = build(l, [&] { return registry.create<Loader>(l.type, l.values, context(l.path)); });
+        effect_refused = effect_refused || !loader;
+        if (loader) effects.push_back({std::move(loader), l.stages, l.type});
         record_plugin(l, Kind::loader);
     }
     if (scene.friction) {
         const auto& f = *scene.friction;
-        auto law = located_in_scene(f, [&] { return registry.create<FrictionLaw>(f.type, f.values, context(f.path)); });
-        effects.push_back({std::move(law), {}, f.type});
+        auto law = build(f, [&] { return registry.create<FrictionLaw>(f.type, f.values, context(f.path)); });
+        effect_refused = effect_refused || !law;
+        if (law) effects.push_back({std::move(law), {}, f.type});
         record_plugin(f, Kind::friction_law);
     }
-    integrator_ = located_in_scene(scene.integrator, [&] {
+    integrator_ = build(scene.integrator, [&] {
         return registry.create<Integrator>(scene.integrator.type, scene.integrator.values, context("integrator"));
     });
     record_plugin(scene.integrator, Kind::integrator);
-    for (const auto& o : scene.observers) record_plugin(o, Kind::observer);
-    check_needed_fields();
+    if (integrator_ && !integrator_->implicit_in_local_velocity())
+        for (const auto& e : effects)
+            if (const std::string why = e.effect->needs_implicit_velocity(); !why.empty())
+                refusals.error(scene.integrator.where, "integrator",
+                               fmt::format("{}, and {} steps it explicitly: use an integrator that takes it "
+                                           "implicitly, integrator: {{type: imex_euler, dt: {:.3g}}}",
+                                           why, scene.integrator.type, integrator_->nominal_dt()));
+    // Observers last: they read what the effects publish (and choose by it, e.g. a criterion left auto).
+    for (const auto& o : scene.observers) {
+        observers_.push_back(build(o, [&] { return registry.create<Observer>(o.type, o.values, context(o.path)); }));
+        record_plugin(o, Kind::observer);
+    }
+    if (!effect_refused) check_needed_fields(refusals);
+    if (!refusals.empty()) throw SceneErrors(refusals);
+    for (const auto& c : info_.resolved_choices) log_.info("{}: {} ({})", c.key_path, c.value, c.reason);
 
     system_ = std::make_unique<System>(bulk_->body(), aux_.count);
     system_->use_quantities(quantities_);
@@ -87,25 +117,38 @@ void Simulation::check_step_count() const {
     double steps = 0, duration = 0;
     for (const auto& stage : scene_.stages) steps += std::ceil(stage.duration / dt), duration += stage.duration;
     if (steps <= most_steps) return;
-    throw InputError(Diagnostic{scene_.integrator.where, "integrator",
-                                fmt::format("{:.3g} s of stages at dt = {:.3g} s is {:.3g} steps, more than the {:.0e} "
-                                            "a run may take: a step or a stage duration is off by orders of magnitude",
-                                            duration, dt, steps, most_steps)}
-                         .format());
+    throw SceneErrors(Diagnostic{scene_.integrator.where, "integrator",
+                                 fmt::format("{:.3g} s of stages at dt = {:.3g} s is {:.3g} steps, more than the "
+                                             "{:.0e} a run may take: a step or a stage duration is off by orders "
+                                             "of magnitude",
+                                             duration, dt, steps, most_steps)});
 }
 
-void Simulation::check_needed_fields() const {
-    const auto unpublished = quantities_.unpublished_fields();
-    if (unpublished.empty()) return;
-    const auto& missing = unpublished.front();
-    const ComponentSpec* reader = component_at(missing.reader);
-    throw InputError(
-        Diagnostic{reader ? reader->where : scene_.bulk.where, missing.reader,
-                   fmt::format("{} reads the field '{}' over node set '{}', which no effect of this scene "
-                               "computes: add the effect that publishes it (share/docs/glossary.md lists who "
-                               "publishes each quantity)",
-                               reader ? reader->type : missing.reader, missing.name, missing.node_set)}
-            .format());
+void Simulation::check_needed_fields(Diagnostics& diagnostics) const {
+    // One diagnostic per reader, naming every field it misses: a reader of the junction counts
+    // misses all three, for one reason and with one remedy.
+    struct Missing {
+        std::vector<std::string> fields;
+        std::string node_set, remedy;
+    };
+    std::map<std::string, Missing> by_reader;
+    for (const auto& u : quantities_.unpublished_fields()) {
+        Missing& m = by_reader[u.reader.component];
+        m.fields.push_back("'" + u.name + "'");
+        m.node_set = u.node_set;
+        m.remedy = u.reader.remedy;
+    }
+    for (const auto& [reader, m] : by_reader) {
+        const ComponentSpec* c = component_at(reader);
+        const std::string remedy =
+            m.remedy.empty()
+                ? "add the effect that publishes it (share/docs/glossary.md lists who publishes each quantity)"
+                : m.remedy;
+        diagnostics.error(c ? c->where : scene_.bulk.where, reader,
+                          fmt::format("{} reads {} {} over node set '{}', which no effect of this scene publishes: {}",
+                                      c ? c->type : reader, m.fields.size() == 1 ? "the field" : "the fields",
+                                      fmt::join(m.fields, ", "), m.node_set, remedy));
+    }
 }
 
 const ComponentSpec* Simulation::component_at(const std::string& path) const {
@@ -116,19 +159,13 @@ const ComponentSpec* Simulation::component_at(const std::string& path) const {
     return nullptr;
 }
 
-std::vector<std::unique_ptr<Observer>> Simulation::build_observers() {
-    std::vector<std::unique_ptr<Observer>> observers;
-    for (const auto& o : scene_.observers)
-        observers.push_back(
-            located_in_scene(o, [&] { return registry_.create<Observer>(o.type, o.values, context(o.path)); }));
-    check_needed_fields();
-    return observers;
-}
+std::vector<std::unique_ptr<Observer>> Simulation::take_observers() { return std::move(observers_); }
 
 Simulation::~Simulation() = default;
 
 Context Simulation::context(const std::string& name) {
-    return Context{log_, scene_.seed, bulk_ ? &bulk_->body() : nullptr, &quantities_, &aux_, name, &registry_};
+    return Context{log_, scene_.seed, bulk_ ? &bulk_->body() : nullptr, &quantities_, &aux_,
+                   name, &registry_,  &info_.resolved_choices};
 }
 
 void Simulation::record_plugin(const ComponentSpec& component, Kind kind) {
@@ -161,6 +198,7 @@ StageInfo Simulation::resume_stage(std::size_t index, double t_start) {
 
 void Simulation::check_stability(const StageInfo& stage) {
     const double radius = integrator_->stability_radius(), dt = integrator_->nominal_dt();
+    stable_step_note_ = fmt::format("no stable-step limit: {} chooses its own step", scene_.integrator.type);
     if (!std::isfinite(radius)) return;
     const StabilityEstimate e = estimate_stable_step(*system_, *integrator_);
     if (!std::isfinite(e.lambda_max) || !(e.dt_limit > 0)) {
@@ -174,8 +212,10 @@ void Simulation::check_stability(const StageInfo& stage) {
         log_.warn("{}", message);
         return;
     }
-    log_.info("  stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s", e.dt_limit,
-              e.lambda_max, e.limiting_effect, dt);
+    stable_step_note_ =
+        fmt::format("stable step: dt <= {:.3g} s (largest |eigenvalue| {:.3g} 1/s, set by {}); dt = {:.3g} s",
+                    e.dt_limit, e.lambda_max, e.limiting_effect, dt);
+    log_.info("  {}", stable_step_note_);
     if (dt <= e.dt_limit) return;
     const std::string message = fmt::format(
         "stage '{}': the time step dt = {:.3g} s is above the estimated stable step {:.3g} s of the {} integrator "

@@ -5,7 +5,8 @@
 
 namespace frictionlab {
 
-void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics) {
+void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics,
+                        std::vector<std::string>* stable_steps) {
     const auto dt = scene.integrator.value_where.find("dt");
     const SourceLocation where = dt != scene.integrator.value_where.end() ? dt->second : scene.integrator.where;
     // Every stage's pipeline, each from the initial state: a stage switches on effects of its own (a
@@ -17,7 +18,11 @@ void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::lo
     Simulation simulation(at_start, registry, log);  // a component's refusal propagates, located
     simulation.refuse_unstable_steps(true);
     try {
-        for (std::size_t i = 0; i < at_start.stages.size(); ++i) simulation.begin_stage(i);
+        for (std::size_t i = 0; i < at_start.stages.size(); ++i) {
+            simulation.begin_stage(i);
+            if (stable_steps)
+                stable_steps->push_back("stage '" + at_start.stages[i].name + "': " + simulation.stable_step_note());
+        }
     } catch (const InputError& e) {
         diagnostics.error(where, "integrator.dt", e.what());
     }

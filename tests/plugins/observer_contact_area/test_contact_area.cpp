@@ -207,12 +207,12 @@ TEST_F(ContactAreaTest, AreaFromAPublishedJunctionArea) {
 
 TEST_F(ContactAreaTest, ItDeclaresTheJunctionCountsItNeedsInItsName) {
     // Declared when built, so that a scene without a law that publishes them is refused at
-    // assembly, at this observer (Simulation::build_observers), not when the run starts.
+    // assembly, at this observer (the Simulation builds it), not when the run starts.
     make();
     const auto unpublished = q_.unpublished_fields();
     ASSERT_EQ(unpublished.size(), 3u);
     for (const auto& u : unpublished) {
-        EXPECT_EQ(u.reader, "observers[0]") << u.name;
+        EXPECT_EQ(u.reader.component, "observers[0]") << u.name;
         EXPECT_EQ(u.node_set, "interface") << u.name;
     }
     publish();

@@ -147,11 +147,33 @@ protected:
 
 TEST_F(PrecursorsTest, ThePinnedFractionCriterionDeclaresTheJunctionCountsItNeeds) {
     // Declared when built, so that a scene without a law that publishes them is refused at
-    // assembly, at this observer (Simulation::build_observers), not when the run starts.
-    make();
+    // assembly, at this observer (the Simulation builds it), not when the run starts, naming the
+    // criterion that does without them.
+    Precursors::Params pinned;
+    pinned.criterion = Precursors::Criterion::pinned_fraction;
+    make(pinned);
     const auto unpublished = quantities_.unpublished_fields();
     ASSERT_EQ(unpublished.size(), 3u);
-    for (const auto& u : unpublished) EXPECT_EQ(u.reader, "observers[0]") << u.name;
+    for (const auto& u : unpublished) {
+        EXPECT_EQ(u.reader.component, "observers[0]") << u.name;
+        EXPECT_EQ(u.reader.remedy.rfind("set criterion: slip", 0), 0u) << u.reader.remedy;
+    }
+}
+
+TEST_F(PrecursorsTest, TheAutoCriterionChoosesByWhetherTheJunctionCountsArePublishedAndRecordsIt) {
+    static spdlog::logger quiet("test");
+    ResolvedChoices choices;
+    const Context ctx{quiet, 0, &body_, &quantities_, nullptr, "observers[1]", nullptr, &choices};
+    Precursors without(Precursors::Params{}, ctx);
+    EXPECT_TRUE(quantities_.unpublished_fields().empty()) << "auto without counts: slip, which reads none";
+    publish_junctions();
+    Precursors with(Precursors::Params{}, ctx);
+    ASSERT_EQ(choices.size(), 2u);
+    EXPECT_EQ(choices[0].key_path, "observers[1].criterion");
+    EXPECT_EQ(choices[0].value, "slip");
+    EXPECT_EQ(choices[0].reason, "no effect of this scene publishes junction counts");
+    EXPECT_EQ(choices[1].value, "pinned_fraction");
+    EXPECT_TRUE(quantities_.unpublished_fields().empty());
 }
 
 TEST_F(PrecursorsTest, TheSlipCriterionNeedsNoJunctionCounts) {

@@ -8,6 +8,7 @@
 
 #include "frictionlab/model/body.hpp"
 #include "frictionlab/model/quantities.hpp"
+#include "frictionlab/model/resolved_choice.hpp"
 
 namespace frictionlab {
 
@@ -33,6 +34,15 @@ struct Context {
     /// The run's types, for a component that builds another by its type name as a scene would
     /// (the quasi-static stepper's dynamic scheme) instead of linking another plugin's code.
     const Registry* registry = nullptr;
+    /// Where the run records the values components choose for keys left `auto` (null: nowhere, as
+    /// in a test that builds a component alone).
+    ResolvedChoices* resolved_choices = nullptr;
+
+    /// Records that this component chose `value` for its `key` (resolved_choice.hpp), and why.
+    void resolved(const std::string& key, std::string value, std::string reason) const {
+        if (resolved_choices)
+            resolved_choices->push_back({name.empty() ? key : name + "." + key, std::move(value), std::move(reason)});
+    }
 };
 
 }  // namespace frictionlab

@@ -6,6 +6,7 @@
 // states, anchors, counts, clocks) is frozen; add_forces() is a pure function of the stage state;
 // after the step is accepted, commit() judges and applies the state transitions once.
 #include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -65,6 +66,10 @@ public:
     /// Adds the diagonal d(fx_i)/d(vx_i) of this effect's x-force at a stage (N s/m, <= 0: the force
     /// resists the velocity) into dfx_dvx (one entry per node). Called only if has_velocity_jacobian().
     virtual void add_velocity_jacobian(const StageView&, Eigen::Ref<Eigen::ArrayXd> /*dfx_dvx*/) const {}
+    /// Why no explicit step can integrate this effect (empty: one can): a law far too stiff in v near
+    /// rest says so, and a scene whose integrator does not take its velocity dependence implicitly
+    /// (Integrator::implicit_in_local_velocity) is refused at assembly, naming the integrator to use.
+    virtual std::string needs_implicit_velocity() const { return {}; }
 
     // Quasi-static solving (share/docs/quasi-static.md). Between discrete events a stuck system is an
     // elastic structure loaded by its drive: an integrator may then solve for static equilibrium

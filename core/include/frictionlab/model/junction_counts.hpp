@@ -26,9 +26,13 @@ struct JunctionCounts {
 
     /// The three fields as the component built with `ctx` needs them, one value per node of
     /// "interface", declared needed in its name (Quantities::needed_field): a scene where no effect
-    /// publishes them is refused at assembly, at that component. Observers that cannot do without
-    /// the counts call it from their constructor; the values are there from the first evaluation on.
-    static JunctionCounts need(const Context& ctx);
+    /// publishes them is refused at assembly, at that component, with `remedy` (what its user can
+    /// change instead). Observers that cannot do without the counts call it from their constructor;
+    /// the values are there from the first evaluation on.
+    static JunctionCounts need(const Context& ctx, const std::string& remedy = {});
+    /// Whether an effect publishes the three fields over "interface" (an observer built after the
+    /// effects may choose what it reads by it).
+    static bool published(const Quantities& q);
     /// The three fields if the scene publishes them, for observers that only use the counts then.
     static std::optional<JunctionCounts> find(const Quantities& q, Index blocks);
 

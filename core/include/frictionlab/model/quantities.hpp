@@ -11,7 +11,8 @@
 // field (a friction law reads the base contact's "normal_force" in its force evaluation, an observer
 // the junction counts) declares it needed (needed_field()) when it is built, and a field needed but
 // never published is a scene error at assembly (unpublished_fields()), rather than zeros in the force
-// loop or a run that stops at its start.
+// loop or a run that stops at its start. A reader may say what the user can change instead (an
+// observer's option that does without the field), so the error names the fix.
 #include <map>
 #include <string>
 #include <string_view>
@@ -25,11 +26,17 @@ namespace frictionlab {
 
 class Quantities {
 public:
+    /// A component that declared a field needed, and what to change in the scene if none publishes it.
+    struct Reader {
+        std::string component;  // its place in the scene, e.g. "observers[1]"
+        std::string remedy;     // e.g. "set criterion: slip"; empty: add an effect that publishes it
+        bool operator==(const Reader&) const = default;
+    };
     struct Field {
         std::string node_set, unit, doc;
         Eigen::ArrayXd values;
-        bool published = false;            // some effect computes it
-        std::vector<std::string> readers;  // the components that declared it needed
+        bool published = false;       // some effect computes it
+        std::vector<Reader> readers;  // the components that declared it needed
     };
     struct Scalar {
         std::string unit, doc;
@@ -41,12 +48,14 @@ public:
     Eigen::ArrayXd& field(const std::string& name, const std::string& node_set, Eigen::Index size, std::string unit,
                           std::string doc);
     /// A field `reader` (its place in the scene, e.g. "friction") reads and another effect must
-    /// publish; the storage is the publisher's, whichever declares it first.
+    /// publish; the storage is the publisher's, whichever declares it first. `remedy`: what the
+    /// reader's user can change instead, should no effect publish it.
     const Eigen::ArrayXd& needed_field(const std::string& name, const std::string& node_set, Eigen::Index size,
-                                       std::string reader);
-    /// Fields declared needed that no effect published, each with its first reader.
+                                       std::string reader, std::string remedy = {});
+    /// Fields declared needed that no effect published, one entry per field and reader, by field name.
     struct Unpublished {
-        std::string name, node_set, reader;
+        std::string name, node_set;
+        Reader reader;
     };
     std::vector<Unpublished> unpublished_fields() const;
     double& scalar(const std::string& name, std::string unit, std::string doc);

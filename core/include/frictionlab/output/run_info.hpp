@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/model/resolved_choice.hpp"
 #include "frictionlab/plugins/library.hpp"
 
 namespace frictionlab {
@@ -17,6 +18,7 @@ struct RunInfo {
     std::uint64_t seed = 0;
     std::vector<PluginRecord> plugins;  // the libraries that provide the scene's types
     std::string resolved_scene;         // YAML, every default written out
+    ResolvedChoices resolved_choices;   // what the components chose for keys left `auto`
 };
 
 }  // namespace frictionlab

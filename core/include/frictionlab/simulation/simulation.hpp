@@ -12,6 +12,7 @@
 
 #include "frictionlab/base/diagnostics.hpp"
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/scene_errors.hpp"
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/model/quantities.hpp"
 #include "frictionlab/simulation/run.hpp"
@@ -23,15 +24,18 @@ namespace frictionlab {
 class Registry;
 
 /// Runs `make`, which builds the scene component `c`, and reports a refusal it throws (InputError)
-/// at the component's place in the scene: "scene.yaml:16:5: error: loaders[2]: ...". Components
-/// can only judge some set-ups once built (a driving point between node rows, say). Memory running
-/// out while it is built names the component too (a RunError): its sizes are the ones to reduce.
+/// at the component's place in the scene, as SceneErrors: "scene.yaml:16:5: error: loaders[2]:
+/// ...". Components can only judge some set-ups once built (a driving point between node rows, say).
+/// Memory running out while it is built names the component too (a RunError): its sizes are the
+/// ones to reduce.
 template <class Make>
 auto located_in_scene(const ComponentSpec& c, Make&& make) -> decltype(make()) {
     try {
         return make();
+    } catch (const SceneErrors&) {
+        throw;  // located already (a component that builds another through the registry)
     } catch (const InputError& e) {
-        throw InputError(Diagnostic{c.where, c.path, e.what()}.format());
+        throw SceneErrors(Diagnostic{c.where, c.path, e.what()});
     } catch (const std::bad_alloc&) {
         throw RunError(fmt::format("out of memory while building {} ({}, {}:{}:{}); make the sizes it is given smaller",
                                    c.path, c.type, c.where.file, c.where.line, c.where.column));
@@ -40,8 +44,9 @@ auto located_in_scene(const ComponentSpec& c, Make&& make) -> decltype(make()) {
 
 class Simulation {
 public:
-    /// Builds every component of the scene (not its observers). A component that refuses its
-    /// parameters throws InputError.
+    /// Builds every component of the scene, observers last. Every component that refuses its
+    /// set-up, and every field a component reads that no effect publishes (Quantities::needed_field),
+    /// is reported at its place in the scene, all in one SceneErrors.
     Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log);
     ~Simulation();
 
@@ -50,15 +55,14 @@ public:
     Integrator& integrator() { return *integrator_; }
     const Integrator& integrator() const { return *integrator_; }
     Quantities& quantities() { return quantities_; }
-    /// Version, scene hash, seed and the plugins that provide the scene's components.
+    /// Version, scene hash, seed, the plugins that provide the scene's components and the choices
+    /// they resolved.
     const RunInfo& info() const { return info_; }
     const Scene& scene() const { return scene_; }
     /// A context for components built later against this simulation (observers).
     Context context(const std::string& name);
-    /// The scene's observers, built against this simulation as a run builds them. One that needs a
-    /// quantity no effect publishes (Quantities::needed_field) is an InputError at its place in the
-    /// scene, as an effect is.
-    std::vector<std::unique_ptr<Observer>> build_observers();
+    /// The scene's observers, in scene order, for the run that drives them (once).
+    std::vector<std::unique_ptr<Observer>> take_observers();
 
     /// Starts stage `index` of the scene at the current time and logs its pipeline. Estimates the
     /// stable step of the stage's pipeline (stability.hpp) and throws InputError, naming the limit
@@ -85,11 +89,14 @@ public:
     /// duration off by orders of magnitude (15 days at the baseline's 76,000 steps per second).
     static constexpr double most_steps = 1e11;
 
+    /// What the stable-step estimate of the stage begun last found, in a line ("stable step: dt <= ...").
+    const std::string& stable_step_note() const { return stable_step_note_; }
+
 private:
     void check_bounded() const;
     void check_step_count() const;
-    /// A field a component reads that no effect publishes is an InputError at the reader.
-    void check_needed_fields() const;
+    /// Every field a component reads that no effect publishes, at the reader, with its remedy.
+    void check_needed_fields(Diagnostics& diagnostics) const;
     /// The scene's component at `path` ("friction", "observers[2]", ...), or null.
     const ComponentSpec* component_at(const std::string& path) const;
     void check_stability(const StageInfo& stage);
@@ -103,8 +110,10 @@ private:
     AuxAllocator aux_;
     std::unique_ptr<BulkModel> bulk_;  // owns the Body the system refers to: declared first
     std::unique_ptr<Integrator> integrator_;
+    std::vector<std::unique_ptr<Observer>> observers_;
     std::unique_ptr<System> system_;
     bool refuse_unstable_ = true;
+    std::string stable_step_note_;
 };
 
 }  // namespace frictionlab

@@ -1,6 +1,9 @@
 #pragma once
 // What `frictionlab check` adds to validation: the stable-step estimate `run` makes before each
 // stage, so that a step `run` would refuse is reported by `check` too, at `integrator.dt`.
+#include <string>
+#include <vector>
+
 #include <spdlog/logger.h>
 
 #include "frictionlab/base/diagnostics.hpp"
@@ -16,7 +19,9 @@ class Registry;
 /// (the integrator's mapping if dt is left at its default). `run` estimates at the start of each stage
 /// from the state the earlier stages left (junctions formed under the settled load add their
 /// stiffness), so it may still refuse a step close to the limit. A component that refuses its set-up
-/// is reported at its place in the scene.
-void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics);
+/// is reported at its place in the scene. `stable_steps`, if given, gets a line per stage judged:
+/// "stage 'settle': stable step: dt <= ...".
+void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics,
+                        std::vector<std::string>* stable_steps = nullptr);
 
 }  // namespace frictionlab
