@@ -174,6 +174,13 @@ TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
     EXPECT_NE(bad.output.find("integrator.dt"), std::string::npos) << bad.output;
 }
 
+TEST_F(Cli, CoulombsFormerKineticKeyIsAnsweredWithMuD) {
+    // Every law names its sliding coefficient mu_d; mu_k, Coulomb's former name, is as close to mu_s.
+    auto r = frictionlab("check " + scene("tiny_lattice.yaml") + " --set friction='{type: coulomb, mu_k: 0.17}'", dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("unknown key 'mu_k'; did you mean 'mu_d'?"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, APluginRefusingItsSetUpIsBadInputNotACrash) {
     // The driving spring refuses a height between node rows only when it is built, inside its plugin:
     // the error must reach the command intact after the plugins are unloaded.
