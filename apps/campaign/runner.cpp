@@ -32,6 +32,17 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+/// How far a run of `c` that ended with `status` got: the run says so in its run.yaml (its exception
+/// does not). A run refused before it began leaves an earlier attempt's run.yaml, or none: nowhere.
+RunSummary reached(const CampaignRun& c, const std::string& status) {
+    try {
+        const auto recorded = read_recorded_run(c.scene.output_directory);
+        if (recorded && recorded->status == status && recorded->scene_hash == c.scene.hash) return recorded->summary;
+    } catch (const InputError&) {  // something else in its place
+    }
+    return {};
+}
+
 /// The child's side: the run and its record, its log in `log_file`; never returns.
 [[noreturn]] void run_case_here(const CampaignRun& c, const fs::path& log_file, const Registry& registry,
                                 const CampaignOptions& campaign) {
@@ -64,11 +75,13 @@ using Clock = std::chrono::steady_clock;
         log->warn("run {}", e.what());
         record.status = "interrupted";
         record.reason = e.what();
+        record.summary = reached(c, record.status);
         code = InterruptSignals::exit_status(e.signal);
     } catch (const std::exception& e) {
         log->error("run failed: {}", e.what());
         record.status = "failed";
         record.reason = e.what();
+        record.summary = reached(c, record.status);
         code = exit_code::run_failure;
     }
     std::error_code ec;

@@ -20,6 +20,7 @@
 #include <spdlog/spdlog.h>
 
 #include "../frictionlab/doc_writer.hpp"
+#include "../frictionlab/type_selector.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/plugins/search.hpp"
 #include "frictionlab/plugins/registry.hpp"
@@ -174,10 +175,6 @@ private:
     fl::Scene scene_;
 };
 
-std::vector<fl::Kind> all_kinds() {
-    return {fl::Kind::bulk_model, fl::Kind::friction_law, fl::Kind::loader, fl::Kind::integrator, fl::Kind::observer};
-}
-
 std::unique_ptr<fl::Registry> shipped_registry(const std::vector<fs::path>& plugin_paths) {
     auto registry = std::make_unique<fl::Registry>();
     fl::load_plugins(*registry, plugin_directories(plugin_paths, {}), *make_logger("warn"));
@@ -187,30 +184,22 @@ std::unique_ptr<fl::Registry> shipped_registry(const std::vector<fs::path>& plug
 py::list types(const std::vector<fs::path>& plugin_paths) {
     const auto registry = shipped_registry(plugin_paths);
     py::list out;
-    for (auto kind : all_kinds())
-        for (const auto* t : registry->types(kind)) {
-            py::dict d;
-            d["kind"] = std::string(fl::to_string(kind));
-            d["type"] = t->type;
-            d["library"] = t->library.empty() ? std::string("built in") : t->library;
-            d["summary"] = t->summary;
-            out.append(d);
-        }
+    for (const auto* t : fl::cli::all_types(*registry)) {
+        py::dict d;
+        d["kind"] = std::string(fl::to_string(t->kind));
+        d["type"] = t->type;
+        d["library"] = t->library.empty() ? std::string("built in") : t->library;
+        d["summary"] = fl::cli::one_line(*t);
+        out.append(d);
+    }
     return out;
 }
 
 /// `frictionlab doc KIND[/TYPE] --format json` as text (the package parses it).
 std::string doc_json(const std::string& kind, const std::string& type, const std::vector<fs::path>& plugin_paths) {
     const auto registry = shipped_registry(plugin_paths);
-    for (auto k : all_kinds()) {
-        if (fl::to_string(k) != kind) continue;
-        if (type.empty()) return fl::cli::render_doc(registry->types(k), fl::cli::DocFormat::json);
-        if (const auto* t = registry->find(k, type)) return fl::cli::render_doc({t}, fl::cli::DocFormat::json);
-        std::string known;
-        for (const auto* t : registry->types(k)) known += (known.empty() ? "" : ", ") + t->type;
-        throw fl::InputError("no " + kind + " type '" + type + "' (available: " + known + ")");
-    }
-    throw fl::InputError("unknown kind '" + kind + "' (kinds: bulk_model, friction_law, loader, integrator, observer)");
+    const auto types = fl::cli::select_types(*registry, type.empty() ? kind : kind + "/" + type);
+    return fl::cli::render_doc(types, fl::cli::DocFormat::json);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 # cmake --install: the core library and headers, the exported target FrictionLab::frictionlab with
 # its package config (so out-of-tree plugins can find_package(FrictionLab)), and share/ as
 # share/frictionlab. The CLI and the shipped plugins install themselves where they are defined.
+# The build tree is a package too: its FrictionLabConfig.cmake finds the targets exported there and
+# frictionlab_add_plugin() beside it (cmake -DFrictionLab_DIR=<build>).
 include(CMakePackageConfigHelpers)
 
 set(FRICTIONLAB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/FrictionLab)
@@ -15,6 +17,13 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/frictionlab
 install(EXPORT FrictionLabTargets
   NAMESPACE FrictionLab::
   DESTINATION ${FRICTIONLAB_CMAKE_DIR})
+# The same export set for the build tree (FrictionLab::campaign joins it in apps/campaign), its
+# targets' include directories the sources' (their BUILD_INTERFACE).
+export(EXPORT FrictionLabTargets
+  NAMESPACE FrictionLab::
+  FILE ${PROJECT_BINARY_DIR}/FrictionLabTargets.cmake)
+configure_file(${CMAKE_CURRENT_LIST_DIR}/FrictionLabPlugin.cmake ${PROJECT_BINARY_DIR}/FrictionLabPlugin.cmake
+  COPYONLY)
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/FrictionLabConfig.cmake.in
   ${PROJECT_BINARY_DIR}/FrictionLabConfig.cmake

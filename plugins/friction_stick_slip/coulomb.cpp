@@ -12,7 +12,7 @@ namespace {
 
 using Params = CoulombStrength::Params;
 
-std::string order_rule(const Params& p) { return moving_not_above_static("mu_k", p.mu_k, p.mu_s); }
+std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
 
 }  // namespace
 
@@ -20,16 +20,17 @@ ParamSpec<Params> CoulombStrength::spec() {
     ParamSpec<Params> s(
         "Amontons-Coulomb friction per interface block (Trømborg et al. 2011, doi:10.1103/PhysRevLett.107.074301; "
         "Maegawa et al. 2010): a tangential spring holds a stuck block up to mu_s f_N; a slipping block feels "
-        "mu_k f_N against its velocity and re-sticks when it stops or reverses.");
+        "mu_d f_N against its velocity and re-sticks when it stops or reverses.");
     stick_slip::add_settings(s);
-    s.add("mu_k", &Params::mu_k, "Kinetic coefficient: a slipping block feels mu_k f_N against its velocity.")
+    s.add("mu_d", &Params::mu_d, "Kinetic (dynamic) coefficient: a slipping block feels mu_d f_N against its velocity.")
         .unit("1")
-        .at_least(0);
-    s.rule("mu_k", order_rule);
+        .at_least(0)
+        .formerly("mu_k");
+    s.rule("mu_d", order_rule);
     return s;
 }
 
-CoulombStrength::CoulombStrength(const Params& p) : mu_k_(spec().checked(p).mu_k) {}
+CoulombStrength::CoulombStrength(const Params& p) : mu_d_(spec().checked(p).mu_d) {}
 
 void CoulombStrength::declare(Quantities& q, const std::string& node_set, Index blocks) {
     slipping_ =
@@ -37,7 +38,7 @@ void CoulombStrength::declare(Quantities& q, const std::string& node_set, Index 
 }
 
 std::string CoulombStrength::describe(const stick_slip::Settings& settings, const std::string& stiffness) const {
-    return fmt::format("Coulomb friction (mu_s={:.3g}, mu_k={:.3g}, {})", settings.mu_s, mu_k_, stiffness);
+    return fmt::format("Coulomb friction (mu_s={:.3g}, mu_d={:.3g}, {})", settings.mu_s, mu_d_, stiffness);
 }
 
 }  // namespace frictionlab

@@ -13,19 +13,19 @@ namespace frictionlab {
 /// (2010), doi:10.1007/s11249-010-9611-7.
 ///
 ///     stuck     F = -k_t (x - anchor),   while |k_t (x - anchor)| <= mu_s f_N      (judged at commit)
-///     slipping  F = -mu_k f_N tanh(v / v_r)                    (tanh: sign(v) made smooth, v_r tiny)
+///     slipping  F = -mu_d f_N tanh(v / v_r)                    (tanh: sign(v) made smooth, v_r tiny)
 ///     detached  F = 0                                          (f_N = 0)
 ///
 /// k_t = sqrt(39.2e9 N/m^2 f_N) per block unless given. Re-stick (StickSlipLaw, which holds the
 /// block logic shared with slip_weakening): at a commit, when the velocity has reversed or fallen
 /// below stick_velocity after exceeding it, with the spring re-anchored to carry the kinetic force
-/// the block felt, so the friction force is continuous and the block re-loads from mu_k f_N.
+/// the block felt, so the friction force is continuous and the block re-loads from mu_d f_N.
 /// Publishes "friction_force" and "slipping" (1 while slipping, else 0).
 class CoulombStrength {
 public:
     struct Params {
         double mu_s = 0.4;
-        double mu_k = 0.17;
+        double mu_d = 0.17;
         double tangential_stiffness = 0;
         double stick_velocity = 1e-5;
         double regularisation_velocity = 1e-6;
@@ -37,8 +37,8 @@ public:
 
     explicit CoulombStrength(const Params&);
 
-    /// S = mu_k f_N, whatever the slip.
-    double operator()(double normal, double /*slip*/) const { return mu_k_ * normal; }
+    /// S = mu_d f_N, whatever the slip.
+    double operator()(double normal, double /*slip*/) const { return mu_d_ * normal; }
     void declare(Quantities& q, const std::string& node_set, Index blocks);
     void publish(Index i, const stick_slip::Block& b, double /*slip*/) {
         (*slipping_)[i] = b.mode == stick_slip::Mode::slipping ? 1.0 : 0.0;
@@ -46,7 +46,7 @@ public:
     std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;
 
 private:
-    double mu_k_;
+    double mu_d_;
     Eigen::ArrayXd* slipping_ = nullptr;
 };
 

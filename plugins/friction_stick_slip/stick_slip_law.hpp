@@ -103,7 +103,7 @@ Settings settings_of(const P& p) {
 ///      F = -S tanh(v/v_r): the friction force is continuous through the re-stick and the spring
 ///      starts at the kinetic value, below mu_s f_N (S <= mu_s f_N), so it does not re-break at once.
 ///      We prefer this to re-anchoring unloaded (a common reading of Trømborg 2011): an unloaded re-stick
-///      drops the force from mu_k f_N to 0 at an arbitrary instant and kicks the block forwards. The
+///      drops the force from mu_d f_N to 0 at an arbitrary instant and kicks the block forwards. The
 ///      "after exceeding it" part matters for slip weakening, which breaks with S = mu_s f_N and no
 ///      force drop: a just-broken block is slow and would otherwise re-stick before it slips at all;
 ///   5. k_t follows the end-of-step f_N (default stiffness only); a stuck block is re-anchored so

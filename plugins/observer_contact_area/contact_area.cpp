@@ -47,6 +47,8 @@ const std::vector<std::string> block_columns{"time",
                                              "normal_force",
                                              "bond_force_left",
                                              "bond_force_right"};
+// Both tables' step and stage numbers and junction counts.
+const ColumnTypes count_types{{"step", "stage", "pinned", "sliding", "dislocated", "junctions"}, {}};
 
 double ratio(double a, double b) { return b > 0 ? a / b : nan; }
 
@@ -131,15 +133,15 @@ void ContactArea::begin(const RunView& view) {
         b.node = interface_[i];
         if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
         if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
-        b.table = open_table(view.output_directory / block_file(params_, i), block_columns, view.info, params_.format,
-                             view.resuming);
+        b.table = open_table(view.output_directory / block_file(params_, i), block_columns, count_types, view.info,
+                             params_.format, view.resuming);
         blocks_.push_back(std::move(b));
     }
     std::vector<std::string> columns{"time",   "step",    "stage",      "junctions",
                                      "pinned", "sliding", "dislocated", "pinned_fraction"};
     if (junction_area_) columns.push_back("contact_area");
-    interface_table_ =
-        open_table(view.output_directory / interface_file(params_), columns, view.info, params_.format, view.resuming);
+    interface_table_ = open_table(view.output_directory / interface_file(params_), columns, count_types, view.info,
+                                  params_.format, view.resuming);
     row_.reserve(block_columns.size());
 }
 

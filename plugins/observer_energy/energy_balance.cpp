@@ -49,7 +49,8 @@ void EnergyBalance::begin(const RunView& view) {
     for (const char* total : {"stored_energy", "input", "dissipated_damping", "dissipated_friction", "residual",
                               "relative_residual", "balance_error"})
         names.push_back(total);
-    table_ = open_table(view.output_directory / params_.file, names, view.info, TableFormat::csv, view.resuming);
+    table_ = open_table(view.output_directory / params_.file, names, ColumnTypes{{"step", "stage"}, {}}, view.info,
+                        TableFormat::csv, view.resuming);
     row_.reserve(names.size());
     stored_.resize(effects_.size());
 }

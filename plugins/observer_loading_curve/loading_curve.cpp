@@ -44,7 +44,8 @@ void LoadingCurve::begin(const RunView& view) {
     std::vector<std::string> names{"time", "step", "stage"};
     for (const auto& c : columns_) names.push_back(c.name);
     if (normal_load_ && driving_force_) names.push_back("driving_force_over_normal_load");
-    table_ = open_table(view.output_directory / params_.file, names, view.info, TableFormat::csv, view.resuming);
+    table_ = open_table(view.output_directory / params_.file, names, ColumnTypes{{"step", "stage"}, {}}, view.info,
+                        TableFormat::csv, view.resuming);
     row_.reserve(names.size());
 }
 

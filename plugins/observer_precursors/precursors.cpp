@@ -43,6 +43,10 @@ const std::vector<std::string> event_columns{"event",
                                              "crossing_speed_error"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay", "resolution"};
 const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
+const ColumnTypes event_types{{"event", "nucleation_block", "ruptured_blocks", "out_of_contact"},
+                              {"finished", "global"}};
+const ColumnTypes front_types{{"event", "block"}, {}};
+const ColumnTypes contact_types{{"block"}, {"in_contact"}};
 
 }  // namespace
 
@@ -170,10 +174,11 @@ void Precursors::begin(const RunView& view) {
     ruptured_.resize(n);
     contact_ = BlockMask::Constant(n, true);
     const TableFormat format = params_.format;
-    events_ = open_table(view.output_directory / params_.events_file, event_columns, view.info, format, view.resuming);
-    fronts_ = open_table(view.output_directory / params_.fronts_file, front_columns, view.info, format, view.resuming);
+    const auto& out = view.output_directory;
+    events_ = open_table(out / params_.events_file, event_columns, event_types, view.info, format, view.resuming);
+    fronts_ = open_table(out / params_.fronts_file, front_columns, front_types, view.info, format, view.resuming);
     contact_table_ =
-        open_table(view.output_directory / params_.contact_file, contact_columns, view.info, format, view.resuming);
+        open_table(out / params_.contact_file, contact_columns, contact_types, view.info, format, view.resuming);
     row_.reserve(event_columns.size());
     if (!view.resuming) write_summary(view, false);
 }

@@ -50,6 +50,37 @@ TEST_F(Cli, ListNamesEveryKindWithItsLibrary) {
                               "loader/rigid_base_contact", "integrator/rk4", "observer/loading_curve"})
         EXPECT_NE(r.output.find(entry), std::string::npos) << entry;
     EXPECT_NE(r.output.find("integrator_rk4.so"), std::string::npos);
+    // Each type with what it is in a line, its doc up to the colon before how it works (neither
+    // "et al." nor "doi:" in parentheses ends it).
+    const auto coulomb = r.output.find("friction_law/coulomb");
+    ASSERT_NE(coulomb, std::string::npos) << r.output;
+    const auto line = r.output.find('\n', coulomb) + 1;
+    EXPECT_EQ(r.output.substr(line, r.output.find('\n', line) - line),
+              "    Amontons-Coulomb friction per interface block (Trømborg et al. 2011, "
+              "doi:10.1103/PhysRevLett.107.074301; Maegawa et al. 2010)");
+}
+
+TEST_F(Cli, DocAndExampleTakeABareTypeAndSuggestNearMisses) {
+    const auto bare = frictionlab("doc three_state_junctions", dir_);
+    ASSERT_EQ(bare.code, 0) << bare.output;
+    EXPECT_EQ(bare.output, frictionlab("doc friction_law/three_state_junctions", dir_).output);
+    const auto example = frictionlab("example coulomb", dir_);
+    ASSERT_EQ(example.code, 0) << example.output;
+    EXPECT_EQ(example.output, frictionlab("example friction_law/coulomb", dir_).output);
+    EXPECT_NE(example.output.find("mu_d:"), std::string::npos) << example.output;
+
+    const auto misspelt = frictionlab("example friction_law/coulumb", dir_);
+    EXPECT_EQ(misspelt.code, 2);
+    EXPECT_NE(misspelt.output.find("no friction_law type 'coulumb'; did you mean 'coulomb'?"), std::string::npos)
+        << misspelt.output;
+    const auto misspelt_bare = frictionlab("doc coulumb", dir_);
+    EXPECT_EQ(misspelt_bare.code, 2);
+    EXPECT_NE(misspelt_bare.output.find("no kind or type 'coulumb'; did you mean 'coulomb'?"), std::string::npos)
+        << misspelt_bare.output;
+    const auto kind = frictionlab("doc friction_laws", dir_);
+    EXPECT_EQ(kind.code, 2);
+    EXPECT_NE(kind.output.find("did you mean 'friction_law'?"), std::string::npos) << kind.output;
+    EXPECT_EQ(frictionlab("example friction_law", dir_).code, 2) << "a kind names more than one type";
 }
 
 TEST_F(Cli, ExampleOfEveryTypeIsItselfValid) {
@@ -172,6 +203,13 @@ TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
     auto bad = frictionlab("check " + scene("tiny_lattice.yaml") + " --set integrator.dt=-1", dir_);
     EXPECT_EQ(bad.code, 2);
     EXPECT_NE(bad.output.find("integrator.dt"), std::string::npos) << bad.output;
+}
+
+TEST_F(Cli, CoulombsFormerKineticKeyIsAnsweredWithMuD) {
+    // Every law names its sliding coefficient mu_d; mu_k, Coulomb's former name, is as close to mu_s.
+    auto r = frictionlab("check " + scene("tiny_lattice.yaml") + " --set friction='{type: coulomb, mu_k: 0.17}'", dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("unknown key 'mu_k'; did you mean 'mu_d'?"), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, APluginRefusingItsSetUpIsBadInputNotACrash) {

@@ -1,5 +1,5 @@
 // run.yaml: its text field by field (what a resume and a campaign read back, and what a reader of the
-// run's folder sees first), and reading it back into what `run --resume` needs.
+// run's folder sees first), and reading it back into what `run --resume` and a campaign need.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -83,6 +83,7 @@ TEST(RunRecord, WhatIsWrittenReadsBackAsTheRunToResume) {
     const fs::path dir = testing::work_directory();
     const RunInfo info = two_plugin_run();
     RunRecord record{info, command_line, overrides, "running", "", {}};
+    record.summary = {24347, 97388, 0.0125, 3.5, 3.25, {}};
     record.write(dir);
     EXPECT_EQ(read_text(dir / "run.yaml"), record.text());
     auto recorded = read_recorded_run(dir);
@@ -92,6 +93,12 @@ TEST(RunRecord, WhatIsWrittenReadsBackAsTheRunToResume) {
     EXPECT_EQ(recorded->status, "running");
     EXPECT_EQ(recorded->scene_hash, "0123456789abcdef");
     EXPECT_FALSE(recorded->has_checkpoint);
+    // How far it got: what a campaign records of a case that stopped.
+    EXPECT_EQ(recorded->summary.steps, 24347);
+    EXPECT_EQ(recorded->summary.evaluations, 97388);
+    EXPECT_EQ(recorded->summary.simulated_time, 0.0125);
+    EXPECT_EQ(recorded->summary.wall_seconds, 3.5);
+    EXPECT_EQ(recorded->summary.cpu_seconds, 3.25);
     EXPECT_FALSE(recorded->resumable()) << "nothing to go on from";
 
     write_file_atomically(dir / checkpoint_files[2], "any bytes");  // even the previous one alone

@@ -1,9 +1,32 @@
-# cmake -DBUILD_DIR=<build> -DPREFIX=<dir> -D{BIN,LIB,INCLUDE,DATA}DIR=<dir> -DPLUGIN_SUBDIR=<dir> -P install.cmake
-# A fresh install of the build into PREFIX, and the files an out-of-tree plugin needs from it.
+# cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<src> -DPREFIX=<dir> -D{BIN,LIB,INCLUDE,DATA}DIR=<dir> -DPLUGIN_SUBDIR=<dir>
+#       -P install.cmake
+# A fresh install of the build into PREFIX, which writes nothing into the source tree, and the files
+# an out-of-tree plugin needs from it.
+
+# The files and folders of the source tree, but the build tree (which may lie inside it), the
+# repository and the caches Python writes beside the tests it runs.
+function(source_tree_files out)
+  file(GLOB_RECURSE files LIST_DIRECTORIES true RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/*)
+  file(RELATIVE_PATH build ${SOURCE_DIR} ${BUILD_DIR})
+  set(kept)
+  foreach(f IN LISTS files)
+    if(NOT f MATCHES "(^|/)(\\.git|__pycache__)(/|$)" AND NOT (f STREQUAL build OR f MATCHES "^${build}/"))
+      list(APPEND kept ${f})
+    endif()
+  endforeach()
+  set(${out} ${kept} PARENT_SCOPE)
+endfunction()
+
 file(REMOVE_RECURSE ${PREFIX})
+source_tree_files(before)
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} RESULT_VARIABLE result)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${result})")
+endif()
+source_tree_files(after)
+list(REMOVE_ITEM after ${before})
+if(after)
+  message(FATAL_ERROR "cmake --install wrote into the source tree: ${after}")
 endif()
 foreach(file
     ${LIBDIR}/cmake/FrictionLab/FrictionLabConfig.cmake

@@ -1,7 +1,10 @@
-# cmake -DPREFIX=<install> -DWORK=<dir> -DCHECK_SOURCE=<dir> -DGENERATOR=<g> -DMAKE_PROGRAM=<p>
-#       -DCXX_COMPILER=<c> -DBINDIR=<dir> -DDATADIR=<dir> -DPLUGIN_SUBDIR=<dir> -P plugin_template.cmake
-# Copies the installed template as a user would, builds it and the check program against the
-# install, and runs the check on the plugin it produced.
+# cmake -DPREFIX=<dir> [-DBUILD_TREE=ON -DSOURCE_DIR=<src>] -DWORK=<dir> -DCHECK_SOURCE=<dir> -DGENERATOR=<g>
+#       -DMAKE_PROGRAM=<p> -DCXX_COMPILER=<c> -DBINDIR=<dir> -DDATADIR=<dir> -DPLUGIN_SUBDIR=<dir> -P plugin_template.cmake
+# Copies the plugin template as a user would, builds it and the check program against FrictionLab,
+# and runs the check on the plugin it produced. PREFIX is an install (found through
+# CMAKE_PREFIX_PATH, the template copied from its share/frictionlab), or with BUILD_TREE the build
+# tree itself (found through FrictionLab_DIR, the template copied from the sources); both lay out
+# bin/ and the shipped plugins alike.
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
   if(NOT result EQUAL 0)
@@ -10,7 +13,7 @@ function(run)
   endif()
 endfunction()
 
-# Runs the installed frictionlab on a scene written in ${WORK}/scene, into a fresh output folder.
+# Runs frictionlab on a scene written in ${WORK}/scene, into a fresh output folder.
 function(run_scene scene output)
   file(REMOVE_RECURSE ${WORK}/scene/${output})
   execute_process(
@@ -31,13 +34,20 @@ function(expect_recorded output plugin)
   endif()
 endfunction()
 
-set(configure_options -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+if(BUILD_TREE)
+  set(package -DFrictionLab_DIR=${PREFIX})
+  set(template ${SOURCE_DIR}/share/plugin_template)
+else()
+  set(package -DCMAKE_PREFIX_PATH=${PREFIX})
+  set(template ${PREFIX}/${DATADIR}/frictionlab/plugin_template)
+endif()
+set(configure_options -G ${GENERATOR} ${package} -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 if(MAKE_PROGRAM)
   list(APPEND configure_options -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM})
 endif()
 
 file(REMOVE_RECURSE ${WORK}/my_plugin ${WORK}/check ${WORK}/output)
-file(COPY ${PREFIX}/${DATADIR}/frictionlab/plugin_template/ DESTINATION ${WORK}/my_plugin)
+file(COPY ${template}/ DESTINATION ${WORK}/my_plugin)
 run(${CMAKE_COMMAND} -S ${WORK}/my_plugin -B ${WORK}/my_plugin/build ${configure_options})
 run(${CMAKE_COMMAND} --build ${WORK}/my_plugin/build)
 set(plugin ${WORK}/my_plugin/build/plugins/observer_max_speed_csv.so)
@@ -50,8 +60,8 @@ run(${CMAKE_COMMAND} --build ${WORK}/check)
 file(MAKE_DIRECTORY ${WORK}/output)
 run(${WORK}/check/check_template ${plugin} ${WORK}/output)
 
-# The installed program finds the plugin through FRICTIONLAB_PLUGIN_PATH, and its shipped plugins
-# next to itself in the install tree.
+# The program finds the plugin through FRICTIONLAB_PLUGIN_PATH, and its shipped plugins next to
+# itself.
 execute_process(
   COMMAND ${CMAKE_COMMAND} -E env FRICTIONLAB_PLUGIN_PATH=${WORK}/my_plugin/build/plugins ${PREFIX}/${BINDIR}/frictionlab list
   RESULT_VARIABLE result OUTPUT_VARIABLE listing ERROR_VARIABLE listing)
@@ -66,7 +76,7 @@ foreach(expected "max_speed_csv" "${WORK}/my_plugin/build/plugins/observer_max_s
   endif()
 endforeach()
 
-# Through a scene, as a user would: the installed frictionlab runs a small lattice whose scene names
+# Through a scene, as a user would: frictionlab runs a small lattice whose scene names
 # the template's directory in plugin_paths (relative to the scene file) and its observer by type.
 set(small_slider "plugin_paths: [../my_plugin/build/plugins]
 bulk: {type: spring_lattice_2d, nx: 11, nz: 3, length: 0.025, height: 0.005}

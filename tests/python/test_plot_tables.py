@@ -1,5 +1,5 @@
-"""What frictionlab.plot reads: a run's tables as structured arrays of float64 columns by name, the
-same from CSV and HDF5 (to the CSV's digits); when loading started, from the stages run.yaml records; a campaign's tables
+"""What frictionlab.plot reads: a run's tables as structured arrays of columns by name (float64,
+the declared integers int64 and flags bool), the same from CSV and HDF5 (to the CSV's digits); when loading started, from the stages run.yaml records; a campaign's tables
 as rows."""
 import os
 
@@ -11,12 +11,14 @@ from frictionlab.plot import _clock, _tables
 SETTLE = 0.003  # the tiny scene's first stage; its driving spring acts in the second
 
 
-def test_a_table_reads_as_float_columns_by_name_the_same_from_csv_and_hdf5(csv_run, hdf5_run):
+def test_a_table_reads_as_typed_columns_by_name_the_same_from_csv_and_hdf5(csv_run, hdf5_run):
     events = _tables.table(csv_run.directory, "precursors")
     with open(os.path.join(csv_run.directory, "precursors.csv")) as f:
         header, first = f.readline().strip().split(","), f.readline().strip().split(",")
     assert list(events.dtype.names) == header
-    assert all(events.dtype[c] == np.float64 for c in header)
+    typed = {"event": np.int64, "nucleation_block": np.int64, "ruptured_blocks": np.int64, "out_of_contact": np.int64,
+             "finished": bool, "global": bool}
+    assert all(events.dtype[c] == typed.get(c, np.float64) for c in header)
     assert [events[c][0] for c in header] == [float(v) for v in first]
     from_hdf5 = _tables.table(hdf5_run, "precursors")  # a frictionlab.Run does as well as its directory
     assert os.path.exists(os.path.join(hdf5_run.directory, "precursors.h5"))

@@ -96,6 +96,32 @@ def test_csv_tables_read_in_one_line_by_numpy_and_pandas(csv_run):
     assert {p.split()[0] for p in meta["plugins"].split(", ")} == {p["name"] for p in csv_run.metadata["plugin_files"]}
 
 
+def test_frames_give_integers_and_flags_their_types_and_take_an_index(csv_run, hdf5_run):
+    import pandas
+
+    for run in (csv_run, hdf5_run):
+        events = run.frame("precursors")
+        assert len(events) >= 1
+        for column in ("event", "nucleation_block", "ruptured_blocks", "out_of_contact"):
+            assert events[column].dtype == np.int64, column
+        assert events["finished"].dtype == bool and events["global"].dtype == bool
+        assert events["t_start"].dtype == np.float64
+        assert run.arrays("precursors")["event"].dtype == np.int64
+        curve = run.frame("loading_curve", index="time")
+        assert curve.index.name == "time" and "time" not in curve.columns
+        assert curve.index[-1] == pytest.approx(0.012)
+        assert curve["step"].dtype == np.int64 and curve["stage"].dtype == np.int64
+        with pytest.raises(KeyError, match="columns"):
+            run.frame("loading_curve", index="no_such_column")
+    # The integers as pandas.read_csv reads them from the file itself; its other columns are float64
+    # whatever their values (pandas reads a column of whole numbers, such as a constant load, as int64).
+    path = os.path.join(csv_run.directory, "loading_curve.csv")
+    frame, read = csv_run.frame("loading_curve"), pandas.read_csv(path)
+    assert (frame["step"].dtype, frame["stage"].dtype) == (read["step"].dtype, read["stage"].dtype)
+    assert (frame.dtypes.drop(["step", "stage"]) == np.float64).all()
+    pandas.testing.assert_frame_equal(frame, read, check_dtype=False)
+
+
 def test_hdf5_tables_are_chunked_compressed_and_carry_their_provenance(hdf5_run, csv_run):
     path = os.path.join(hdf5_run.directory, "interface_velocity.h5")
     with h5py.File(path, "r") as f:

@@ -52,9 +52,11 @@ def test_a_missing_file_is_a_scene_error():
 
 
 def test_types_and_doc_are_what_list_and_doc_print(cli):
-    listed = __import__("conftest").run_cli(cli, "list").stdout.split()
+    # `list`: a line per type (KIND/TYPE and its library), then what it is, indented.
+    lines = __import__("conftest").run_cli(cli, "list").stdout.splitlines()
+    listed = {line.split()[0]: what.strip() for line, what in zip(lines, lines[1:]) if not line[:1].isspace()}
     types = frictionlab.types()
-    assert {f"{t['kind']}/{t['type']}" for t in types} == {w for w in listed if "/" in w and not w.endswith(".so")}
+    assert {f"{t['kind']}/{t['type']}": t["summary"] for t in types} == listed
     normal_load = frictionlab.doc("loader", "normal_load")
     theta = next(p for p in normal_load["params"] if p["key"] == "theta")
     assert theta["unit"] == "1" and theta["default"] == 0

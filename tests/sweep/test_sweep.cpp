@@ -1,8 +1,8 @@
 // `frictionlab sweep` as a user runs it: a tiny grid x seeds through the real command, its tables
 // read back against each case's own files and against a plain `frictionlab run` of one case; the
 // same outputs at -j 1, -j 2 and under mpirun; a killed sweep re-run completes only what is
-// missing; Ctrl-C stops its cases with a checkpoint to go on from; a failing case is recorded while
-// the others finish.
+// missing; Ctrl-C stops its cases with a checkpoint to go on from, recorded with how far they got; a
+// failing case is recorded while the others finish.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include "cli.hpp"
 #include "csv.hpp"
@@ -311,6 +312,18 @@ TEST(Sweep, CtrlCStopsTheRunningCaseWithACheckpointAndTheSweepRunAgainGoesOn) {
     EXPECT_NE(log.find("SIGINT received: finishing the current step"), std::string::npos) << log;
     EXPECT_NE(read_text(case_dir / "run.yaml").find("status: interrupted"), std::string::npos);
     EXPECT_EQ(sweep_rows(dir / "out" / "sweep.csv").at("seed-3").at("status"), "interrupted");
+    // ...and how far it got, as its run.yaml says.
+    const YAML::Node run = YAML::LoadFile((case_dir / "run.yaml").string());
+    const YAML::Node record = YAML::LoadFile((case_dir / "case.yaml").string());
+    EXPECT_GT(run["steps"].as<long long>(), 0);
+    EXPECT_EQ(record["steps"].as<long long>(), run["steps"].as<long long>());
+    EXPECT_EQ(record["simulated_time"].as<double>(), run["simulated_time"].as<double>());
+    // sweep.csv too: steps is its third column from the end (the reason before it is quoted, commas and all).
+    const std::string table = read_text(dir / "out" / "sweep.csv");
+    const auto row = table.find("\nseed-3,") + 1;
+    std::string line = table.substr(row, table.find('\n', row) - row);
+    for (int k = 0; k < 2; ++k) line.erase(line.rfind(','));
+    EXPECT_EQ(line.substr(line.rfind(',') + 1), run["steps"].as<std::string>()) << table;
 
     const auto rerun = frictionlab("sweep " SWEEP_FILES "/resumable_sweep.yaml -o out -j 1", dir);
     ASSERT_EQ(rerun.code, 0) << rerun.output;

@@ -1,14 +1,14 @@
-// `frictionlab doc [KIND[/TYPE]]`: the reference of types and their parameters, generated from
-// their declarations; `doc sweep` and `doc study`: the keys of the campaign files.
+// `frictionlab doc [KIND | KIND/TYPE | TYPE]`: the reference of types and their parameters, generated
+// from their declarations; `doc sweep` and `doc study`: the keys of the campaign files.
 #include <iostream>
 
 #include "../doc_writer.hpp"
+#include "../type_selector.hpp"
 #include "command.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/campaign/keys.hpp"
 #include "frictionlab/plugins/search.hpp"
 #include "frictionlab/scene/values.hpp"
-#include "type_selector.hpp"
 
 namespace frictionlab::cli {
 
@@ -67,8 +67,8 @@ int doc(const DocOptions& o, const Invocation& in) {
 Execute set_up(CLI::App& cmd, GlobalOptions& global) {
     auto o = std::make_shared<DocOptions>();
     cmd.add_option("selector", o->selector,
-                   "A kind (e.g. friction_law), KIND/TYPE, or sweep or study (their file formats); all types if "
-                   "omitted");
+                   "A kind (e.g. friction_law), KIND/TYPE, a type alone (three_state_junctions), or sweep or study "
+                   "(their file formats); all types if omitted");
     cmd.add_option("--format", o->format, "Output format")->check(CLI::IsMember({"text", "md", "json"}));
     global.attach(cmd);
     return [o](const Invocation& in) { return doc(*o, in); };
@@ -76,6 +76,6 @@ Execute set_up(CLI::App& cmd, GlobalOptions& global) {
 
 }  // namespace
 
-Command doc_command() { return {"doc", "Document types and their parameters: doc [KIND[/TYPE]]", set_up}; }
+Command doc_command() { return {"doc", "Document types and their parameters: doc [KIND | KIND/TYPE | TYPE]", set_up}; }
 
 }  // namespace frictionlab::cli

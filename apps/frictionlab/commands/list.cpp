@@ -1,10 +1,10 @@
-// `frictionlab list`: every kind and type, with the library that provides it.
+// `frictionlab list`: every kind and type, with the library that provides it and what it is, in a line.
 #include <iostream>
 
+#include "../type_selector.hpp"
 #include "command.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/plugins/search.hpp"
-#include "type_selector.hpp"
 
 namespace frictionlab::cli {
 
@@ -15,7 +15,7 @@ int list(const Invocation& in) {
     load_plugins(registry, in.global.directories({}), in.log);
     for (const auto* t : all_types(registry))
         std::cout << to_string(t->kind) << "/" << t->type << "  " << (t->library.empty() ? "built in" : t->library)
-                  << "\n";
+                  << "\n    " << one_line(*t) << "\n";
     return exit_code::ok;
 }
 
@@ -26,6 +26,8 @@ Execute set_up(CLI::App& cmd, GlobalOptions& global) {
 
 }  // namespace
 
-Command list_command() { return {"list", "List every kind and type, with the library that provides it", set_up}; }
+Command list_command() {
+    return {"list", "List every kind and type, with the library that provides it and what it is", set_up};
+}
 
 }  // namespace frictionlab::cli

@@ -3,7 +3,7 @@ import csv
 import glob
 import os
 import xml.etree.ElementTree as ElementTree
-from typing import Dict, List, Optional, Tuple
+from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 import yaml
@@ -12,10 +12,17 @@ import yaml
 class Table:
     """One output table: `columns` (names, in order) and `values` (a float64 array, one row per
     observation, one column per name), with the provenance the run recorded (`provenance`: version,
-    scene hash, seed, plugins). Read from NAME.csv (+ NAME.csv.meta.yaml) or NAME.h5."""
+    scene hash, seed, plugins). Read from NAME.csv (+ NAME.csv.meta.yaml) or NAME.h5.
 
-    def __init__(self, name: str, path: str, columns: List[str], values: np.ndarray, provenance: dict):
+    `integer_columns` and `flag_columns` name the columns the observer declared integers (counts,
+    indices, step and stage numbers) and flags (0 or 1): to_records() and to_pandas() give them as
+    int64 and bool, where every value is one (a column with a missing value stays float64, as
+    pandas.read_csv reads it)."""
+
+    def __init__(self, name: str, path: str, columns: List[str], values: np.ndarray, provenance: dict,
+                 integer_columns: Sequence[str] = (), flag_columns: Sequence[str] = ()):
         self.name, self.path, self.columns, self.values, self.provenance = name, path, columns, values, provenance
+        self.integer_columns, self.flag_columns = list(integer_columns), list(flag_columns)
 
     def __getitem__(self, column: str) -> np.ndarray:
         """One column as a 1-D array, e.g. table["time"]."""
@@ -27,16 +34,37 @@ class Table:
     def __repr__(self) -> str:
         return f"Table({self.name!r}, {len(self)} rows, columns={self.columns[:6]}{'...' if len(self.columns) > 6 else ''})"
 
-    def to_records(self) -> np.ndarray:
-        """A structured array, columns by name (as numpy.genfromtxt(names=True) gives)."""
-        return np.rec.fromarrays(self.values.T, names=self.columns) if len(self) else np.rec.array(
-            np.zeros(0, dtype=[(c, float) for c in self.columns]))
+    def typed_column(self, column: str) -> np.ndarray:
+        """One column in its declared type: int64 or bool where every value is one, else float64."""
+        values = self[column]
+        if column not in self.integer_columns and column not in self.flag_columns:
+            return values
+        if not np.all(np.isfinite(values)) or np.any(values != np.round(values)):
+            return values
+        if column in self.flag_columns and np.all((values == 0) | (values == 1)):
+            return values.astype(bool)
+        return values.astype(np.int64)
 
-    def to_pandas(self):
-        """A pandas DataFrame (python3-pandas)."""
+    def to_records(self) -> np.ndarray:
+        """A structured array, columns by name (as numpy.genfromtxt(names=True) gives), integers and
+        flags typed."""
+        if not len(self):
+            return np.rec.array(np.zeros(0, dtype=[(c, self._empty_type(c)) for c in self.columns]))
+        return np.rec.fromarrays([self.typed_column(c) for c in self.columns], names=self.columns)
+
+    def to_pandas(self, index: Optional[str] = None):
+        """A pandas DataFrame (python3-pandas), integers and flags typed; `index` names the column to
+        index it by (e.g. "time")."""
         import pandas
 
-        return pandas.DataFrame(self.values, columns=self.columns)
+        if index is not None and index not in self.columns:
+            raise KeyError(f"no column {index!r} in {self.name} (columns: {', '.join(self.columns)})")
+        frame = pandas.DataFrame({c: (self.typed_column(c) if len(self) else np.zeros(0, self._empty_type(c)))
+                                  for c in self.columns}, columns=self.columns)
+        return frame.set_index(index) if index is not None else frame
+
+    def _empty_type(self, column: str) -> type:
+        return bool if column in self.flag_columns else np.int64 if column in self.integer_columns else float
 
 
 def read_table(path: str) -> Table:
@@ -47,10 +75,14 @@ def read_table(path: str) -> Table:
 
         with h5py.File(path, "r") as f:
             values = np.asarray(f["table"][:], dtype=float)
-            columns = [c.decode() if isinstance(c, bytes) else str(c) for c in f["table"].attrs["columns"]]
+            attributes = f["table"].attrs
+            names = {key: [c.decode() if isinstance(c, bytes) else str(c) for c in attributes.get(key, [])]
+                     for key in ("columns", "integer_columns", "flag_columns")}
             provenance = {k: (v.decode() if isinstance(v, bytes) else v.item() if hasattr(v, "item") else v)
                           for k, v in f.attrs.items()}
-        return Table(name, path, columns, values.reshape(-1, len(columns)), provenance)
+        columns = names["columns"]
+        return Table(name, path, columns, values.reshape(-1, len(columns)), provenance, names["integer_columns"],
+                     names["flag_columns"])
     with open(path, newline="") as f:
         lines = f.readlines()
     columns = next(csv.reader(lines[:1]), [])
@@ -64,7 +96,8 @@ def read_table(path: str) -> Table:
         with open(path + ".meta.yaml") as f:
             provenance = yaml.safe_load(f) or {}
         provenance.pop("columns", None)
-    return Table(name, path, columns, values, provenance)
+    return Table(name, path, columns, values, provenance, provenance.pop("integer_columns", []),
+                 provenance.pop("flag_columns", []))
 
 
 def _number(cell: str) -> float:
@@ -81,7 +114,8 @@ class Run:
                 and the scene with every default written out (`metadata["scene"]`)
     tables      the names of every table (CSV or HDF5), e.g. ["interface_velocity", "loading_curve", ...]
     table(name) one table (Table: .columns, .values, ["column"], .to_pandas())
-    arrays(name) / frame(name)  the same as a NumPy structured array / pandas DataFrame
+    arrays(name) / frame(name, index=None)  the same as a NumPy structured array / pandas DataFrame,
+                with integer columns as int64 and flags as bool; frame(name, index="time") is indexed by time
     series      the VTU series (ParaView .pvd files): {name: [(time, file), ...]}
     """
 
@@ -115,12 +149,13 @@ class Run:
         return read_table(self._files[name])
 
     def arrays(self, name: str) -> np.ndarray:
-        """The table NAME as a NumPy structured array (columns by name)."""
+        """The table NAME as a NumPy structured array (columns by name, integers and flags typed)."""
         return self.table(name).to_records()
 
-    def frame(self, name: str):
-        """The table NAME as a pandas DataFrame."""
-        return self.table(name).to_pandas()
+    def frame(self, name: str, index: Optional[str] = None):
+        """The table NAME as a pandas DataFrame (integers as int64, flags as bool), indexed by the
+        column `index` if given, e.g. run.frame("loading_curve", index="time")."""
+        return self.table(name).to_pandas(index)
 
     @property
     def series(self) -> Dict[str, List[Tuple[float, str]]]:

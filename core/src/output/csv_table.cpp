@@ -15,7 +15,8 @@
 
 namespace frictionlab {
 
-CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info)
+CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const ColumnTypes& types,
+                   const RunInfo& info)
     : TableWriter(file), columns_(columns.size()) {
     fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd_ < 0 && errno == EEXIST)
@@ -24,7 +25,7 @@ CsvTable::CsvTable(const std::filesystem::path& file, const std::vector<std::str
                         "its own file",
                         file.string()));
     if (fd_ < 0) throw RunError(fmt::format("cannot create '{}': {}", file.string(), os_error(errno)));
-    write_file_atomically(table_sidecar_path(file), table_sidecar_yaml(Provenance::of(info), columns));
+    write_file_atomically(table_sidecar_path(file), table_sidecar_yaml(Provenance::of(info), columns, types));
     append(fmt::format("{}\n", fmt::join(columns, ",")));
 }
 

@@ -58,7 +58,8 @@ std::size_t Hdf5Table::chunk_rows(std::size_t columns) {
     return std::clamp<std::size_t>(doubles_per_chunk / std::max<std::size_t>(columns, 1), 16, 8192);
 }
 
-Hdf5Table::Hdf5Table(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info)
+Hdf5Table::Hdf5Table(const std::filesystem::path& file, const std::vector<std::string>& columns,
+                     const ColumnTypes& types, const RunInfo& info)
     : TableWriter(file),
       columns_(columns.size()),
       chunk_rows_(chunk_rows(columns.size())),
@@ -86,6 +87,8 @@ Hdf5Table::Hdf5Table(const std::filesystem::path& file, const std::vector<std::s
     dataset_id_ = H5Dcreate2(file_id_, "table", H5T_IEEE_F64LE, space.id, H5P_DEFAULT, properties.id, H5P_DEFAULT);
     check(dataset_id_ >= 0, file, "create the dataset of");
     string_list_attribute(dataset_id_, "columns", columns, file);
+    if (!types.integers.empty()) string_list_attribute(dataset_id_, "integer_columns", types.integers, file);
+    if (!types.flags.empty()) string_list_attribute(dataset_id_, "flag_columns", types.flags, file);
     H5Fflush(file_id_, H5F_SCOPE_LOCAL);
 }
 

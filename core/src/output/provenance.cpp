@@ -32,10 +32,17 @@ std::string Provenance::yaml(int indent) const {
     return out;
 }
 
-std::string table_sidecar_yaml(const Provenance& provenance, const std::vector<std::string>& columns) {
-    YAML::Emitter y;
-    y << YAML::Flow << columns;
-    return provenance.yaml() + "columns: " + y.c_str() + "\n";
+std::string table_sidecar_yaml(const Provenance& provenance, const std::vector<std::string>& columns,
+                               const ColumnTypes& types) {
+    const auto list = [](const char* key, const std::vector<std::string>& names) {
+        YAML::Emitter y;
+        y << YAML::Flow << names;
+        return std::string(key) + ": " + y.c_str() + "\n";
+    };
+    std::string out = provenance.yaml() + list("columns", columns);
+    if (!types.integers.empty()) out += list("integer_columns", types.integers);
+    if (!types.flags.empty()) out += list("flag_columns", types.flags);
+    return out;
 }
 
 std::filesystem::path table_sidecar_path(const std::filesystem::path& file) {

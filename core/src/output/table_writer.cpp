@@ -1,5 +1,7 @@
 #include "frictionlab/output/table_writer.hpp"
 
+#include <algorithm>
+
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/output/csv_table.hpp"
 #include "frictionlab/output/hdf5_table.hpp"
@@ -22,11 +24,21 @@ std::vector<OutputName> table_outputs(const std::string& key, const std::string&
 
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
                                         const RunInfo& info, TableFormat format, bool resume) {
+    return open_table(file, columns, ColumnTypes{}, info, format, resume);
+}
+
+std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
+                                        const ColumnTypes& types, const RunInfo& info, TableFormat format,
+                                        bool resume) {
+    for (const auto* names : {&types.integers, &types.flags})
+        for (const auto& name : *names)
+            if (std::find(columns.begin(), columns.end(), name) == columns.end())
+                throw RunError("table " + file.string() + " has no column '" + name + "' to type");
     if (resume && format == TableFormat::hdf5)
         throw RunError("an HDF5 table cannot be resumed (observers writing `format: hdf5` refuse checkpoints)");
     if (resume) return std::make_unique<CsvTable>(file, columns, CsvTable::Resume{});
-    if (format == TableFormat::hdf5) return std::make_unique<Hdf5Table>(table_file(file, format), columns, info);
-    return std::make_unique<CsvTable>(file, columns, info);
+    if (format == TableFormat::hdf5) return std::make_unique<Hdf5Table>(table_file(file, format), columns, types, info);
+    return std::make_unique<CsvTable>(file, columns, types, info);
 }
 
 }  // namespace frictionlab

@@ -162,7 +162,10 @@ void report_unknown(const YAML::Node& key, const std::string& path, const Sectio
     for (const auto& p : keys.params) known.push_back(p.key);
     known.insert(known.end(), keys.other_keys.begin(), keys.other_keys.end());
     const std::string name = key.Scalar();
-    const std::string guess = did_you_mean(name, known);
+    std::string guess;
+    for (const auto& p : keys.params)
+        if (std::find(p.former_keys.begin(), p.former_keys.end(), name) != p.former_keys.end()) guess = p.key;
+    if (guess.empty()) guess = did_you_mean(name, known);
     if (!guess.empty()) {
         reporter.error(key, join_path(path, name),
                        "unknown key " + quote(name) + "; did you mean " + quote(guess) + "?");

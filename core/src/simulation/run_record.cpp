@@ -85,6 +85,11 @@ std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
         for (const auto& o : overrides) run.overrides.push_back(o.as<std::string>(""));
     run.status = record["status"].as<std::string>("");
     run.scene_hash = record["scene_hash"].as<std::string>("");
+    run.summary.steps = record["steps"].as<long long>(0);
+    run.summary.evaluations = record["evaluations"].as<long long>(0);
+    run.summary.simulated_time = record["simulated_time"].as<double>(0);
+    run.summary.wall_seconds = record["wall_seconds"].as<double>(0);
+    run.summary.cpu_seconds = record["cpu_seconds"].as<double>(0);
     for (const char* name : checkpoint_files)
         run.has_checkpoint = run.has_checkpoint || std::filesystem::exists(dir / name);
     return run;

@@ -234,9 +234,9 @@ TEST(Coulomb, DefaultStiffnessFollowsNormalForceWithoutForceJump) {
 
 TEST(Coulomb, RejectsKineticAboveStatic) {
     Coulomb::Params p = exact_params();
-    p.mu_k = 0.5;
+    p.mu_d = 0.5;
     EXPECT_THROW(Rig{p}, InputError);
-    EXPECT_EQ(Rig(exact_params()).law->describe(), "Coulomb friction (mu_s=0.4, mu_k=0.17, k_t=1.02e+03 N/m)");
+    EXPECT_EQ(Rig(exact_params()).law->describe(), "Coulomb friction (mu_s=0.4, mu_d=0.17, k_t=1.02e+03 N/m)");
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // The Burridge-Knopoff chain assembled from plugins (chain_1d + plate_springs + coulomb), against its
 // exact steady-sliding solution: every block slides at the plate speed V, lagging behind the plate by
 // the kinetic friction over the plate stiffness,
-//     u_i(t) = V t - mu_k f_N / k_p,
+//     u_i(t) = V t - mu_d f_N / k_p,
 // since the chain springs are unstretched (uniform motion) and the chain's dashpots idle (equal
 // velocities). RK4 follows a linear motion exactly, so what is left is round-off: positions near
-// 0.1 m carry ~1e-17 m, i.e. chain-spring forces of ~1e-10 N against mu_k f_N = 0.68 N; the
+// 0.1 m carry ~1e-17 m, i.e. chain-spring forces of ~1e-10 N against mu_d f_N = 0.68 N; the
 // tolerances (1e-6 of the lag and of V) sit far above that and far below any wrong factor in a law.
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@ namespace {
 
 TEST(BurridgeKnopoffSliding, SteadySlidingLagsThePlateBy_muk_fN_over_kp) {
     constexpr int N = 8;
-    const double F_N = 32, f_N = F_N / N, k_p = 3e6, V = 1e-3, mu_k = 0.17;
+    const double F_N = 32, f_N = F_N / N, k_p = 3e6, V = 1e-3, mu_d = 0.17;
     test_support::Services services;
     Chain1d::Params cp;
     cp.blocks = N;
@@ -40,7 +40,7 @@ TEST(BurridgeKnopoffSliding, SteadySlidingLagsThePlateBy_muk_fN_over_kp) {
     plate.velocity = V;
     system.add_effect(std::make_unique<PlateSprings>(plate, ctx));
     Coulomb::Params friction;
-    friction.mu_k = mu_k;
+    friction.mu_d = mu_d;
     system.add_effect(std::make_unique<Coulomb>(friction, ctx));
 
     // At rest on the base under f_N each (penetration f_N / K_b), the plate's origin at x0.
@@ -54,7 +54,7 @@ TEST(BurridgeKnopoffSliding, SteadySlidingLagsThePlateBy_muk_fN_over_kp) {
     y.segment(2 * N, N).setConstant(V);
     system.begin_step();
     system.accept(0.0, y);
-    const double lag = mu_k * f_N / k_p;  // 0.23 um
+    const double lag = mu_d * f_N / k_p;  // 0.23 um
     y.head(N) = (body.x0 - lag).matrix();
     system.begin_step();
     system.accept(0.0, y);
@@ -68,11 +68,11 @@ TEST(BurridgeKnopoffSliding, SteadySlidingLagsThePlateBy_muk_fN_over_kp) {
         ASSERT_LT((u - (V * s.t - lag)).abs().maxCoeff(), 1e-6 * lag) << "t = " << s.t;
         ASSERT_LT((s.vx - V).abs().maxCoeff(), 1e-6 * V) << "t = " << s.t;
     }
-    // 4 ms later the plate has moved 4 um, the blocks too, still lagging by mu_k f_N / k_p.
+    // 4 ms later the plate has moved 4 um, the blocks too, still lagging by mu_d f_N / k_p.
     const Quantities& q = services.quantities;
     system.refresh();
-    EXPECT_NEAR(q.find_scalar("driving_force")->value, N * mu_k * f_N, 1e-6 * N * mu_k * f_N);
-    EXPECT_NEAR(q.find_field("friction_force")->values.sum(), -N * mu_k * f_N, 1e-9 * N * mu_k * f_N);
+    EXPECT_NEAR(q.find_scalar("driving_force")->value, N * mu_d * f_N, 1e-6 * N * mu_d * f_N);
+    EXPECT_NEAR(q.find_field("friction_force")->values.sum(), -N * mu_d * f_N, 1e-9 * N * mu_d * f_N);
     EXPECT_EQ(q.find_field("slipping")->values.minCoeff(), 1.0);
 }
 

@@ -51,8 +51,9 @@ struct ParamInfo {
     /// An integer member narrower than the scene's 64 bits: the values it can hold. A value outside
     /// would wrap around when stored (nx = 4294967307 would build 11 columns).
     std::optional<std::pair<std::int64_t, std::int64_t>> integer_range;
-    std::vector<std::string> choices;  // allowed strings
-    bool names_stage = false;          // a string that must name a stage of the scene ("" names none)
+    std::vector<std::string> choices;      // allowed strings
+    bool names_stage = false;              // a string that must name a stage of the scene ("" names none)
+    std::vector<std::string> former_keys;  // names the key had before: a scene using one is told this key
 };
 
 /// A file or folder a component writes at the top of the run's output directory, and the key whose
@@ -150,6 +151,12 @@ public:
         /// The value names a stage of the scene (or is empty); the scene check refuses any other.
         Field& names_a_stage() {
             info().names_stage = true;
+            return *this;
+        }
+        /// A name the key had before. An unknown key is answered with the closest name, which for a
+        /// renamed key may be a sibling (mu_k is as close to mu_s as to mu_d); this names the new one.
+        Field& formerly(std::string old_key) {
+            info().former_keys.push_back(std::move(old_key));
             return *this;
         }
         /// The key must be given in the scene; the member initialiser is then only an example value.

@@ -7,7 +7,7 @@
 
 namespace frictionlab {
 
-/// "" when the coefficient of a moving contact (mu_d, mu_k) does not exceed the static one; else
+/// "" when the coefficient of a moving contact (mu_d) does not exceed the static one; else
 /// why it must not: the contact would carry more force moving than it takes to break it at rest.
 inline std::string moving_not_above_static(std::string_view moving_key, double mu_moving, double mu_s) {
     if (mu_moving <= mu_s) return {};

@@ -17,7 +17,8 @@ class CsvTable final : public TableWriter {
 public:
     /// Creates the file; refuses (InputError) one that exists already, which in a run's fresh
     /// output directory means another observer writes it.
-    CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info);
+    CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, const ColumnTypes& types,
+             const RunInfo& info);
     /// Appends to the table a resumed run left (run --resume; its header and sidecar are there).
     struct Resume {};
     CsvTable(const std::filesystem::path& file, const std::vector<std::string>& columns, Resume);

@@ -1,7 +1,8 @@
 #pragma once
 // An HDF5 table (NAME.h5) for the large outputs: one two-dimensional float64 dataset `table`, rows
 // by columns, chunked and compressed (shuffle + deflate), growing as rows arrive; its column names
-// are the dataset's attribute `columns`, and the run's provenance (provenance.hpp) attributes
+// are the dataset's attribute `columns` (those that are integers or flags its attributes
+// `integer_columns` and `flag_columns`, when there are any), and the run's provenance (provenance.hpp) attributes
 // of the file. h5py: `f["table"][:]`, `f["table"].attrs["columns"]`, `f.attrs["scene_hash"]`.
 //
 // Rows are gathered in memory one chunk at a time (no allocation per row) and written when the chunk
@@ -19,7 +20,8 @@ namespace frictionlab {
 
 class Hdf5Table final : public TableWriter {
 public:
-    Hdf5Table(const std::filesystem::path& file, const std::vector<std::string>& columns, const RunInfo& info);
+    Hdf5Table(const std::filesystem::path& file, const std::vector<std::string>& columns, const ColumnTypes& types,
+              const RunInfo& info);
     ~Hdf5Table() override;
     Hdf5Table(const Hdf5Table&) = delete;
     Hdf5Table& operator=(const Hdf5Table&) = delete;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "frictionlab/output/run_info.hpp"
+#include "frictionlab/output/table_writer.hpp"
 
 namespace frictionlab {
 
@@ -38,8 +39,10 @@ struct Provenance {
     std::string yaml(int indent = 0) const;
 };
 
-/// The sidecar of a CSV table: its provenance and its column names, as YAML.
-std::string table_sidecar_yaml(const Provenance& provenance, const std::vector<std::string>& columns);
+/// The sidecar of a CSV table: its provenance and its column names, as YAML, with those that are
+/// integers or flags (`integer_columns`, `flag_columns`) when there are any.
+std::string table_sidecar_yaml(const Provenance& provenance, const std::vector<std::string>& columns,
+                               const ColumnTypes& types = {});
 
 /// The sidecar's path for a table at `file`: `file` + ".meta.yaml".
 std::filesystem::path table_sidecar_path(const std::filesystem::path& file);

@@ -26,10 +26,23 @@ protected:
 
 enum class TableFormat { csv, hdf5 };
 
+/// The columns that hold more than a real number, for readers that type their columns (the Python
+/// module gives integers as int64 and flags as booleans); every value is written as a number. The
+/// sidecar (`integer_columns`, `flag_columns`) or the HDF5 dataset's attributes of the same names
+/// record them.
+struct ColumnTypes {
+    std::vector<std::string> integers;  // counts, indices, step and stage numbers
+    std::vector<std::string> flags;     // 0 or 1
+};
+
 /// Opens a table at `file` (e.g. out/interface_velocity.csv); in HDF5 its extension becomes .h5.
 /// `resume` (RunView::resuming): append to the table a resumed run left, as it was at the checkpoint.
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
                                         const RunInfo& info, TableFormat format, bool resume = false);
+/// The same, with the columns that are integers or flags named (every other one is real).
+std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
+                                        const ColumnTypes& types, const RunInfo& info, TableFormat format,
+                                        bool resume = false);
 
 /// The files of a table named `file` in `format`, for an observer's declared outputs: NAME and its
 /// provenance sidecar in CSV, NAME.h5 in HDF5. `key` is the key that names the table.

@@ -42,12 +42,14 @@ struct RunRecord {
     std::string text() const;
 };
 
-/// What a run directory's run.yaml says about how to continue the run in it (run --resume).
+/// What a run directory's run.yaml says about how to continue the run in it (run --resume), and how
+/// far it got (a campaign's record of a case that stopped).
 struct RecordedRun {
     std::filesystem::path scene_file;    // as given to the run
     std::vector<std::string> overrides;  // its --set list
     std::string status, scene_hash;      // running, interrupted, failed or completed
     bool has_checkpoint = false;         // a checkpoint file is there (intact or not)
+    RunSummary summary;                  // how far it got (without the integrator's statistics)
     /// A run stopped before its end with a checkpoint to go on from.
     bool resumable() const { return status != "completed" && has_checkpoint; }
 };
