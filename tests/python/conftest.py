@@ -1,5 +1,6 @@
 """Shared fixtures: the build's command line, the tiny scene, one run of it in each format and one
-stopped before its first rupture, and the plotting package's command line.
+stopped before its first rupture, a real small sweep and ensemble study, and the plotting package's
+command line.
 
 ctest sets FRICTIONLAB_CLI (the frictionlab executable) and FRICTIONLAB_SOURCE_DIR, and puts
 build/python first on PYTHONPATH."""
@@ -47,6 +48,34 @@ def quiet_run(tmp_path_factory):
     """The tiny scene loaded for half a millisecond: no rupture event yet."""
     out = tmp_path_factory.mktemp("quiet") / "out"
     return frictionlab.Scene.load(SCENE, set=["stages[1].duration=5.0e-4"]).run(output=str(out))
+
+
+@pytest.fixture(scope="session")
+def real_sweep(cli, source_dir, tmp_path_factory):
+    """tests/sweep/tiny_sweep.yaml run here: two loading rates x seeds 1 and 2, drawn by
+    `frictionlab plot DIR`."""
+    out = tmp_path_factory.mktemp("sweep") / "out"
+    for args in (["sweep", "-q", os.path.join(source_dir, "tests", "sweep", "tiny_sweep.yaml"), "-o", str(out)],
+                 ["plot", str(out)]):
+        result = subprocess.run([cli, *args], capture_output=True, text=True)
+        assert result.returncode == 0, result.stdout + result.stderr
+    return str(out)
+
+
+@pytest.fixture(scope="session")
+def real_study(cli, source_dir, tmp_path_factory):
+    """An ensemble study of tests/study/tiny_scene.yaml over two seeds run here: the reference (RK4
+    at 0.2 us), the same at half its step, and at twice it. `frictionlab study` draws its figures."""
+    folder = tmp_path_factory.mktemp("study")
+    (folder / "study.yaml").write_text(
+        f"title: tiny ensemble figures\nscene: {os.path.join(source_dir, 'tests', 'study', 'tiny_scene.yaml')}\n"
+        "observe_every: 1.0e-5\nprofile_every: 1.0e-4\nseeds: 2\n"
+        "reference:\n  set: [integrator.dt=2.0e-7]\nhalf_step:\n  set: [integrator.dt=1.0e-7]\n"
+        "cases:\n  - name: rk4_coarse\n    set: [integrator.dt=4.0e-7]\n")
+    result = subprocess.run([cli, "study", "-q", "-j", "2", str(folder / "study.yaml"), "-o", str(folder / "out")],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return str(folder / "out")
 
 
 def plot_command(*arguments, env=None):

@@ -155,18 +155,6 @@ def test_the_study_command_titles_the_plot_with_the_study_over_its_seeds(study):
     assert "a study for the tests: relative error against the reference, the largest over 2 seeds" in svg
 
 
-@pytest.fixture(scope="session")
-def real_sweep(cli, source_dir, tmp_path_factory):
-    """tests/sweep/tiny_sweep.yaml run here: two loading rates x seeds 1 and 2, drawn by
-    `frictionlab plot DIR`."""
-    out = tmp_path_factory.mktemp("sweep") / "out"
-    for args in (["sweep", "-q", os.path.join(source_dir, "tests", "sweep", "tiny_sweep.yaml"), "-o", str(out)],
-                 ["plot", str(out)]):
-        result = subprocess.run([cli, *args], capture_output=True, text=True)
-        assert result.returncode == 0, result.stdout + result.stderr
-    return str(out)
-
-
 def test_a_real_sweeps_figures_are_its_means_with_intervals_by_symbol_and_unit(real_sweep):
     for name in ("sweep_precursor_lengths", "sweep_against_velocity", "sweep_loading_curves"):
         assert os.path.exists(os.path.join(real_sweep, "plots", name + ".svg")), name
@@ -183,22 +171,6 @@ def test_a_real_sweeps_figures_are_its_means_with_intervals_by_symbol_and_unit(r
     assert all(len(ys) == 2 for ys in drawn(coefficient, "o").values())  # each seed a dot
     assert [t.get_text() for t in first.texts] == ["no case had a precursor"]  # the tiny sweep has none
     plt.close("all")
-
-
-@pytest.fixture(scope="session")
-def real_study(cli, source_dir, tmp_path_factory):
-    """An ensemble study of tests/study/tiny_scene.yaml over two seeds run here: the reference (RK4
-    at 0.2 us), the same at half its step, and at twice it. `frictionlab study` draws its figures."""
-    folder = tmp_path_factory.mktemp("study")
-    (folder / "study.yaml").write_text(
-        f"title: tiny ensemble figures\nscene: {os.path.join(source_dir, 'tests', 'study', 'tiny_scene.yaml')}\n"
-        "observe_every: 1.0e-5\nprofile_every: 1.0e-4\nseeds: 2\n"
-        "reference:\n  set: [integrator.dt=2.0e-7]\nhalf_step:\n  set: [integrator.dt=1.0e-7]\n"
-        "cases:\n  - name: rk4_coarse\n    set: [integrator.dt=4.0e-7]\n")
-    result = subprocess.run([cli, "study", "-q", "-j", "2", str(folder / "study.yaml"), "-o", str(folder / "out")],
-                            capture_output=True, text=True)
-    assert result.returncode == 0, result.stdout + result.stderr
-    return str(folder / "out")
 
 
 def test_a_real_ensemble_studys_work_precision_is_each_cases_error_with_its_interval(real_study):
