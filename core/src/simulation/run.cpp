@@ -170,10 +170,9 @@ private:
     void run_stage(const StageInfo& stage, ProgressLine& progress) {
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
-        const bool to_observations = sim_.integrator().steps_to_observations();
         while (!sim_.reached(t_end)) {
             try {
-                double until = to_observations ? std::min(t_end, next_observation()) : t_end;
+                double until = sim_.integrator().steps_to_observations() ? std::min(t_end, next_observation()) : t_end;
                 if (until <= sys.time()) until = t_end;  // an observation already taken at this time
                 sim_.step(until - sys.time());
             } catch (const RunError& e) {

@@ -65,7 +65,8 @@ public:
 class Integrator : public Component {
 public:
     ~Integrator() override;
-    /// Takes one step no longer than max_dt (to land on stage ends) and returns its length.
+    /// Takes one step no longer than max_dt (to land on stage ends) and returns its length; 0 when
+    /// it only changed how it steps (a hybrid turning dynamic), and the caller asks again.
     virtual double step(System&, double max_dt) = 0;
     /// The step the integrator is configured for (fixed steppers) or starts from (adaptive).
     virtual double nominal_dt() const = 0;
@@ -84,6 +85,8 @@ public:
     /// Whether the scheme takes steps far longer than its nominal step (a quiet phase solved for
     /// rather than stepped through): the run then passes the next observation time within max_dt,
     /// so observers still get their samples at their cadence. Fixed-step schemes keep their steps.
+    /// Asked before each step: a scheme may land on observations in some phases only, so that
+    /// where it steps at its own dt the observers' cadences do not change its steps.
     virtual bool steps_to_observations() const { return false; }
     /// Named figures the run records in run.yaml under integrator_statistics (e.g. the fractions
     /// of simulated and wall time spent in each phase of a hybrid scheme).
