@@ -1,6 +1,6 @@
-// The friction-law swap (README, "Swap the friction law"): one scene, scenes/swap_base.yaml, run by
-// the frictionlab command once per shipped friction law, with only its `friction:` block replaced by
-// the law's block (scenes/friction_<law>.yaml). Each run must show its own law's signature in the
+// The friction-law swap (share/docs/tutorial.md, "Swap the friction law"): one scene,
+// scenes/swap_base.yaml, run by the frictionlab command once per shipped friction law, with only its `friction:` block
+// replaced by the law's block (scenes/friction_<law>.yaml). Each run must show its own law's signature in the
 // observers' CSV outputs; every other line of the scene is the same. And the headline scene itself,
 // configs/headline.yaml, with each shipped law's or bulk model's block swapped in: it runs, or `check`
 // names every change still needed at once.
