@@ -16,9 +16,11 @@ namespace frictionlab {
 std::vector<CampaignColumn> value_columns(const std::vector<CampaignRun>& runs, const Registry& registry) {
     std::vector<CampaignColumn> columns;
     for (const auto& run : runs)
-        for (const auto& [key, value] : run.values)
+        for (const auto& value : run.values) {
+            const std::string& key = value.first;  // not a structured binding: clang 14 cannot capture one
             if (std::none_of(columns.begin(), columns.end(), [&](const auto& c) { return c.name == key; }))
                 columns.push_back({key, key_unit(run.scene, registry, key)});
+        }
     return columns;
 }
 
