@@ -154,7 +154,9 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             by_hand["global_slip_force_ratio"].push_back(std::stod(global->second->at("force_ratio")));
             by_hand["global_slip_time"].push_back(global->first - load_start);
         }
-        for (const auto& [statistic, values] : by_hand) {
+        for (const auto& entry : by_hand) {
+            const std::string& statistic = entry.first;  // not a structured binding: clang 14 cannot capture one
+            const std::vector<double>& values = entry.second;
             SCOPED_TRACE(statistic);
             const auto row = std::find_if(statistics.begin(), statistics.end(), [&](const Row& r) {
                 return r.at("loaders[2].velocity") == velocity && r.at("statistic") == statistic;
