@@ -1,14 +1,28 @@
 #include "frictionlab/campaign/campaign_table.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "frictionlab/base/version.hpp"
 #include "frictionlab/campaign/csv_cell.hpp"
+#include "frictionlab/campaign/key_unit.hpp"
 #include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/provenance.hpp"
 
 namespace frictionlab {
+
+std::vector<CampaignColumn> value_columns(const std::vector<CampaignRun>& runs, const Registry& registry) {
+    std::vector<CampaignColumn> columns;
+    for (const auto& run : runs)
+        for (const auto& value : run.values) {
+            const std::string& key = value.first;  // not a structured binding: clang 14 cannot capture one
+            if (std::none_of(columns.begin(), columns.end(), [&](const auto& c) { return c.name == key; }))
+                columns.push_back({key, key_unit(run.scene, registry, key)});
+        }
+    return columns;
+}
 
 std::vector<CampaignColumn> statistic_summary_columns() {
     return {{"statistic", ""},

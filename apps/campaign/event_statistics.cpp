@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "frictionlab/output/csv_columns.hpp"
+#include "frictionlab/simulation/run_record.hpp"
 
 namespace frictionlab {
 
@@ -104,16 +105,16 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
     return s;
 }
 
-double load_start(const Scene& scene) {
-    double t = 0;
-    for (std::size_t i = 0; i + 1 < scene.stages.size(); ++i) t += scene.stages[i].duration;
-    return t;
+double recorded_loading_start(const std::filesystem::path& directory) {
+    const auto record = read_recorded_run(directory);
+    return record ? record->loading_start : 0;
 }
 
 std::optional<EventStatistics> run_event_statistics(const Scene& scene) {
     const auto files = rupture_files(scene);
     if (!files) return std::nullopt;
-    return read_event_statistics(*files, scene.output_directory / "loading_curve.csv", load_start(scene));
+    return read_event_statistics(*files, scene.output_directory / "loading_curve.csv",
+                                 recorded_loading_start(scene.output_directory));
 }
 
 }  // namespace frictionlab

@@ -90,8 +90,8 @@ StudyResult run_study(const Study& study, const std::vector<CampaignRun>& runs, 
             result.rows.push_back(std::move(row));
             continue;
         }
-        row.outcome =
-            read_case_outcome(scene.output_directory, *files, scene.stages.front().duration, load_start(scene));
+        row.outcome = read_case_outcome(scene.output_directory, *files, scene.stages.front().duration,
+                                        recorded_loading_start(scene.output_directory));
         row.errors = compare(reference ? row.outcome : result.rows.at(k % seeds).outcome, row.outcome);
         log.info("study case {}: {:.3g} s wall ({:.3g} s CPU), {} steps, {} evaluations", row.label,
                  row.summary.wall_seconds, row.summary.cpu_seconds, row.summary.steps, row.summary.evaluations);

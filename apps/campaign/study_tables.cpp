@@ -152,30 +152,32 @@ void write_ensemble_csv(const StudyResult& result, const Study& study, const std
                          "(share/docs/accuracy-standard.md); the columns are in share/docs/glossary.md");
 }
 
-void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file) {
-    // The provenance goes to a sidecar, so that the table reads in one line (as the observers' tables).
-    write_file_atomically(
-        table_sidecar_path(file),
-        fmt::format("framework: frictionlab\nversion: {}\nstudy_file: {}\n{}\nnote: errors relative to "
-                    "the reference case{}; each case's run.yaml in cases/ records its resolved scene and plugins\n",
-                    framework_version(), study.file.filename().string(),
-                    study.seeds.empty() ? fmt::format("seed: {}", result.seed)
-                                        : fmt::format("seeds: [{}]", fmt::join(study.seeds, ", ")),
-                    study.seeds.empty() ? "; the seed unless a case sets it" : " of the same seed"));
-    std::string text = "case,family,scene_hash";
-    for (const auto& k : result.knob_columns) text += fmt::format(",{}", csv_cell(k));
-    text += ",wall_seconds,cpu_seconds,steps,evaluations";
-    for (const auto& c : error_columns) text += std::string(",") + c.name;
-    text += ",note\n";
-    for (const auto& row : result.rows) {
-        text += fmt::format("{},{},{}", row.name, csv_cell(row.family), row.scene_hash);
-        for (const auto& v : row.knobs) text += fmt::format(",{}", csv_cell(v));
-        text += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds,
-                            row.summary.steps, row.summary.evaluations);
-        for (const auto& c : error_columns) text += fmt::format(",{}", number(row.errors.*c.member));
-        text += fmt::format(",{}\n", csv_cell(row.errors.note));
+void write_study_csv(const StudyResult& result, const Study& study, const std::vector<CampaignRun>& runs,
+                     const Registry& registry, const std::filesystem::path& file) {
+    std::vector<CampaignColumn> columns{{"case", ""}, {"family", ""}, {"scene_hash", ""}};
+    const auto knobs = value_columns(runs, registry);
+    for (const auto& k : result.knob_columns) {
+        const auto it = std::find_if(knobs.begin(), knobs.end(), [&](const auto& c) { return c.name == k; });
+        columns.push_back({k, it == knobs.end() ? "" : it->unit});
     }
-    write_file_atomically(file, text);
+    columns.insert(columns.end(), {{"wall_seconds", "s"}, {"cpu_seconds", "s"}, {"steps", "1"}, {"evaluations", "1"}});
+    for (const auto& c : error_columns) columns.push_back({c.name, "1"});
+    columns.push_back({"note", ""});
+    std::string rows;
+    for (const auto& row : result.rows) {
+        rows += fmt::format("{},{},{}", row.name, csv_cell(row.family), row.scene_hash);
+        for (const auto& v : row.knobs) rows += fmt::format(",{}", csv_cell(v));
+        rows += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds,
+                            row.summary.steps, row.summary.evaluations);
+        for (const auto& c : error_columns) rows += fmt::format(",{}", number(row.errors.*c.member));
+        rows += fmt::format(",{}\n", csv_cell(row.errors.note));
+    }
+    write_campaign_table(
+        study, "study", file, columns, rows,
+        fmt::format("errors relative to the reference case{}; each case's run.yaml in cases/ records its resolved "
+                    "scene and plugins",
+                    study.seeds.empty() ? fmt::format(" (seed {}, unless a case sets its own)", result.seed)
+                                        : " of the same seed"));
 }
 
 void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file) {

@@ -26,16 +26,6 @@ const char* const note = "each run's run.yaml in cases/<case>/ records its resol
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.10g}", v); }
 
-/// What sets the runs apart (the varied key paths, then `seed`), in order of first use, with units.
-std::vector<CampaignColumn> value_columns(const std::vector<CampaignRun>& runs, const Registry& registry) {
-    std::vector<CampaignColumn> columns;
-    for (const auto& run : runs)
-        for (const auto& [key, value] : run.values)
-            if (std::none_of(columns.begin(), columns.end(), [&](const auto& c) { return c.name == key; }))
-                columns.push_back({key, key_unit(run.scene, registry, key)});
-    return columns;
-}
-
 /// The run's value of each column, as the sweep file writes it; empty where it has none.
 std::string value_cells(const CampaignValues& values, const std::vector<CampaignColumn>& columns) {
     std::string text;
@@ -119,7 +109,9 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
     std::vector<CampaignColumn> events_columns = columns;
     events_columns.insert(events_columns.end(), {{"event", "1"},
                                                  {"t_start", "s"},
+                                                 {"t_start_since_loading", "s"},
                                                  {"t_end", "s"},
+                                                 {"t_end_since_loading", "s"},
                                                  {"force_ratio", "1"},
                                                  {"extent_over_length", "1"},
                                                  {"kind", ""}});
@@ -149,8 +141,9 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
             return it == e.events.end() || k >= it->second.size() ? nan : it->second[k];
         };
         for (std::size_t k = 0; k < e.count; ++k)
-            events += fmt::format("{},{},{},{},{},{},{}\n", cells, number(column("event", k)),
-                                  number(column("t_start", k)), number(column("t_end", k)),
+            events += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, number(column("event", k)),
+                                  number(column("t_start", k)), number(column("t_start_since_loading", k)),
+                                  number(column("t_end", k)), number(column("t_end_since_loading", k)),
                                   number(column("force_ratio", k)), number(column("extent_over_length", k)),
                                   column("global", k) > 0.5 ? "global" : "precursor");
     }

@@ -30,6 +30,7 @@ ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
              "node: h must be the height of a node; interpolated: the driving point is interpolated linearly "
              "between the two nearest nodes and the force shared with the same weights.");
     s.add("node_set", &Params::node_set, "Node set the driving point lies on (a column of nodes).");
+    s.drives_loading();
     return s;
 }
 

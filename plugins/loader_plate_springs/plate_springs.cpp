@@ -16,6 +16,7 @@ ParamSpec<PlateSprings::Params> PlateSprings::spec() {
     s.add("velocity", &Params::velocity, "Speed V of the plate, from the start of the loader's first stage.")
         .unit("m/s");
     s.add("node_set", &Params::node_set, "Node set the plate pulls, one spring per node.");
+    s.drives_loading();
     return s;
 }
 

@@ -13,6 +13,18 @@
 
 namespace frictionlab {
 
+/// The energies at the energy observer's first observation, which every later row is counted from.
+/// At namespace scope: clang 14 cannot default-construct a nested class with member initializers
+/// inside std::optional while its enclosing class is being defined (cereal's load of the optional).
+struct EnergyReference {
+    double kinetic = 0;
+    std::vector<double> stored, work;  // E_e and W_e per effect
+    template <class Archive>
+    void serialize(Archive& ar) {
+        ar(kinetic, stored, work);
+    }
+};
+
 /// Energy bookkeeping of the run, one CSV row per observation. The work-energy theorem for the
 /// nodes, dKE = sum_e W_e, with W_e = int F_e . v dt the work effect e of the pipeline does on them
 /// (System work accounting, which this observer asks the run to switch on: it integrates W_e with
@@ -75,14 +87,7 @@ public:
 
 private:
     enum class Group { bulk, friction, loader };
-    struct Reference {
-        double kinetic = 0;
-        std::vector<double> stored, work;  // E_e and W_e per effect
-        template <class Archive>
-        void serialize(Archive& ar) {
-            ar(kinetic, stored, work);
-        }
-    };
+    using Reference = EnergyReference;
     static double kinetic_energy(const RunView& view);
 
     Params params_;

@@ -33,7 +33,6 @@ std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const Ruptur
     if (ruptured.any()) {
         if (quiet_long_enough) settle(finish(true));  // the observations were sparser than quiet_time
         if (!open_) start(t, ruptured, slip, driving_force, normal_load);
-        RuptureEvent& e = *open_;
         record(ruptured, t, before);
     } else if (quiet_long_enough) {
         settle(finish(true));

@@ -272,8 +272,17 @@ TEST_F(HostileInput, AFullDiskFailsTheRunCleanlyNamingEnospc) {
     expect_clean_failure(dir_ / "copied", said, "No space left on device (ENOSPC)");
 }
 
-TEST_F(HostileInput, MemoryRunningOutWhileAComponentIsBuiltNamesIt) {
+// AddressSanitizer: g++ says so with __SANITIZE_ADDRESS__, clang with __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
+#define FRICTIONLAB_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FRICTIONLAB_ADDRESS_SANITIZER 1
+#endif
+#endif
+
+TEST_F(HostileInput, MemoryRunningOutWhileAComponentIsBuiltNamesIt) {
+#if defined(FRICTIONLAB_ADDRESS_SANITIZER)
     GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit leaves";
 #endif
     // 3 million nodes, below the lattice's size limit, in 400 MB of address space: its arrays do not fit.

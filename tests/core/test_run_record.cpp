@@ -27,6 +27,7 @@ RunInfo two_plugin_run() {
     info.plugins = {{"bulk_chain_1d", "0.1.0", "lib/bulk_chain_1d.so", "aaaa"},
                     {"observer_energy", "0.2.0", "lib/observer_energy.so", "bbbb"}};
     info.resolved_scene = "seed: 7\nstages:\n  - {name: load, duration: 0.5}\n";
+    info.loading_start = 0.25;
     return info;
 }
 
@@ -54,6 +55,7 @@ TEST(RunRecord, ACompletedRunsTextHasTheProvenanceFirstThenWhatOnlyTheRecordHold
               "steps: 1200\n"
               "evaluations: 4800\n"
               "simulated_time: 0.5\n"
+              "loading_start: 0.25\n"
               "wall_seconds: 1.25\n"
               "cpu_seconds: 1\n"
               "integrator_statistics:\n"

@@ -84,6 +84,9 @@ def test_every_table_of_a_campaign_reads_as_one_header_and_its_rows(campaign, re
     for path in own:
         frame = check_table(path)
         assert len(frame) > 0, path
+        meta = sidecar(path)  # what wrote it, and each column's unit
+        assert "title" in meta and meta["columns"] == list(frame.columns), path
+        assert set(meta["units"]) == set(frame.columns), path
     for path in csv_files(os.path.join(directory, "cases")):  # each case's run tables
         check_table(path)
 

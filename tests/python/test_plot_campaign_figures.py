@@ -124,6 +124,8 @@ def test_an_empty_panel_says_why(sweep):
         f.writelines(line for line in lines if not line.rstrip().endswith("precursor"))
     _, first, _ = frictionlab.plot.sweep_against(sweep, "loaders[1].theta", axes=plt.subplots(1, 3)[1])
     assert not first.lines and [t.get_text() for t in first.texts] == ["no case had a precursor"]
+    low, high = first.get_xlim()  # the sweep's values of theta, as on the other panels
+    assert -0.6 < low < -0.5 and 0.5 < high < 0.6
 
 
 def test_the_sweeps_loading_curves_are_its_cases_that_have_one(sweep, csv_run):

@@ -48,15 +48,11 @@ def test_loading_starts_when_the_loading_stage_does_not_a_sample_later(csv_run):
     assert curve["time"][curve["stage"] == 1][0] == pytest.approx(SETTLE + 1e-5, abs=1e-12)
 
 
-def test_loading_starts_in_the_first_stage_a_driving_loader_acts_in(tmp_path):
-    stages = [{"name": n, "duration": 0.5} for n in ("settle", "load", "hold")]
-    driven = {"stages": stages, "loaders": [{"type": "normal_load"}, {"type": "driving_spring", "stages": ["load"]}]}
-    assert _clock.loading_stage(driven) == 1
-    assert _clock.loading_stage({"stages": stages, "loaders": [{"type": "plate_springs", "stages": ["hold"]}]}) == 2
-    assert _clock.loading_stage({"stages": stages, "loaders": [{"type": "driving_spring"}]}) == 0
-    assert _clock.loading_stage({"stages": stages, "loaders": [{"type": "normal_load"}]}) == 2  # none: the last
-    assert _clock.loading_stage({"loaders": [{"type": "driving_spring"}]}) is None
-    # A run directory whose run.yaml records no stages: the axes count from the run's start, saying so.
+def test_the_time_origin_is_the_loading_start_run_yaml_records(csv_run, tmp_path):
+    assert _clock.time_origin(csv_run.directory) == (SETTLE, "loading started")
+    curve = _tables.table(csv_run.directory, "loading_curve")
+    np.testing.assert_allclose(curve["time_since_loading"], curve["time"] - SETTLE, rtol=0, atol=1e-10)
+    # A run directory whose run.yaml does not record it: the axes count from the run's start, saying so.
     (tmp_path / "run.yaml").write_text("framework: frictionlab\n")
     t0, since = _clock.time_origin(str(tmp_path))
     assert t0 == 0 and since.startswith("the run started") and "unknown" in since

@@ -129,7 +129,7 @@ def test_hdf5_tables_are_chunked_compressed_and_carry_their_provenance(hdf5_run,
         assert table.dtype == np.float64
         assert table.chunks is not None and table.compression == "gzip" and table.shuffle
         assert table.maxshape == (None, table.shape[1])
-        assert list(table.attrs["columns"])[:2] == ["time", "block_0"]
+        assert list(table.attrs["columns"])[:3] == ["time", "time_since_loading", "block_0"]
         assert f.attrs["framework"] == "frictionlab"
         assert f.attrs["scene_hash"] == hdf5_run.metadata["scene_hash"]
         assert f.attrs["seed"] == 3

@@ -375,7 +375,9 @@ void swap_into_headline(const HeadlineSwap& swap) {
             EXPECT_EQ(line.find("error:"), line.rfind("error:")) << "one error: prefix: " << line;
             EXPECT_NE(line.rfind("scene.yaml:", 0), std::string::npos) << "file:line:column first: " << line;
         }
-        for (const auto& [path, fix] : swap.errors) {
+        for (const auto& error : swap.errors) {
+            const std::string& path = error.first;  // not a structured binding: clang 14 cannot capture one
+            const std::string& fix = error.second;
             const bool named = std::any_of(found.begin(), found.end(), [&](const std::string& line) {
                 return line.find(": error: " + path + ":") != std::string::npos && line.find(fix) != std::string::npos;
             });

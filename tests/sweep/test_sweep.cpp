@@ -154,7 +154,9 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             by_hand["global_slip_force_ratio"].push_back(std::stod(global->second->at("force_ratio")));
             by_hand["global_slip_time"].push_back(global->first - load_start);
         }
-        for (const auto& [statistic, values] : by_hand) {
+        for (const auto& entry : by_hand) {
+            const std::string& statistic = entry.first;  // not a structured binding: clang 14 cannot capture one
+            const std::vector<double>& values = entry.second;
             SCOPED_TRACE(statistic);
             const auto row = std::find_if(statistics.begin(), statistics.end(), [&](const Row& r) {
                 return r.at("loaders[2].velocity") == velocity && r.at("statistic") == statistic;
@@ -318,7 +320,7 @@ TEST(Sweep, CtrlCStopsTheRunningCaseWithACheckpointAndTheSweepRunAgainGoesOn) {
     EXPECT_GT(run["steps"].as<long long>(), 0);
     EXPECT_EQ(record["steps"].as<long long>(), run["steps"].as<long long>());
     EXPECT_EQ(record["simulated_time"].as<double>(), run["simulated_time"].as<double>());
-    // sweep.csv too: steps is its third column from the end (the reason before it is quoted, commas and all).
+    // sweep.csv too: steps is its third column from the end (the reason before it holds no comma).
     const std::string table = read_text(dir / "out" / "sweep.csv");
     const auto row = table.find("\nseed-3,") + 1;
     std::string line = table.substr(row, table.find('\n', row) - row);
@@ -342,6 +344,14 @@ TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     EXPECT_EQ(rows.at("fine").at("status"), "done");
     EXPECT_EQ(rows.at("unstable").at("status"), "failed");
     EXPECT_NE(rows.at("unstable").at("reason").find("stable"), std::string::npos) << rows.at("unstable").at("reason");
+    // No cell is quoted (a reason's commas become semicolons), so numpy.genfromtxt reads it too.
+    std::istringstream table(read_text(dir / "out" / "sweep.csv"));
+    std::string header, row;
+    std::getline(table, header);
+    while (std::getline(table, row)) {
+        EXPECT_EQ(row.find('"'), std::string::npos) << row;
+        EXPECT_EQ(std::count(row.begin(), row.end(), ','), std::count(header.begin(), header.end(), ',')) << row;
+    }
 }
 
 TEST(Sweep, CheckReportsACaseAboveItsStableStepAtItsOverride) {
@@ -359,6 +369,21 @@ TEST(Sweep, CheckReportsACaseAboveItsStableStepAtItsOverride) {
         EXPECT_EQ(result.output.find("case fine"), std::string::npos) << result.output;
         EXPECT_NE(result.output.find("\n1 error in steps.yaml"), std::string::npos) << result.output;
     }
+}
+
+TEST(Sweep, CheckNamesTheCaseAComponentRefuses) {
+    const fs::path dir = frictionlab::testing::work_directory();
+    {
+        std::ofstream out(dir / "laws.yaml");
+        out << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
+            << "cases:\n  - name: junctions\n    set: []\n"
+            << "  - name: rate_and_state\n    set: [\"friction={type: rate_state}\"]\n";
+    }
+    const auto result = frictionlab("check laws.yaml", dir);
+    EXPECT_EQ(result.code, 2) << result.output;
+    EXPECT_NE(result.output.find("error: integrator: case rate_and_state: rate_state is too stiff"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("case junctions"), std::string::npos) << result.output;
 }
 
 TEST(Sweep, BadValuesAreReportedWithTheirPlaceInTheSweepFile) {

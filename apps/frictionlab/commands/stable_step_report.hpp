@@ -1,6 +1,7 @@
 #pragma once
 // The stable-step estimate `check` makes for a scene (stable_step_check.hpp), made for every run of
-// a campaign, each finding naming its run.
+// a campaign, each finding naming its run: a step above the stable one, or a component that refuses
+// the run's scene (a law that needs another integrator, an observer without the fields it reads).
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -15,7 +16,7 @@ namespace frictionlab::cli {
 
 /// A sweep with a run above its stable step fails, so there it is an error (`as_errors`, into
 /// `diagnostics`); a study records such a run as a failed row by design, so there it is a warning,
-/// printed. Returns how many runs are above their stable step.
+/// printed. Returns how many runs are above their stable step (a refused run is reported, not counted).
 std::size_t report_stable_steps(const std::vector<std::pair<std::string, const Scene*>>& runs, bool as_errors,
                                 const GlobalOptions& global, const Registry& registry, Diagnostics& diagnostics);
 

@@ -52,7 +52,7 @@ int study(const std::filesystem::path& file, std::string output, int jobs, bool 
     }
     const InterruptSignals signals;
     const auto result = run_study(spec, runs, output, registry, in.log, flags.campaign_options(jobs));
-    write_study_csv(result, spec, std::filesystem::path(output) / "study.csv");
+    write_study_csv(result, spec, runs, registry, std::filesystem::path(output) / "study.csv");
     write_study_markdown(result, spec, std::filesystem::path(output) / "study.md");
     if (!result.ensembles.empty()) write_ensemble_csv(result, spec, std::filesystem::path(output) / "ensemble.csv");
     in.log.info("study: {} cases; table in {}", result.rows.size(),

@@ -5,6 +5,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/output/csv_table.hpp"
 #include "frictionlab/output/hdf5_table.hpp"
+#include "frictionlab/output/loading_clock.hpp"
 #include "frictionlab/output/provenance.hpp"
 
 namespace frictionlab {
@@ -36,9 +37,16 @@ std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const
                 throw RunError("table " + file.string() + " has no column '" + name + "' to type");
     if (resume && format == TableFormat::hdf5)
         throw RunError("an HDF5 table cannot be resumed (observers writing `format: hdf5` refuse checkpoints)");
-    if (resume) return std::make_unique<CsvTable>(file, columns, CsvTable::Resume{});
-    if (format == TableFormat::hdf5) return std::make_unique<Hdf5Table>(table_file(file, format), columns, types, info);
-    return std::make_unique<CsvTable>(file, columns, types, info);
+    const auto written = with_loading_clock(columns);
+    std::unique_ptr<TableWriter> table;
+    if (resume)
+        table = std::make_unique<CsvTable>(file, written, CsvTable::Resume{});
+    else if (format == TableFormat::hdf5)
+        table = std::make_unique<Hdf5Table>(table_file(file, format), written, types, info);
+    else
+        table = std::make_unique<CsvTable>(file, written, types, info);
+    if (written.size() == columns.size()) return table;
+    return std::make_unique<LoadingClockTable>(std::move(table), columns, info.loading_start);
 }
 
 }  // namespace frictionlab

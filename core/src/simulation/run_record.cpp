@@ -46,6 +46,7 @@ std::string RunRecord::text() const {
     entry("steps", summary.steps);
     entry("evaluations", summary.evaluations);
     entry("simulated_time", summary.simulated_time);
+    entry("loading_start", info.loading_start);
     entry("wall_seconds", summary.wall_seconds);
     entry("cpu_seconds", summary.cpu_seconds);
     if (!summary.integrator_statistics.empty()) {
@@ -90,6 +91,7 @@ std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
     run.summary.simulated_time = record["simulated_time"].as<double>(0);
     run.summary.wall_seconds = record["wall_seconds"].as<double>(0);
     run.summary.cpu_seconds = record["cpu_seconds"].as<double>(0);
+    run.loading_start = record["loading_start"].as<double>(0);
     for (const char* name : checkpoint_files)
         run.has_checkpoint = run.has_checkpoint || std::filesystem::exists(dir / name);
     return run;

@@ -13,6 +13,7 @@
 #include "frictionlab/base/hot_kernel.hpp"
 #include "frictionlab/base/scene_errors.hpp"
 #include "frictionlab/plugins/registry.hpp"
+#include "frictionlab/simulation/loading_start.hpp"
 #include "frictionlab/simulation/stability.hpp"
 
 namespace frictionlab {
@@ -45,7 +46,8 @@ bool all_finite(const double* __restrict y, Index n) {
 
 Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::logger& log)
     : scene_(scene), registry_(registry), log_(log) {
-    info_ = RunInfo{framework_version(), scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml, {}};
+    info_ = RunInfo{framework_version(),           scene.file, scene.hash, scene.seed, {}, scene.resolved_yaml, {},
+                    loading_start(scene, registry)};
     bulk_ = located_in_scene(
         scene.bulk, [&] { return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk")); });
     record_plugin(scene.bulk, Kind::bulk_model);

@@ -71,14 +71,15 @@ int main(int argc, char** argv) {
         std::string header, row, extra;
         std::getline(in, header);
         std::getline(in, row);
-        if (header != "time,step,max_speed") return fail("unexpected header '" + header + "'");
+        if (header != "time,time_since_loading,step,max_speed") return fail("unexpected header '" + header + "'");
         std::istringstream fields(row);
-        double t = -1, speed = -1;
+        double t = -1, since_loading = -1, speed = -1;
         long long step = -1;
-        char c1 = 0, c2 = 0;
-        fields >> t >> c1 >> step >> c2 >> speed;
-        if (!fields || c1 != ',' || c2 != ',' || t != 0.0 || step != 7 || std::abs(speed - 5.0) > 1e-12)
-            return fail("unexpected row '" + row + "', expected 0,7,5");
+        char c1 = 0, c2 = 0, c3 = 0;
+        fields >> t >> c1 >> since_loading >> c2 >> step >> c3 >> speed;
+        if (!fields || c1 != ',' || c2 != ',' || c3 != ',' || t != 0.0 || since_loading != 0.0 || step != 7 ||
+            std::abs(speed - 5.0) > 1e-12)
+            return fail("unexpected row '" + row + "', expected 0,0,7,5");
         if (std::getline(in, extra)) return fail("more rows than observations");
         std::ifstream sidecar(output / "speed.csv.meta.yaml");
         std::stringstream provenance;

@@ -27,14 +27,19 @@ def has_table(run, name):
     return any(os.path.exists(os.path.join(run_directory(run), name + ext)) for ext in (".csv", ".h5"))
 
 
-def scene_of(run):
-    """The resolved scene the run recorded in run.yaml (a dict; empty if unreadable)."""
+def run_record(run):
+    """The run's run.yaml (a dict; empty if unreadable)."""
     try:
         import yaml
         with open(os.path.join(run_directory(run), "run.yaml")) as f:
-            return (yaml.safe_load(f) or {}).get("scene") or {}
+            return yaml.safe_load(f) or {}
     except Exception:  # noqa: BLE001 - a figure without its title is still a figure
         return {}
+
+
+def scene_of(run):
+    """The resolved scene the run recorded in run.yaml (a dict; empty if unreadable)."""
+    return run_record(run).get("scene") or {}
 
 
 def campaign_rows(directory, name):

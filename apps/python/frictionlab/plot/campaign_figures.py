@@ -132,6 +132,7 @@ def sweep_against(sweep, key, axes=None):
     _, _, factor = key_display(key, units.get(key, ""))
     series = list(dict.fromkeys(tuple(r[k] for k in others) for r in cases))
     per_run = {r["case"]: run_statistics([e for e in events if e["case"] == r["case"]]) for r in cases}
+    xs = sorted({x * factor for x in (number(r[key]) for r in cases) if np.isfinite(x)})
     axes = axes_of(axes, 1, 3, figsize=(13, 4))
     for ax, (statistic, title, why) in zip(axes, SWEEP_PANELS):
         for k, values in enumerate(series):
@@ -155,6 +156,9 @@ def sweep_against(sweep, key, axes=None):
         ax.set_title(title, fontsize=10)
         if not ax.lines:
             no_data(ax, why)
+            if xs:  # the other panels' x range, not matplotlib's 0 to 1
+                pad = 0.05 * (xs[-1] - xs[0]) or 0.05 * abs(xs[0]) or 1.0
+                ax.set_xlim(xs[0] - pad, xs[-1] + pad)
         elif len(series) > 1:
             ax.legend(fontsize=7)
     return axes

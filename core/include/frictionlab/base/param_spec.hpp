@@ -232,6 +232,14 @@ public:
         return *this;
     }
 
+    /// Declares a loader that drives the slider (a moving spring or plate): loading starts with the
+    /// first stage it acts in, the origin of every table's `time_since_loading` (loading_start()).
+    ParamSpec& drives_loading() {
+        drives_loading_ = true;
+        return *this;
+    }
+    bool drives() const { return drives_loading_; }
+
     const std::string& summary() const { return summary_; }
     const std::vector<ParamInfo>& params() const { return infos_; }
 
@@ -291,6 +299,7 @@ private:
     std::vector<std::function<ParamValue(const P&)>> getters_;
     std::vector<TypedRule> rules_;
     std::function<std::vector<OutputName>(const P&)> outputs_;
+    bool drives_loading_ = false;
 };
 
 }  // namespace frictionlab

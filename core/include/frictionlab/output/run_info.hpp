@@ -19,6 +19,7 @@ struct RunInfo {
     std::vector<PluginRecord> plugins;  // the libraries that provide the scene's types
     std::string resolved_scene;         // YAML, every default written out
     ResolvedChoices resolved_choices;   // what the components chose for keys left `auto`
+    double loading_start = 0;           // s of simulated time: when loading started (loading_start())
 };
 
 }  // namespace frictionlab

@@ -18,6 +18,7 @@ public:
     virtual ~TableWriter();
     /// One row, as many values as columns; throws RunError if it cannot be written.
     virtual void row(const std::vector<double>& values) = 0;
+    const std::filesystem::path& file() const { return file_; }
 
 protected:
     explicit TableWriter(std::filesystem::path file) : file_(std::move(file)) {}
@@ -37,6 +38,8 @@ struct ColumnTypes {
 
 /// Opens a table at `file` (e.g. out/interface_velocity.csv); in HDF5 its extension becomes .h5.
 /// `resume` (RunView::resuming): append to the table a resumed run left, as it was at the checkpoint.
+/// A column of simulated time (`time`, `t_start`, `t_end`) is followed in the file by its count since
+/// loading started (`time_since_loading`, ...; loading_clock.hpp): rows give `columns` only.
 std::unique_ptr<TableWriter> open_table(const std::filesystem::path& file, const std::vector<std::string>& columns,
                                         const RunInfo& info, TableFormat format, bool resume = false);
 /// The same, with the columns that are integers or flags named (every other one is real).

@@ -24,8 +24,9 @@ struct TypeInfo {
     std::string summary;  // one paragraph: the physics and its reference
     std::vector<ParamInfo> params;
     std::vector<ParamRule> rules;
-    OutputNames outputs;  // the files it writes, if it declared them (ParamSpec::writes)
-    std::string library;  // the plugin file that provides it ("" for types added by code)
+    OutputNames outputs;          // the files it writes, if it declared them (ParamSpec::writes)
+    std::string library;          // the plugin file that provides it ("" for types added by code)
+    bool drives_loading = false;  // loaders: loading starts with the first stage it acts in
     std::function<std::unique_ptr<Component>(const ParamValues&, const Context&)> create;
 };
 
@@ -69,6 +70,7 @@ public:
         info.params = spec.params();
         info.rules = spec.erased_rules();
         info.outputs = spec.erased_outputs();
+        info.drives_loading = spec.drives();
         info.create = [spec](const ParamValues& values, const Context& ctx) -> std::unique_ptr<Component> {
             return std::make_unique<T>(spec.build(values), ctx);
         };

@@ -50,6 +50,7 @@ struct RecordedRun {
     std::string status, scene_hash;      // running, interrupted, failed or completed
     bool has_checkpoint = false;         // a checkpoint file is there (intact or not)
     RunSummary summary;                  // how far it got (without the integrator's statistics)
+    double loading_start = 0;            // s of simulated time when loading started (loading_start())
     /// A run stopped before its end with a checkpoint to go on from.
     bool resumable() const { return status != "completed" && has_checkpoint; }
 };

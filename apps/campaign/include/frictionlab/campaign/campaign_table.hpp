@@ -16,6 +16,10 @@ struct CampaignColumn {
     std::string unit;  // SI, "1" for a pure number, empty for text, or unit_of_row
 };
 
+/// What sets the runs apart (the varied key paths, then `seed`), in order of first use, each with
+/// its unit as the key's declaration gives it (key_unit.hpp).
+std::vector<CampaignColumn> value_columns(const std::vector<CampaignRun>& runs, const Registry& registry);
+
 /// The unit of a column whose rows each name their unit in the column `unit` (a statistic's mean).
 inline constexpr const char* unit_of_row = "(unit column)";
 

@@ -4,12 +4,12 @@
 
 namespace frictionlab {
 
-/// A CSV cell: quoted when it holds a comma, a quote or a line break (RFC 4180).
-inline std::string csv_cell(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
+/// A CSV cell that every reader takes as one cell without quoting rules (numpy.genfromtxt has none):
+/// a comma becomes a semicolon, a double quote a single one, a line break a space. The text in full
+/// stays where it came from (a failed case's reason: its run.yaml and log).
+inline std::string csv_cell(std::string text) {
+    for (char& c : text) c = c == ',' ? ';' : c == '"' ? '\'' : c == '\n' || c == '\r' ? ' ' : c;
+    return text;
 }
 
 }  // namespace frictionlab

@@ -32,8 +32,9 @@ struct EventStatistics {
 EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::filesystem::path& loading_curve,
                                       double load_start);
 
-/// When loading begins in a run of `scene`: the start of its last stage, s.
-double load_start(const Scene& scene);
+/// When loading began in the run written to `directory`, s of simulated time, as its run.yaml
+/// records it (loading_start(); 0 without a record).
+double recorded_loading_start(const std::filesystem::path& directory);
 
 /// The statistics of the run of `scene` from the files it wrote into its output directory (its
 /// loading curve: loading_curve.csv); nothing if the scene has no `precursors` observer.

@@ -7,8 +7,10 @@
 
 namespace frictionlab {
 
-/// study.csv: case, family, knobs, wall_seconds, cpu_seconds, steps, evaluations, the errors, note.
-void write_study_csv(const StudyResult& result, const Study& study, const std::filesystem::path& file);
+/// study.csv: case, family, knobs, wall_seconds, cpu_seconds, steps, evaluations, the errors, note;
+/// its sidecar as every campaign table's (campaign_table.hpp), the knobs' units from `runs`' scenes.
+void write_study_csv(const StudyResult& result, const Study& study, const std::vector<CampaignRun>& runs,
+                     const Registry& registry, const std::filesystem::path& file);
 /// study.md: the same as a Markdown table, with the reference's values.
 void write_study_markdown(const StudyResult& result, const Study& study, const std::filesystem::path& file);
 /// ensemble.csv (with two seeds or more): per case, ensemble and event statistic, the ensemble's n,
