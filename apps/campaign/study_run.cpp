@@ -61,8 +61,9 @@ void judge(std::vector<StudyEnsemble>& ensembles, const std::vector<EventStatist
 }  // namespace
 
 StudyResult run_study(const Study& study, const std::vector<CampaignRun>& runs, const std::filesystem::path& output,
-                      const Registry& registry, spdlog::logger& log, CampaignOptions options) {
-    options.reuse_finished = false;
+                      const Registry& registry, spdlog::logger& log, const CampaignOptions& options) {
+    // Run again into the same directory, a study goes on: runs finished with the same scene keep
+    // their results and their recorded times (an ensemble of RK4 references takes hours).
     prepare_campaign_directory(study, output, options);
     StudyResult result;
     result.seed = runs.front().scene.seed;

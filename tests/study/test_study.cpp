@@ -128,9 +128,16 @@ TEST(Study, TinyStudyThroughTheCommand) {
 
     frictionlab::testing::expect_figure(dir / "out", "work_precision");
 
-    const auto again = frictionlab("study -q " STUDY_FILES "/tiny_study.yaml -o out", dir);
-    EXPECT_EQ(again.code, 2);
-    EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
+    // Run again, the study goes on: every run finished with its scene, none runs again, and the
+    // table keeps their results and recorded times.
+    const auto again = frictionlab("study " STUDY_FILES "/tiny_study.yaml -o out", dir);
+    ASSERT_EQ(again.code, 0) << again.output;
+    EXPECT_NE(again.output.find("cases finished earlier with the same scene: not run again"), std::string::npos)
+        << again.output;
+    const StudyTable reread(dir / "out" / "study.csv");
+    for (const char* name : {"reference", "rk4_coarse", "verlet"})
+        for (const char* column : {"steps", "cpu_seconds", "err_first_precursor_force"})
+            EXPECT_EQ(reread.row(name).at(column), table.row(name).at(column)) << name << " " << column;
 }
 
 /// The row of a case at a seed in a study over seeds.

@@ -48,12 +48,13 @@ struct StudyResult {
     std::uint64_t seed = 0;                // the base scene's (a case may set its own)
 };
 
-/// The study's output directory is created (replaced with `options.overwrite`) and every run runs
-/// afresh, never reused from an earlier attempt: the study compares its runs' times. A run that
+/// The study's output directory is created (replaced with `options.overwrite`); in an existing one
+/// of FrictionLab's, runs recorded finished with the same scene are reused with their recorded
+/// times (`options.reuse_finished`), so a stopped study goes on. A run that
 /// fails is a row of NaN errors with the reason in its note; a failing reference throws RunError,
 /// a stop signal Interrupted.
 StudyResult run_study(const Study& study, const std::vector<CampaignRun>& runs, const std::filesystem::path& output,
-                      const Registry& registry, spdlog::logger& log, CampaignOptions options);
+                      const Registry& registry, spdlog::logger& log, const CampaignOptions& options);
 
 /// With two seeds or more (Study::ensembles): each case's runs as an ensemble judged against the
 /// reference's (accuracy_standard.hpp), a failing case run again on other seeds, into `result`.
