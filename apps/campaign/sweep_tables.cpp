@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -74,15 +75,37 @@ CaseEvents read_events(const CampaignRun& c) {
     return out;
 }
 
+/// Each finished run's event statistics (none for a run that failed or has no precursors observer).
+std::vector<std::optional<EventStatistics>> runs_statistics(const std::vector<CampaignRun>& runs,
+                                                            const std::vector<CaseRecord>& records) {
+    std::vector<std::optional<EventStatistics>> out(runs.size());
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        if (records.at(i).status == "done") out[i] = run_event_statistics(runs[i].scene);
+    return out;
+}
+
+/// run_statistics.csv's rows: each run's values and its event statistics, NaN where it has none.
+std::string run_statistics_rows(const std::vector<CampaignRun>& runs,
+                                const std::vector<std::optional<EventStatistics>>& statistics,
+                                const std::vector<CampaignColumn>& values) {
+    std::string text;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        text += csv_cell(runs[i].name) + value_cells(runs[i].values, values);
+        for (std::size_t k = 0; k < event_statistics().size(); ++k)
+            text += "," + number(statistics[i] ? statistics[i]->values[k] : nan);
+        text += "\n";
+    }
+    return text;
+}
+
 /// sweep_statistics.csv's rows: for each case (a point of the grid), each event statistic over the
 /// seeds of its runs that finished.
 std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs,
-                            const std::vector<CaseRecord>& records, const std::vector<CampaignColumn>& values) {
+                            const std::vector<std::optional<EventStatistics>>& statistics,
+                            const std::vector<CampaignColumn>& values) {
     std::vector<std::vector<EventStatistics>> ensembles(sweep.cases.size());
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        if (records.at(i).status != "done") continue;
-        if (auto s = run_event_statistics(runs[i].scene)) ensembles.at(runs[i].case_index).push_back(std::move(*s));
-    }
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        if (statistics[i]) ensembles.at(runs[i].case_index).push_back(*statistics[i]);
     const auto& list = event_statistics();
     std::string text;
     for (std::size_t c = 0; c < sweep.cases.size(); ++c) {
@@ -149,6 +172,14 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
     }
     write_campaign_table(sweep, "sweep", output / "sweep.csv", columns, table, note);
     write_campaign_table(sweep, "sweep", output / "events.csv", events_columns, events, note);
+    const auto statistics = runs_statistics(runs, records);
+    std::vector<CampaignColumn> run_columns{{"case", ""}};
+    run_columns.insert(run_columns.end(), values.begin(), values.end());
+    for (const auto& s : event_statistics()) run_columns.push_back({s.name, s.unit});
+    write_campaign_table(sweep, "sweep", output / "run_statistics.csv", run_columns,
+                         run_statistics_rows(runs, statistics, values),
+                         "per run, each event statistic (share/docs/accuracy-standard.md); nan where the run has "
+                         "none (no global slip, a precursor that never came, a failed run)");
     if (sweep.seeds.empty()) return;
     // Per case over its seeds, as a study's ensemble.csv describes an ensemble; mean, sd and the
     // interval are in the unit each row names.
@@ -159,7 +190,7 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
     statistics_columns.insert(statistics_columns.end(), point.begin(), point.end());
     for (auto c : statistic_summary_columns()) statistics_columns.push_back(std::move(c));
     write_campaign_table(sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
-                         statistics_rows(sweep, runs, records, point),
+                         statistics_rows(sweep, runs, statistics, point),
                          "per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "
                          "finished: n that reach it, missing that do not, their mean, sample sd and Student-t 95 % "
                          "interval of the mean");

@@ -329,6 +329,7 @@ TEST_F(Docs, TheGlossaryNamesEveryColumnOfTheCampaignTablesWithItsUnit) {
     glossary.expect_columns(dir_ / "sweep_out/sweep.csv");
     glossary.expect_columns(dir_ / "sweep_out/events.csv");
     glossary.expect_columns(dir_ / "sweep_out/sweep_statistics.csv");
+    glossary.expect_columns(dir_ / "sweep_out/run_statistics.csv");
     glossary.expect_columns(dir_ / "study_out/study.csv");
     EXPECT_GE(glossary.checked(), 40);
 }

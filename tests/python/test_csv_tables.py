@@ -79,7 +79,7 @@ def test_every_table_of_a_campaign_reads_as_one_header_and_its_rows(campaign, re
     directory = request.getfixturevalue(campaign)
     own = [p for p in csv_files(directory) if os.sep + "cases" + os.sep not in p]
     names = {os.path.basename(p) for p in own}
-    assert names >= ({"sweep.csv", "events.csv", "sweep_statistics.csv"} if campaign == "real_sweep"
+    assert names >= ({"sweep.csv", "events.csv", "run_statistics.csv", "sweep_statistics.csv"} if campaign == "real_sweep"
                      else {"study.csv", "ensemble.csv"}), names
     for path in own:
         frame = check_table(path)

@@ -118,7 +118,7 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
     EXPECT_GT(all_events, 0u) << "the tiny sweep should see rupture events";
     // Every table is one header line and its rows (pandas.read_csv reads it as is); what wrote it,
     // the sweep's title and the columns' units are in its sidecar.
-    for (const char* table : {"sweep.csv", "events.csv", "sweep_statistics.csv"}) {
+    for (const char* table : {"sweep.csv", "events.csv", "run_statistics.csv", "sweep_statistics.csv"}) {
         const std::string text = read_text(dir / "j1" / table);
         EXPECT_EQ(text.rfind("case,loaders[2].velocity,", 0), 0u) << table << "\n" << text.substr(0, 200);
         EXPECT_EQ(text.find("\n#"), std::string::npos) << table;
@@ -136,6 +136,9 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
     const std::vector<Row> statistics = table_rows(dir / "j1" / "sweep_statistics.csv");
     EXPECT_EQ(statistics.size(), 2u * 10u) << "two cases, ten statistics each";
     const std::vector<Row> event_rows = table_rows(dir / "j1" / "events.csv");
+    // run_statistics.csv: the same statistics, one row per run.
+    const std::vector<Row> per_run = table_rows(dir / "j1" / "run_statistics.csv");
+    EXPECT_EQ(per_run.size(), 4u) << "two cases, two seeds each";
     for (const std::string velocity : {"0.08", "0.12"}) {
         SCOPED_TRACE(velocity);
         std::map<std::string, std::vector<double>> by_hand;  // statistic -> one value per seed
@@ -153,6 +156,12 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             by_hand["precursor_count"].push_back(double(global - own.begin()));
             by_hand["global_slip_force_ratio"].push_back(std::stod(global->second->at("force_ratio")));
             by_hand["global_slip_time"].push_back(global->first - load_start);
+            const auto run = std::find_if(per_run.begin(), per_run.end(), [&](const Row& r) {
+                return r.at("loaders[2].velocity") == velocity && r.at("seed") == seed;
+            });
+            ASSERT_NE(run, per_run.end());
+            EXPECT_EQ(std::stod(run->at("precursor_count")), double(global - own.begin()));
+            EXPECT_EQ(run->at("global_slip_force_ratio"), global->second->at("force_ratio"));
         }
         for (const auto& entry : by_hand) {
             const std::string& statistic = entry.first;  // not a structured binding: clang 14 cannot capture one
