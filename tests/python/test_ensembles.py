@@ -105,7 +105,7 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
     assert "slope +4.00" in text and "θ = 0.5 against -0.5: +4.0" in text
     assert "at θ = 0.5, -100" in text
     assert "the largest shift is at θ = 0.5, +0.010" in text
-    assert "matched F_S/F_N is 0.05;" in text and "seeds it is 0.00 to 0.00" in text
+    assert "matched F_S/F_N is 0.050;" in text and "seeds it is 0.000 to 0.000" in text
     assert "F_S/F_N -0.050 [-0.050, -0.050]" in text and "+1.0 [+1.0, +1.0]" in text
     assert "longest one's l/L +0.20" in text  # 0.3 + 0.2 against 0.3
     assert (tmp_path / "doc.md").read_text() == f"before\n<!-- li2020-claims -->\n{text}<!-- /li2020-claims -->\nafter\n"
