@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <map>
-#include <regex>
 
 #include <fmt/format.h>
 
 #include "campaign_reader.hpp"
 #include "frictionlab/campaign/keys.hpp"
+#include "frictionlab/campaign/set_keys.hpp"
 
 namespace frictionlab {
 
@@ -127,57 +127,12 @@ std::filesystem::path run_directory(const CampaignCase& c, std::optional<std::in
     return seed ? dir / fmt::format("seed_{}", *seed) : dir;
 }
 
-/// The node at a key path ("integrator.dt", "loaders[2].velocity") of a resolved scene; an
-/// undefined node where the scene has no such key (e.g. a tolerance of a fixed-step integrator).
-YAML::Node node_at(const YAML::Node& root, const std::string& path) {
-    static const std::regex step(R"(([A-Za-z0-9_]+)|\[([0-9]+)\])");
-    YAML::Node at;
-    at.reset(root);
-    for (auto it = std::sregex_iterator(path.begin(), path.end(), step); it != std::sregex_iterator(); ++it) {
-        if ((*it)[1].matched) {
-            if (!at.IsMap() || !at[(*it)[1].str()]) return YAML::Node(YAML::NodeType::Undefined);
-            at.reset(at[(*it)[1].str()]);  // `at = ...` would assign into the scene, not move along it
-        } else {
-            const auto i = std::stoul((*it)[2].str());
-            if (!at.IsSequence() || i >= at.size()) return YAML::Node(YAML::NodeType::Undefined);
-            at.reset(at[i]);
-        }
-    }
-    return at;
-}
-
-/// integrator.type, then every key path the overrides set; one that sets a whole mapping (such as
-/// `integrator={type: ..., rtol: ...}`) stands for each of its keys in every case.
-std::vector<std::string> knob_columns(const Study& study, const std::vector<YAML::Node>& resolved) {
-    std::vector<std::string> columns{"integrator.type"};
-    if (!study.seeds.empty()) columns.push_back("seed");
-    const auto add = [&](const std::string& key) {
-        if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
-    };
-    for (const auto& c : study.cases)
-        for (const auto& o : c.overrides) {
-            const std::string key = o.text.substr(0, o.text.find('='));
-            bool mapping = false;
-            for (const auto& scene : resolved)
-                if (const YAML::Node at = node_at(scene, key); at.IsMap()) {
-                    mapping = true;
-                    for (auto it = at.begin(); it != at.end(); ++it) add(key + "." + it->first.Scalar());
-                }
-            if (!mapping) add(key);
-        }
-    return columns;
-}
-
-/// Each run's value of every knob, as YAML text.
+/// Each run's value of every knob, as YAML text: integrator.type, the seed, then every key path the
+/// cases' overrides set.
 void add_knobs(const Study& study, std::vector<CampaignRun>& runs) {
-    std::vector<YAML::Node> resolved;
-    for (const auto& run : runs) resolved.push_back(YAML::Load(run.scene.resolved_yaml));
-    const auto columns = knob_columns(study, resolved);
-    for (std::size_t k = 0; k < runs.size(); ++k)
-        for (const auto& key : columns) {
-            const YAML::Node at = node_at(resolved[k], key);
-            runs[k].values.emplace_back(key, at.IsDefined() ? detail::flow_text(at) : "");
-        }
+    std::vector<std::string> leading{"integrator.type"};
+    if (!study.seeds.empty()) leading.push_back("seed");
+    add_values_of(set_keys(study, runs, std::move(leading)), runs);
 }
 
 /// Each of `planned` (a case and a seed) with its scene, observed as the study needs and writing

@@ -8,6 +8,7 @@
 
 #include "campaign_reader.hpp"
 #include "frictionlab/campaign/keys.hpp"
+#include "frictionlab/campaign/set_keys.hpp"
 
 namespace frictionlab {
 
@@ -149,10 +150,7 @@ std::vector<CampaignRun> sweep_runs(const Sweep& sweep, const std::filesystem::p
         const CampaignCase& c = sweep.cases[run.case_index];
         run.name = c.name;
         run.values = c.values;
-        if (run.seed) {
-            run.values.emplace_back("seed", std::to_string(*run.seed));
-            append_part(run.name, fmt::format("seed-{}", *run.seed));
-        }
+        if (run.seed) append_part(run.name, fmt::format("seed-{}", *run.seed));
         if (run.name.empty()) run.name = "base";
         if (!names.insert(run.name).second) {
             diagnostics.error(c.where, "cases",
@@ -168,6 +166,13 @@ std::vector<CampaignRun> sweep_runs(const Sweep& sweep, const std::filesystem::p
         run.scene = std::move(*scene);
         runs.push_back(std::move(run));
     }
+    // A listed case's values are the keys its overrides set (a grid's cases have theirs, as the sweep
+    // file writes them), each run's from its scene: the tables have a column for every key varied.
+    Sweep listed = sweep;
+    std::erase_if(listed.cases, [](const CampaignCase& c) { return !c.values.empty(); });
+    if (diagnostics.empty()) add_values_of(set_keys(listed, runs, {}), runs);
+    for (auto& run : runs)
+        if (run.seed) run.values.emplace_back("seed", std::to_string(*run.seed));
     return runs;
 }
 

@@ -92,7 +92,7 @@ std::string run_statistics_rows(const std::vector<CampaignRun>& runs,
     for (std::size_t i = 0; i < runs.size(); ++i) {
         text += csv_cell(runs[i].name) + value_cells(runs[i].values, values);
         for (std::size_t k = 0; k < event_statistics().size(); ++k)
-            text += "," + number(statistics[i] ? statistics[i]->values[k] : nan);
+            text += fmt::format(",{}", number(statistics[i] ? statistics[i]->values[k] : nan));
         text += "\n";
     }
     return text;
@@ -104,14 +104,17 @@ std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& 
                             const std::vector<std::optional<EventStatistics>>& statistics,
                             const std::vector<CampaignColumn>& values) {
     std::vector<std::vector<EventStatistics>> ensembles(sweep.cases.size());
-    for (std::size_t i = 0; i < runs.size(); ++i)
+    std::vector<const CampaignValues*> case_values(sweep.cases.size());  // a run's: listed cases' are its scene's
+    for (std::size_t i = 0; i < runs.size(); ++i) {
         if (statistics[i]) ensembles.at(runs[i].case_index).push_back(*statistics[i]);
+        case_values.at(runs[i].case_index) = &runs[i].values;
+    }
     const auto& list = event_statistics();
     std::string text;
     for (std::size_t c = 0; c < sweep.cases.size(); ++c) {
         const CampaignCase& point = sweep.cases[c];
-        const std::string cells =
-            csv_cell(point.name.empty() ? "base" : point.name) + value_cells(point.values, values);
+        const std::string cells = csv_cell(point.name.empty() ? "base" : point.name) +
+                                  value_cells(case_values[c] ? *case_values[c] : point.values, values);
         for (std::size_t k = 0; k < list.size(); ++k) {
             const EnsembleSummary e = summarize(column(ensembles[c], k));
             text += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,

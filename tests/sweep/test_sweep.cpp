@@ -353,6 +353,13 @@ TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     EXPECT_EQ(rows.at("fine").at("status"), "done");
     EXPECT_EQ(rows.at("unstable").at("status"), "failed");
     EXPECT_NE(rows.at("unstable").at("reason").find("stable"), std::string::npos) << rows.at("unstable").at("reason");
+    // Each key a listed case sets is a column, with every case's value from its scene (the base
+    // scene's where the case leaves it).
+    EXPECT_EQ(std::stod(rows.at("fine").at("stages[1].duration")), 1.0e-3);
+    EXPECT_EQ(std::stod(rows.at("unstable").at("stages[1].duration")), 4.0e-3);
+    EXPECT_EQ(std::stod(rows.at("fine").at("integrator.dt")), 2.0e-7);
+    EXPECT_EQ(std::stod(rows.at("unstable").at("integrator.dt")), 2.0e-5);
+    EXPECT_EQ(read_text(dir / "out" / "sweep.csv").rfind("case,stages[1].duration,integrator.dt,status,", 0), 0u);
     // No cell is quoted (a reason's commas become semicolons), so numpy.genfromtxt reads it too.
     std::istringstream table(read_text(dir / "out" / "sweep.csv"));
     std::string header, row;
