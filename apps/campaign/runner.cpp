@@ -86,7 +86,13 @@ RunSummary reached(const CampaignRun& c, const std::string& status) {
     }
     std::error_code ec;
     try {
-        if (fs::is_directory(c.scene.output_directory, ec)) write_case_record(c.scene.output_directory, record);
+        // A run refused before its first step leaves no directory; its case's record goes in one,
+        // marked as FrictionLab's so that running the campaign again replaces it.
+        if (!fs::is_directory(c.scene.output_directory, ec)) prepare_output_directory(c.scene.output_directory, true);
+        write_case_record(c.scene.output_directory, record);
+    } catch (const InputError& e) {  // its place taken by something not FrictionLab's
+        log->error("{}", e.what());
+        code = exit_code::run_failure;
     } catch (const RunError& e) {  // a full disk: without its record, the case counts as not run and reruns
         log->error("{}", e.what());
         code = exit_code::run_failure;
