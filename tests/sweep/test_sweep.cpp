@@ -402,6 +402,16 @@ TEST(Sweep, CheckNamesTheCaseAComponentRefuses) {
     EXPECT_NE(result.output.find("error: integrator: case rate_and_state: rate_state is too stiff"), std::string::npos)
         << result.output;
     EXPECT_EQ(result.output.find("case junctions"), std::string::npos) << result.output;
+
+    // Over seeds the same refusal holds for every seed of the case: said once, naming them all.
+    std::ofstream(dir / "laws.yaml", std::ios::app) << "seeds: [1, 2, 3]\n";
+    const auto seeded = frictionlab("check laws.yaml", dir);
+    EXPECT_EQ(seeded.code, 2) << seeded.output;
+    const std::string once =
+        "error: integrator: 3 cases: rate_and_state_seed-1 to rate_and_state_seed-3: rate_state is too stiff";
+    const auto first = seeded.output.find(once);
+    ASSERT_NE(first, std::string::npos) << seeded.output;
+    EXPECT_EQ(seeded.output.find("rate_state is too stiff", first + once.size()), std::string::npos) << seeded.output;
 }
 
 TEST(Sweep, BadValuesAreReportedWithTheirPlaceInTheSweepFile) {
