@@ -80,10 +80,9 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
     events, runs = [], []
     for force, height, shift, count in ((400, 0.005, 0.0, 3), (1200, 0.005, 0.05, 3), (400, 0.0025, -0.05, 4)):
         for seed in (1, 2, 3, 4):
-            # Listed cases: F_N and h are in each run's run.yaml, not in the tables.
-            case = f"fn{force}-h{height}_seed-{seed}"
-            write(tmp_path / "fig7/cases" / case / "run.yaml", "scene:\n  bulk: {nx: 41}\n  loaders: [{type: "
-                  f"rigid_base_contact}}, {{total_force: {force}}}, {{height: {height}}}]\n")
+            # The lattice (for the edge block's l/L) is in each run's run.yaml.
+            case = f"fn{force}-h{height}_seed-{seed},{force},{height}"
+            write(tmp_path / "fig7/cases" / case.split(",")[0] / "run.yaml", "scene:\n  bulk: {nx: 41}\n")
             ratios = [0.2 + shift + 0.05 * k for k in range(count)]
             for k, f in enumerate(ratios):
                 events.append(f"{case},{seed},{k},{k},{f},{f - shift if height == 0.005 else f + 0.2},precursor")
@@ -91,9 +90,10 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
             events.append(f"{case},{seed},{count},{count - 0.5},0.32,0.0125,precursor")
             events.append(f"{case},{seed},{count + 1},{count},0.4,1,global")
             runs.append(f"{case},{seed},{count},1,{ratios[0]},0.1,0.2,0.3,0.4,1,nan,nan")
-    write(tmp_path / "fig7/events.csv", "case,seed,event,t_start,force_ratio,extent_over_length,kind\n"
+    keys = "case,loaders[1].total_force,loaders[2].height,seed"
+    write(tmp_path / "fig7/events.csv", f"{keys},event,t_start,force_ratio,extent_over_length,kind\n"
           + "\n".join(events) + "\n")
-    write(tmp_path / "fig7/run_statistics.csv", f"case,seed,{STATISTICS}\n" + "\n".join(runs) + "\n")
+    write(tmp_path / "fig7/run_statistics.csv", f"{keys},{STATISTICS}\n" + "\n".join(runs) + "\n")
     write(tmp_path / "doc.md", "before\n<!-- li2020-claims -->\nold\n<!-- /li2020-claims -->\nafter\n")
     build = os.path.dirname(os.path.dirname(ensembles.__file__))  # build/python
     out = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/li2020-claims"), "fig7", "fig8",
