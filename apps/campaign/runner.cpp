@@ -23,6 +23,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
 #include "frictionlab/base/live_line.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/output/output_directory.hpp"
 
 namespace frictionlab {
@@ -54,6 +55,9 @@ RunSummary reached(const CampaignRun& c, const std::string& status) {
     }
     auto log = std::make_shared<spdlog::logger>("frictionlab", std::make_shared<spdlog::sinks::stderr_sink_st>());
     log->set_pattern("[%H:%M:%S.%e] %l: %v");
+    set_worker_threads(campaign.threads > 0 ? campaign.threads
+                       : mpi_size() > 1     ? 1
+                                            : std::max(1, available_threads() / std::max(1, campaign.jobs)));
     CaseRecord record;
     record.scene_hash = c.scene.hash;
     int code = exit_code::ok;

@@ -1,12 +1,14 @@
 #include "lattice_springs.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 
 #include <fmt/format.h>
 
 #include "bond_damping.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "bond_strain.hpp"
 
 namespace frictionlab {
@@ -186,25 +188,40 @@ void LatticeSprings::add_forces_with_dashpots(const StageView& s, const BondDamp
     add_bond_forces(s, &damping, f);
 }
 
+Index LatticeSprings::bond_forces(const StageView& s, const BondDamping* damping, std::size_t n, Index from,
+                                  Index count) {
+    const BondFamily& b = families_[n];
+    const double k = stiffness_ * b.relative_stiffness;
+    const double *x = s.x.data() + from, *z = s.z.data() + from;
+    double *px = pair_.x(n) + from, *pz = pair_.z(n) + from;
+    if (law_ == Law::small_strain) {
+        small_strain(x, z, b.mask.data() + from, b.offset, count, b.ex, b.ez, b.rest_length, k, px, pz);
+        return 0;
+    }
+    const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, TensionSeries(k)};
+    const double* inverse_l2 = inverse_l2_[n].data() + from;
+    if (!damping) return geometric_series(x, z, inverse_l2, b.offset, count, c, px, pz);
+    return geometric_series_damped(x, z, s.vx.data() + from, s.vz.data() + from, inverse_l2,
+                                   damping->coefficients(n) + from, b.offset, count, c, px, pz);
+}
+
 void LatticeSprings::add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f) {
-    const double *x = s.x.data(), *z = s.z.data(), *vx = s.vx.data(), *vz = s.vz.data();
+    // Each chunk of nodes computes the bonds that start at them, in every family; each bond's force
+    // is its own, so the chunking does not change a bit.
+    std::array<std::atomic<Index>, 4> beyond{};
+    for_each_chunk(grid_.size(), [&](Index from, Index to) {
+        for (std::size_t n = 0; n < families_.size(); ++n)
+            if (const Index count = std::min(to, families_[n].count) - from; count > 0)
+                beyond[n] += bond_forces(s, damping, n, from, count);
+    });
     for (std::size_t n = 0; n < families_.size(); ++n) {
+        if (beyond[n] == 0) continue;
         const BondFamily& b = families_[n];
-        const double k = stiffness_ * b.relative_stiffness, l = b.rest_length;
-        double *px = pair_.x(n), *pz = pair_.z(n);
-        if (law_ == Law::small_strain) {
-            small_strain(x, z, b.mask.data(), b.offset, b.count, b.ex, b.ez, l, k, px, pz);
-            continue;
-        }
-        const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, TensionSeries(k)};
-        const double* dashpot = damping ? damping->coefficients(n) : nullptr;
-        const double* inverse_l2 = inverse_l2_[n].data();
-        const Index beyond =
-            dashpot ? geometric_series_damped(x, z, vx, vz, inverse_l2, dashpot, b.offset, b.count, c, px, pz)
-                    : geometric_series(x, z, inverse_l2, b.offset, b.count, c, px, pz);
-        if (beyond > 0)
-            redo_beyond_bound({x, z, vx, vz, inverse_l2, dashpot, b.offset, c, k, px, pz}, b.count, beyond,
-                              beyond_bound_[n]);
+        const SeriesFamily c{b.ref_x, b.ref_z, b.rest_defect, TensionSeries(stiffness_ * b.relative_stiffness)};
+        redo_beyond_bound({s.x.data(), s.z.data(), s.vx.data(), s.vz.data(), inverse_l2_[n].data(),
+                           damping ? damping->coefficients(n) : nullptr, b.offset, c, stiffness_ * b.relative_stiffness,
+                           pair_.x(n), pair_.z(n)},
+                          b.count, beyond[n], beyond_bound_[n]);
     }
     pair_.add_to(f.fx.data(), f.fz.data());
 }

@@ -59,6 +59,9 @@ public:
 private:
     /// The springs' forces, with the dashpots of `damping` on the same bonds if it is given.
     void add_bond_forces(const StageView& s, const BondDamping* damping, ForceView& f);
+    /// Family n's bonds [from, from + count) into the pair forces; returns how many the series could
+    /// not do (geometric law), to be redone exactly.
+    Index bond_forces(const StageView& s, const BondDamping* damping, std::size_t n, Index from, Index count);
 
     LatticeGrid grid_;
     std::array<BondFamily, 4> families_;

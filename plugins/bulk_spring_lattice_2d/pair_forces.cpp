@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "frictionlab/base/parallel_chunks.hpp"
+
 namespace frictionlab {
 
 namespace {
@@ -27,8 +29,11 @@ PairForces::PairForces(const std::array<BondFamily, 4>& families, Index nodes) :
 
 void PairForces::add_to(double* fx, double* fz) const {
     const auto& o = offsets_;
-    gather_add(slice(0), o[0], slice(2), o[1], slice(4), o[2], slice(6), o[3], nodes_, fx);
-    gather_add(slice(1), o[0], slice(3), o[1], slice(5), o[2], slice(7), o[3], nodes_, fz);
+    for_each_chunk(nodes_, [&](Index from, Index to) {
+        auto slice_at = [&](std::size_t s) { return slice(s) + from; };
+        gather_add(slice_at(0), o[0], slice_at(2), o[1], slice_at(4), o[2], slice_at(6), o[3], to - from, fx + from);
+        gather_add(slice_at(1), o[0], slice_at(3), o[1], slice_at(5), o[2], slice_at(7), o[3], to - from, fz + from);
+    });
 }
 
 }  // namespace frictionlab

@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "frictionlab/base/hot_kernel.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
@@ -104,10 +105,17 @@ double Rk4::step(System& system, double max_dt) {
     double *stage = stage_.data(), *sum = sum_.data(), *rate = rate_.data();
     // One stage: positions with the stage's velocities `v`, then the velocities (x, then z) and the
     // aux variables with the new rates (in this order, as the rest overwrites the stage's velocities).
+    // A chunk of [0, 2N) does its positions, then the same entries' velocities (x below N, z from
+    // N): those are all that its positions read of the velocities, so chunks never wait on each other.
     auto combine = [&](auto positions, auto velocities, auto aux_variables, const double* v, double c) {
-        positions(y0, v, nullptr, c, half, stage, sum);
-        for (Index p = half; p < 2 * half; p += n)
-            velocities(y0 + p, rate + (p - half), inverse_mass, c, n, stage + p, sum + p);
+        for_each_chunk(half, [&](Index from, Index to) {
+            positions(y0 + from, v + from, nullptr, c, to - from, stage + from, sum + from);
+            for (Index a = from; a < to;) {
+                const Index b = a < n ? std::min(to, n) : to, node = a < n ? a : a - n;
+                velocities(y0 + half + a, rate + a, inverse_mass + node, c, b - a, stage + half + a, sum + half + a);
+                a = b;
+            }
+        });
         aux_variables(y0 + 2 * half, rate + half, nullptr, c, aux, stage + 2 * half, sum + 2 * half);
     };
 

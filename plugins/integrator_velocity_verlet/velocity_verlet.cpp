@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/model/partitioned_step.hpp"
 #include "frictionlab/simulation/system.hpp"
 
@@ -23,12 +24,16 @@ void verlet_step(Rate&& rate, double h, Index p, const Eigen::VectorXd& y, Eigen
                  Eigen::VectorXd& out) {
     const Index rest = y.size() - p;  // velocities and aux, whose rates are updated together
     rate(0.0, y, start);
-    out = y;
+    out.resize(y.size());
+    for_each_chunk(y.size(), [&](Index from, Index to) { out.segment(from, to - from) = y.segment(from, to - from); });
     kick(out, start, 0.5 * h, p);  // v_half (aux: half an Euler step)
     drift(out, h, p);              // drift with v_half
     kick(out, start, 0.5 * h, p);  // predictor: v_n + h a_n, psi_n + h g_n
     rate(h, out, end);
-    out.tail(rest) = y.tail(rest) + (0.5 * h) * (start.tail(rest) + end.tail(rest));  // kick
+    for_each_chunk(rest, [&](Index from, Index to) {  // kick
+        const Index i = p + from, m = to - from;
+        out.segment(i, m) = y.segment(i, m) + (0.5 * h) * (start.segment(i, m) + end.segment(i, m));
+    });
 }
 }  // namespace
 

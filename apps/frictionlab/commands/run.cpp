@@ -9,6 +9,7 @@
 #include "command.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/interrupt_signals.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/simulation/run.hpp"
 #include "run_flags.hpp"
 #include "scene_input.hpp"
@@ -54,6 +55,7 @@ int run(RunCommandOptions o, const Invocation& in) {
     options.live_progress = isatty(STDERR_FILENO) && !in.global.quiet;
     const InterruptSignals signals;
     options.stop_signal = &InterruptSignals::received();
+    set_worker_threads(o.flags.threads > 0 ? o.flags.threads : available_threads());
     const auto summary = run_scene(*scene, registry, in.log, options);
     in.log.info("done: {} steps, {:.6g} s simulated in {:.3g} s wall ({:.3g} steps/s); outputs in {}", summary.steps,
                 summary.simulated_time, summary.wall_seconds, summary.steps / std::max(summary.wall_seconds, 1e-9),

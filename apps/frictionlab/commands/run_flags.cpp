@@ -19,6 +19,10 @@ void RunFlags::add(CLI::App& cmd) {
                  "Replace the output directory if it exists and FrictionLab created it (never the working "
                  "directory, a parent of the scene, a file or a device)");
     cmd.add_flag("--allow-unstable-step", allow_unstable_step, "Run a time step above the estimated stable one");
+    cmd.add_option("--threads", threads,
+                   "Threads a run shares its lattice loops among; the results are the same at any count (default: "
+                   "all this machine offers to one run; in a sweep or study, those over --jobs)")
+        ->check(CLI::PositiveNumber);
     cmd.add_flag("--force", removed_force)->group("");  // hidden: explained when given
 }
 
@@ -35,6 +39,7 @@ CampaignOptions RunFlags::campaign_options(int jobs) const {
     options.jobs = jobs;
     options.overwrite = overwrite;
     options.allow_unstable_step = allow_unstable_step;
+    options.threads = threads;
     options.stop_signal = &InterruptSignals::received();
     return options;
 }

@@ -25,6 +25,7 @@ struct RunFlags {
     bool overwrite = false;
     bool allow_unstable_step = false;
     bool removed_force = false;
+    int threads = 0;  // --threads; 0: the command's default
 
     void add(CLI::App& cmd);
     /// True, after an error, if --force was given.

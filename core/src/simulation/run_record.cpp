@@ -1,3 +1,4 @@
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/simulation/run_record.hpp"
 
 #include <fmt/format.h>
@@ -49,6 +50,7 @@ std::string RunRecord::text() const {
     entry("loading_start", info.loading_start);
     entry("wall_seconds", summary.wall_seconds);
     entry("cpu_seconds", summary.cpu_seconds);
+    entry("threads", worker_threads());  // what the times were taken with; the results do not depend on it
     if (!summary.integrator_statistics.empty()) {
         y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
         for (const auto& [name, value] : summary.integrator_statistics) entry(name, value);

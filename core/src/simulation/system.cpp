@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "frictionlab/base/hot_kernel.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/base/state_archive.hpp"
 
 namespace frictionlab {
@@ -254,12 +255,17 @@ void derivative(System& system, double t, const Eigen::VectorXd& y, Eigen::Vecto
     const StateLayout& layout = system.layout();
     const Index n = layout.nodes;
     dy.resize(y.size());
-    dy.head(2 * n) = y.segment(2 * n, 2 * n);
-    dy.tail(layout.size() - 2 * n).setZero();
+    for_each_chunk(2 * n, [&](Index from, Index to) {
+        dy.segment(from, to - from) = y.segment(2 * n + from, to - from);
+        dy.segment(2 * n + from, to - from).setZero();
+    });
+    dy.tail(layout.size() - 4 * n).setZero();
     system.add_forces(t, y, dy.tail(layout.size() - 2 * n), how);
     ForceView f = forces_of(dy, layout);
-    scale(f.fx.data(), system.inverse_mass().data(), n);
-    scale(f.fz.data(), system.inverse_mass().data(), n);
+    for_each_chunk(n, [&](Index from, Index to) {
+        scale(f.fx.data() + from, system.inverse_mass().data() + from, to - from);
+        scale(f.fz.data() + from, system.inverse_mass().data() + from, to - from);
+    });
 }
 
 }  // namespace frictionlab

@@ -4,19 +4,23 @@
 // estimate sees exactly the scheme that runs.
 #include <Eigen/Core>
 
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/model/state.hpp"
 
 namespace frictionlab {
 
 /// Velocities and aux advance by h times their rate.
 inline void kick(Eigen::VectorXd& y, const Eigen::VectorXd& rate, double h, Index positions) {
-    const Index rest = y.size() - positions;
-    y.tail(rest) += h * rate.tail(rest);
+    for_each_chunk(y.size() - positions, [&](Index from, Index to) {
+        y.segment(positions + from, to - from) += h * rate.segment(positions + from, to - from);
+    });
 }
 
 /// Positions advance by h times the current velocities.
 inline void drift(Eigen::VectorXd& y, double h, Index positions) {
-    y.head(positions) += h * y.segment(positions, positions);
+    for_each_chunk(positions, [&](Index from, Index to) {
+        y.segment(from, to - from) += h * y.segment(positions + from, to - from);
+    });
 }
 
 /// Symplectic Euler from y into out: v and aux from the rate at y, then x with the new v.

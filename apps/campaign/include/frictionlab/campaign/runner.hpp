@@ -24,6 +24,9 @@ struct CampaignOptions {
     bool allow_unstable_step = false;  // as `frictionlab run --allow-unstable-step`
     bool live_progress = false;        // one live progress line on the terminal; else a log line per run
     bool reuse_finished = true;        // skip runs recorded done with the same scene hash
+    /// Threads each run shares its lattice loops among; 0: this machine's threads over `jobs`
+    /// (1 under MPI, whose ranks already share the cores).
+    int threads = 0;
     /// Set by the command's InterruptSignals: once a signal is received no case starts any more,
     /// and each running case is passed the signal, stops like `frictionlab run` (with a checkpoint)
     /// and is recorded "interrupted", to go on from its checkpoint when the campaign runs again.
