@@ -24,6 +24,17 @@ def test_difference_is_the_difference_of_the_means_with_a_reproducible_bootstrap
         ensembles.difference([1.0, np.nan], b)
 
 
+def test_mean_has_the_plug_in_standard_error_and_an_interval_within_the_values():
+    a = np.random.default_rng(5).normal(1.0, 0.5, 400)
+    m = ensembles.mean(np.append(a, np.nan))
+    assert m.estimate == pytest.approx(a.mean())
+    assert m.se == pytest.approx(a.std() / np.sqrt(len(a)), rel=0.03)
+    assert a.min() <= m.low <= m.estimate <= m.high <= a.max()
+    assert m == ensembles.mean(a)
+    with pytest.raises(ValueError):
+        ensembles.mean([1.0, np.nan])
+
+
 def test_the_bootstrap_standard_error_is_the_plug_in_standard_error_of_the_difference():
     rng = np.random.default_rng(3)
     a, b = rng.normal(0, 1, 400), rng.normal(0, 2, 300)

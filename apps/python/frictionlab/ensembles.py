@@ -36,6 +36,16 @@ def _effect(estimate: float, draws: np.ndarray) -> Effect:
     return Effect(float(estimate), float(low), float(high), float(np.std(draws, ddof=1)))
 
 
+def mean(a: Sequence[float], seed: int = 1, resamples: int = RESAMPLES) -> Effect:
+    """mean(a), NaNs left out, with the percentile interval of `resamples` draws of the ensemble with
+    replacement (seeded, as difference()). It needs two values or more."""
+    a = _finite(a)
+    if len(a) < 2:
+        raise ValueError(f"an ensemble of {len(a)} value(s): two or more are needed")
+    rng = np.random.default_rng(seed)
+    return _effect(a.mean(), rng.choice(a, (resamples, len(a))).mean(axis=1))
+
+
 def difference(a: Sequence[float], b: Sequence[float], seed: int = 1, resamples: int = RESAMPLES) -> Effect:
     """mean(a) - mean(b), NaNs left out, with the percentile interval of `resamples` draws of each
     ensemble with replacement (numpy's default generator, seeded: the same inputs give the same
