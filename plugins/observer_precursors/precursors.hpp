@@ -85,6 +85,9 @@ public:
     void observe(const RunView& view) override;
     /// While an event runs: refines its blocks' first-rupture times, decides nothing else.
     void observe_between(const RunView& view) override;
+    /// Junction counts (committed at each step) and positions only; contact by normal force, the
+    /// one thing evaluated, only for a law without counts.
+    bool between_reads_forces() const override { return counts_ == std::nullopt; }
     void resumed(const RunView& view) override { write_summary(view, false); }
     void end(const RunView& view) override;
     /// front_every while an event is open: its front's arrivals resolved to it.

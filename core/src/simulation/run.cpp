@@ -135,7 +135,7 @@ private:
             if (o.seen(sys.step_index(), sys.time())) continue;
             const bool own = all || o.due(sys.time(), sys.step_index(), tolerance);
             if (!own && !o.due_between(sys.time(), tolerance)) continue;
-            sys.refresh();
+            if (own || o.observer->between_reads_forces()) sys.refresh();
             if (own)
                 o.observer->observe(view(stage));
             else

@@ -59,6 +59,10 @@ public:
     /// An observation at the finer cadence, between two of its own: it may refine what it measures
     /// (an arrival time) but should decide nothing its own cadence decides. By default, an ordinary one.
     virtual void observe_between(const RunView& view) { observe(view); }
+    /// Whether observe_between() reads what a force evaluation publishes (forces, an effect's fields
+    /// or scalars). If not (positions and committed discrete state only), the run serves it without
+    /// evaluating the system at the observed state: a finer cadence then costs its sampling alone.
+    virtual bool between_reads_forces() const { return true; }
 };
 
 /// Advances the system by one accepted step, obeying the freeze-and-commit rule.
