@@ -19,7 +19,10 @@
 #include <benchmark/benchmark.h>
 #include <spdlog/logger.h>
 
+#include <fmt/format.h>
+
 #include "frictionlab/base/diagnostics.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/plugins/search.hpp"
 #include "frictionlab/plugins/registry.hpp"
@@ -31,11 +34,12 @@ namespace {
 
 constexpr const char* scene_file = FRICTIONLAB_SOURCE_DIR "/configs/li2020/maegawa_uniform.yaml";
 
-/// The baseline scene, settled and loading, with `overrides` applied as `--set` would, stepped by
-/// RK4 (the scene's own integrator is the quasi-static hybrid, whose dynamic phases are these steps).
+/// The baseline scene, settled and loading (or, unless `settle`, at the start of its settle stage),
+/// with `overrides` applied as `--set` would, stepped by RK4 at `dt` (the scene's own integrator is
+/// the quasi-static hybrid, whose dynamic phases are these steps).
 struct SceneFixture {
-    explicit SceneFixture(std::vector<std::string> overrides) {
-        overrides.push_back("integrator={type: rk4, dt: 2.0e-7}");
+    explicit SceneFixture(std::vector<std::string> overrides, bool settle = true, double dt = 2.0e-7) {
+        overrides.push_back(fmt::format("integrator={{type: rk4, dt: {}}}", dt));
         Diagnostics diagnostics;
         auto document = SceneDocument::load(scene_file, overrides, diagnostics);
         // FRICTIONLAB_PLUGIN_PATH first, as for the program: it lets one binary time another build's plugins.
@@ -44,8 +48,9 @@ struct SceneFixture {
         scene = document.validate(registry, diagnostics);
         if (!diagnostics.empty()) throw std::runtime_error(diagnostics.format());
         sim = std::make_unique<Simulation>(scene, registry, log);
-        const StageInfo settle = sim->begin_stage(0);
-        sim->advance_to(settle.t_start + settle.duration);
+        const StageInfo first = sim->begin_stage(0);
+        if (!settle) return;
+        sim->advance_to(first.t_start + first.duration);
         sim->begin_stage(1);
     }
 
@@ -113,10 +118,38 @@ void step_rupture(benchmark::State& state) {
     set_counters(state, f);
 }
 
+/// One RK4 step of the scene on an nx x nz lattice (range 0, 1) with `threads` threads (range 2),
+/// at the start of the load ramp (the work of a step does not depend on the state), at a step below
+/// that lattice's stable one. Counter per_node_step: ns per node and step, flat if the cost is linear.
+void step_lattice_size(benchmark::State& state) {
+    const auto nx = state.range(0), nz = state.range(1);
+    const double spacing = 0.1 / static_cast<double>(nx - 1);
+    // The stable step falls with the square of the spacing (theory.md 1a): 5.6e-7 s at 2.5 mm.
+    const double dt = 0.3 * 5.6e-7 * (spacing / 2.5e-3) * (spacing / 2.5e-3);
+    SceneFixture f({fmt::format("bulk.nx={}", nx), fmt::format("bulk.nz={}", nz),
+                    fmt::format("bulk.height={}", spacing * static_cast<double>(nz - 1))},
+                   false, dt);
+    set_worker_threads(static_cast<int>(state.range(2)));
+    for (auto _ : state) f.sim->step(dt);
+    set_worker_threads(1);
+    state.counters["per_node_step"] =
+        benchmark::Counter(static_cast<double>(f.sim->system().body().size()),
+                           benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 // The rupture is transient: a fixed, short run of steps per repetition keeps the timing inside it
 // (1000 steps = 0.2 ms of a ~ms-long event); the unpinned_* counters show it stayed inside.
 BENCHMARK(step_loading)->Unit(benchmark::kMicrosecond);
 BENCHMARK(step_rupture)->Iterations(1000)->Unit(benchmark::kMicrosecond);
+// Each size with one thread and with two, side by side.
+BENCHMARK(step_lattice_size)
+    ->ArgNames({"nx", "nz", "threads"})
+    ->ArgsProduct({{41}, {9}, {1, 2}})
+    ->ArgsProduct({{81}, {17}, {1, 2}})
+    ->ArgsProduct({{121}, {25}, {1, 2}})
+    ->ArgsProduct({{161}, {33}, {1, 2}})
+    ->ArgsProduct({{321}, {65}, {1, 2}})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace frictionlab

@@ -21,6 +21,7 @@
 
 #include "../frictionlab/doc_writer.hpp"
 #include "../frictionlab/type_selector.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/plugins/search.hpp"
 #include "frictionlab/plugins/registry.hpp"
@@ -92,7 +93,7 @@ public:
     /// Runs in this process, the GIL released; Ctrl-C stops the run (its outputs closed) and raises
     /// KeyboardInterrupt.
     py::dict run(const std::optional<fs::path>& output, bool progress, bool overwrite, bool allow_unstable_step,
-                 bool resume, const std::string& log_level) const {
+                 bool resume, const std::string& log_level, int threads) const {
         const PyScene* target = this;
         std::optional<PyScene> redirected;
         if (output) {
@@ -109,6 +110,7 @@ public:
         options.allow_unstable_step = allow_unstable_step;
         options.resume = resume;
         options.live_progress = progress;
+        fl::set_worker_threads(threads > 0 ? threads : fl::available_threads());  // as `frictionlab run`
         std::atomic<int> stop{0};  // as the command's signal handlers set it: the run ends `interrupted`
         options.stop_signal = &stop;
         auto log = make_logger(log_level);
@@ -236,7 +238,7 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("output", [](const PyScene& s) { return s.scene().output_directory; })
         .def_property_readonly("resolved_yaml", [](const PyScene& s) { return s.scene().resolved_yaml; })
         .def("run", &PyScene::run, py::arg("output"), py::arg("progress"), py::arg("overwrite"),
-             py::arg("allow_unstable_step"), py::arg("resume"), py::arg("log_level"));
+             py::arg("allow_unstable_step"), py::arg("resume"), py::arg("log_level"), py::arg("threads"));
 
     m.def("types", &types, py::arg("plugin_paths"));
     m.def("doc_json", &doc_json, py::arg("kind"), py::arg("type"), py::arg("plugin_paths"));

@@ -58,6 +58,7 @@ TEST(RunRecord, ACompletedRunsTextHasTheProvenanceFirstThenWhatOnlyTheRecordHold
               "loading_start: 0.25\n"
               "wall_seconds: 1.25\n"
               "cpu_seconds: 1\n"
+              "threads: 1\n"
               "integrator_statistics:\n"
               "  quiet_steps: 30\n"
               "  quiet_fraction: 0.125\n"

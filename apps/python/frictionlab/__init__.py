@@ -103,7 +103,8 @@ class Scene:
         return self._core.resolved_yaml
 
     def run(self, output: Optional[str] = None, progress: bool = False, overwrite: bool = False,
-            allow_unstable_step: bool = False, resume: bool = False, log_level: str = "warn") -> Run:
+            allow_unstable_step: bool = False, resume: bool = False, log_level: str = "warn",
+            threads: int = 0) -> Run:
         """Runs the scene in this process and returns its Run.
 
         output               output directory; as `frictionlab run -o` (an override of `output:`, so
@@ -114,6 +115,8 @@ class Scene:
         resume               go on from the last checkpoint of the stopped run in the output directory
                              (`frictionlab run --resume`; share/docs/checkpoints.md)
         log_level            trace, debug, info, warn, error or off (log lines go to stderr)
+        threads              threads the run shares its lattice loops among (`--threads`); 0: all this
+                             machine offers; the results are the same at any count
 
         The GIL is released while stepping. Ctrl-C (SIGINT) stops the run between two steps: its
         tables are closed, run.yaml records status "interrupted" with the step and time reached, and
@@ -121,7 +124,7 @@ class Scene:
         there. A run that fails raises RunError; bad input InputError.
         """
         summary = self._core.run(None if output is None else os.fspath(output), progress, overwrite,
-                                 allow_unstable_step, resume, log_level)
+                                 allow_unstable_step, resume, log_level, threads)
         return open_run(str(summary["output"]))
 
     def __repr__(self) -> str:
