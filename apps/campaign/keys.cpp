@@ -11,6 +11,7 @@ struct Study {
     std::string title, scene;
     double observe_every = 1.0e-6;
     double profile_every = 1.0e-4;
+    bool run_failures_again = true;
 };
 
 struct StudyCase {
@@ -41,6 +42,10 @@ const std::vector<ParamInfo>& study_params() {
               "stage's duration.")
             .unit("s")
             .greater_than(0);
+        s.add("run_failures_again", &Study::run_failures_again,
+              "With seeds: run a case that fails the accuracy standard again, with the reference, on as many other "
+              "seeds before rejecting it (the standard's rule); false judges on the first ensemble alone, where "
+              "the reference's runs are too costly to repeat, and a fail is then unconfirmed.");
         return s;
     }();
     return spec.params();

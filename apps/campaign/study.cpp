@@ -30,6 +30,7 @@ public:
     void read_own(const YAML::Node& root, const detail::Section& top, Study& study) {
         study.observe_every = value_or(top, "observe_every", study.observe_every);
         study.profile_every = value_or(top, "profile_every", study.profile_every);
+        study.run_failures_again = value_or(top, "run_failures_again", study.run_failures_again);
         study.cases.emplace_back();
         study.families.emplace_back();
         if (const auto reference = given(top, "reference")) read_one(*reference, "reference", true, study);

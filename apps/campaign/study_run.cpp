@@ -114,6 +114,13 @@ void judge_ensembles(const Study& study, const std::vector<CampaignRun>& runs, c
         if (e.judgement.verdict() == Verdict::fail) again.push_back(e.case_index);
     result.ensembles = first;
     if (again.size() == 1) return;
+    if (!study.run_failures_again) {
+        log.warn(
+            "study: {} case{} failed on the first {} seeds, not run again (run_failures_again: false): "
+            "unconfirmed",
+            again.size() - 1, again.size() == 2 ? "" : "s", study.seeds.size());
+        return;
+    }
     std::vector<std::int64_t> seeds;
     const std::int64_t after = *std::max_element(study.seeds.begin(), study.seeds.end());
     for (std::size_t k = 0; k < study.seeds.size(); ++k) seeds.push_back(after + 1 + static_cast<std::int64_t>(k));

@@ -25,6 +25,8 @@ struct Study : Campaign {
     /// Whether case 1 is the reference at half its step (`half_step:`): over seeds, its difference
     /// from the reference is the reference's own spread (accuracy_standard.hpp).
     bool half_step = false;
+    /// Whether a case that fails is run again on other seeds before it is rejected (`run_failures_again:`).
+    bool run_failures_again = true;
     /// Whether the runs over the seeds are judged as ensembles (two seeds or more).
     bool ensembles() const { return seeds.size() >= 2; }
 
