@@ -197,6 +197,20 @@ TEST(Study, EnsemblesOverSeedsAreJudgedAndAFailingCaseIsRunAgainOnOtherSeeds) {
     const std::string md = read_text(dir / "out" / "study.md");
     EXPECT_NE(md.find("## Ensembles over the 3 seeds"), std::string::npos);
     EXPECT_NE(md.find("| lighter | 2 |"), std::string::npos);
+
+    // Judged on the first ensemble alone (run_failures_again: false), from the runs made above: the
+    // fail stands, unconfirmed, and says so.
+    fs::copy_file(STUDY_FILES "/tiny_scene.yaml", dir / "tiny_scene.yaml");
+    std::ofstream(dir / "first_only.yaml")
+        << read_text(STUDY_FILES "/tiny_ensemble_study.yaml") << "run_failures_again: false\n";
+    const auto first_only = frictionlab("study -j 2 first_only.yaml -o out", dir);
+    ASSERT_EQ(first_only.code, 0) << first_only.output;
+    EXPECT_NE(first_only.output.find("1 case failed on the first 3 seeds, not run again"), std::string::npos)
+        << first_only.output;
+    const StudyTable judged_once(dir / "out" / "ensemble.csv");
+    bool second_ensemble = false;
+    for (const auto& row : judged_once.rows()) second_ensemble |= row.at("ensemble") == "2";
+    EXPECT_FALSE(second_ensemble);
 }
 
 TEST(Study, OverSeedsComparesEachCaseWithTheReferenceOfItsSeed) {
