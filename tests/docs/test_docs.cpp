@@ -1,6 +1,6 @@
 // The examples of the documentation, extracted from the Markdown and run, so that they cannot
-// drift from the program: README.md and share/docs/scene-format.md, running.md and campaigns.md
-// (share/docs/tutorial.md is run whole by run_tutorial.py).
+// drift from the program: README.md and share/docs/scene-format.md, running.md, campaigns.md and
+// lattice-resolution.md (share/docs/tutorial.md is run whole by run_tutorial.py).
 //
 // - Fenced ```sh lines that call `build/bin/frictionlab`: run from the source tree. `run` becomes
 //   `check` with the same arguments (a run takes minutes and writes into the tree; `check` reads the
@@ -67,7 +67,7 @@ std::vector<Fence> fences(const fs::path& markdown) {
 
 std::vector<Fence> documented_fences() {
     auto all = fences(source / "README.md");
-    for (const char* page : {"scene-format.md", "running.md", "campaigns.md"}) {
+    for (const char* page : {"scene-format.md", "running.md", "campaigns.md", "lattice-resolution.md"}) {
         auto more = fences(source / "share/docs" / page);
         all.insert(all.end(), more.begin(), more.end());
     }

@@ -9,7 +9,7 @@
 namespace frictionlab {
 
 /// The fewest indices a loop must have to be shared among threads (measured, share/docs/lattice-resolution.md).
-inline constexpr std::int64_t parallel_chunks_from = 4096;
+inline constexpr std::int64_t parallel_chunks_from = 16384;
 
 /// How many threads loops share their work among from now on (1 or more).
 void set_worker_threads(int threads);
