@@ -1,5 +1,5 @@
-"""frictionlab.ensembles against values worked out by hand, and share/scripts/li2020-claims on
-campaign tables built by hand."""
+"""frictionlab.ensembles against values worked out by hand, and share/scripts/li2020-claims and
+share/scripts/lattice-convergence on campaign tables built by hand."""
 import os
 import subprocess
 import sys
@@ -120,3 +120,35 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
     assert "F_S/F_N -0.050 [-0.050, -0.050]" in text and "+1.0 [+1.0, +1.0]" in text
     assert "longest one's l/L +0.20" in text  # 0.3 + 0.2 against 0.3
     assert (tmp_path / "doc.md").read_text() == f"before\n<!-- li2020-claims -->\n{text}<!-- /li2020-claims -->\nafter\n"
+
+
+def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tmp_path):
+    # Two lattices, three seeds each: the coarse one slips globally 0.02 higher in F_S/F_N and its
+    # global front crosses at 500 m/s against 1000; both settle to a uniform normal force.
+    runs = []
+    for nx, nz, shift, speed in ((5, 2, 0.02, 500.0), (9, 3, 0.0, 1000.0)):
+        for seed, noise in ((1, -0.001), (2, 0.001), (3, 0.0)):
+            case = f"lattice-{nx}x{nz}_seed-{seed}"
+            folder = tmp_path / "conv/cases" / case
+            write(folder / "run.yaml", f"scene:\n  bulk: {{nx: {nx}, nz: {nz}, length: 0.1}}\n")
+            write(folder / "precursors.csv", "event,t_start,global,front_speed,crossing_speed\n"
+                  f"0,0.10,0,200,nan\n1,0.20,1,{speed},{speed + noise * 1000}\n")
+            blocks = ",".join(f"block_{i}" for i in range(nx))
+            write(folder / "interface_normal_force.csv", f"time,time_since_loading,{blocks}\n"
+                  f"0,-0.01,{','.join(['0'] * nx)}\n0.01,0,{','.join(['2.5'] * nx)}\n")
+            runs.append(f"{case},{seed},1,0.1,0.2,0.3,nan,nan,{0.38 + shift + noise},0.2,nan,nan")
+    write(tmp_path / "conv/run_statistics.csv", f"case,seed,{STATISTICS}\n" + "\n".join(runs) + "\n")
+    write(tmp_path / "doc.md", "<!-- lattice-convergence -->\nold\n<!-- /lattice-convergence -->\n")
+    build = os.path.dirname(os.path.dirname(ensembles.__file__))  # build/python
+    out = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/lattice-convergence"), "conv",
+                          "--figure", "f.png", "--write", "doc.md"], cwd=tmp_path, capture_output=True, text=True,
+                         env={**os.environ, "PYTHONPATH": build, "MPLBACKEND": "Agg"})
+    assert out.returncode == 0, out.stderr
+    lines = {line.split(" | ")[0].lstrip("| "): line for line in out.stdout.splitlines() if line.startswith("| ")}
+    assert lines["quantity"] == "| quantity | 5 × 2 | 9 × 3 | 5 × 2 − 9 × 3 |"
+    assert "**+0.020 [" in lines["first global slip, F_S/F_N"]          # resolved: the seeds agree to 0.001
+    assert "**-500 [" in lines["first global slip, crossing speed [m/s]"]  # coarse minus finest
+    assert "| 0.380 [0.379, 0.381] |" in lines["first global slip, F_S/F_N"]
+    assert lines["first precursor, F_S/F_N"].endswith("| +0.000 [+0.000, +0.000] |")  # not resolved: no bold
+    assert (tmp_path / "f.png").stat().st_size > 0
+    assert (tmp_path / "doc.md").read_text() == f"<!-- lattice-convergence -->\n{out.stdout}<!-- /lattice-convergence -->\n"
