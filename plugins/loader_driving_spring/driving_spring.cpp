@@ -29,6 +29,12 @@ ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
     s.choice("attachment", &Params::attachment, {{"node", Attach::node}, {"interpolated", Attach::interpolated}},
              "node: h must be the height of a node; interpolated: the driving point is interpolated linearly "
              "between the two nearest nodes and the force shared with the same weights.");
+    s.add("patch", &Params::patch,
+          "Height w of the patch the spring pulls on, centred on h, as a uniform traction over the node column "
+          "(each node its span's share); 0: a point (attachment). It keeps the load the same as the lattice is "
+          "refined: a point force's stress grows without bound there.")
+        .unit("m")
+        .at_least(0);
     s.add("node_set", &Params::node_set, "Node set the driving point lies on (a column of nodes).");
     s.drives_loading();
     return s;
@@ -47,6 +53,27 @@ NodeHeights sorted_heights(const Body& body, const NodeSet& set) {
     return h;
 }
 
+/// A uniform traction over h +- w/2: each node of the column takes the part of the patch its span
+/// (half the gaps to its neighbours either side, within the column) covers.
+std::vector<DrivingSpring::Attachment> spread(const DrivingSpring::Params& p, const NodeHeights& n) {
+    const double low = p.height - p.patch / 2, high = p.height + p.patch / 2, top = n.heights.back();
+    if (low < 0 || high > top * (1 + 1e-9))
+        throw InputError(
+            fmt::format("driving_spring: patch = {:g} m around height = {:g} m reaches outside node set "
+                        "'{}' (0 to {:g} m); make it at most {:g} m",
+                        p.patch, p.height, p.node_set, top, 2 * std::min(p.height, top - p.height)));
+    std::vector<DrivingSpring::Attachment> nodes;
+    double total = 0;
+    for (std::size_t k = 0; k < n.nodes.size(); ++k) {
+        const double below = k == 0 ? 0 : (n.heights[k - 1] + n.heights[k]) / 2;
+        const double above = k + 1 == n.nodes.size() ? top : (n.heights[k] + n.heights[k + 1]) / 2;
+        const double covered = std::min(above, high) - std::max(below, low);
+        if (covered > 1e-9 * p.patch) nodes.push_back({n.nodes[k], covered}), total += covered;
+    }
+    for (DrivingSpring::Attachment& a : nodes) a.weight /= total;  // sums to 1; one node: exactly 1
+    return nodes;
+}
+
 std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, const Body& body) {
     const NodeSet& set = body.nodes(p.node_set);
     if (set.empty()) throw InputError("driving_spring: node set '" + p.node_set + "' is empty");
@@ -63,6 +90,7 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     if (p.height < -tolerance || p.height > n.heights.back() + tolerance)
         throw InputError(fmt::format("driving_spring: height = {:g} m is outside node set '{}' (0 to {:g} m)", p.height,
                                      p.node_set, n.heights.back()));
+    if (p.patch > 0) return spread(p, n);
     const auto above = std::lower_bound(n.heights.begin(), n.heights.end(), p.height - tolerance);
     const std::size_t k = std::min<std::size_t>(above - n.heights.begin(), n.heights.size() - 1);
     if (std::abs(n.heights[k] - p.height) <= tolerance) return {{n.nodes[k], 1.0}};
@@ -99,8 +127,10 @@ std::string DrivingSpring::describe() const {
         "driving spring K_S={:g} N/m, V={:g} m/s{} at h={:g} m ({})", params_.stiffness, params_.velocity,
         params_.reversal_period > 0 ? fmt::format(" reversing every {:g} s", params_.reversal_period / 2) : "",
         params_.height,
-        attachment_.size() == 1 ? fmt::format("node {}", attachment_[0].node)
-                                : fmt::format("between nodes {} and {}", attachment_[0].node, attachment_[1].node));
+        params_.patch > 0         ? fmt::format("over {:g} m, nodes {} to {}", params_.patch, attachment_.front().node,
+                                                attachment_.back().node)
+        : attachment_.size() == 1 ? fmt::format("node {}", attachment_[0].node)
+                                  : fmt::format("between nodes {} and {}", attachment_[0].node, attachment_[1].node));
 }
 
 double DrivingSpring::far_end(double t) const {

@@ -20,7 +20,12 @@ namespace frictionlab {
 /// x_h0 are taken at the start of the first stage in which the loader is active, so F_S(t0) = 0;
 /// the spring is massless and undamped. With attachment "node" the driving point must be a node;
 /// with "interpolated" it lies between the two nearest nodes, x_h is their linear interpolation and
-/// F_S is shared with the same weights (so the work F_S dx_h is what the nodes receive). A node set
+/// F_S is shared with the same weights (so the work F_S dx_h is what the nodes receive). With a
+/// patch of height w > 0 the spring pulls on the column over h +- w/2 as a uniform traction instead
+/// of a point: each node takes the share of the patch its own span (half a spacing either side)
+/// covers, and x_h is the same weighted mean. A point force in a continuum has an unbounded stress,
+/// so a point-driven edge is pulled harder as the lattice is refined; a patch keeps the load the
+/// same on every lattice (a patch of one spacing centred on a node is exactly that node). A node set
 /// of one node (the trailing block of a chain, plugins/bulk_chain_1d) is the driving point for any h
 /// from 0 to the slider's height H: the torque F_S h is then not modelled.
 ///
@@ -45,6 +50,7 @@ public:
         double velocity = 1e-4;      // V, m/s
         double reversal_period = 0;  // T, s; 0: never reverses
         double height = 0.005;       // h, m
+        double patch = 0;            // w, m; 0: a point
         Attach attachment = Attach::node;
         std::string node_set = "trailing_edge";
     };

@@ -171,6 +171,51 @@ TEST(DrivingSpring, NodeAttachmentRejectsAHeightBetweenNodes) {
     EXPECT_NO_THROW(DrivingSpring(at_height(0.005 + 1e-13), services.context(&lattice.body())));
 }
 
+DrivingSpring::Params over_patch(double h, double patch) {
+    DrivingSpring::Params p = at_height(h);
+    p.patch = patch;
+    return p;
+}
+
+TEST(DrivingSpring, APatchOfOneSpacingCentredOnANodeIsExactlyThatNode) {
+    SpringOnLattice s(over_patch(0.005, 0.0025));  // l_s = 2.5 mm: row 2's own span
+    ASSERT_EQ(s.spring.attachment().size(), 1u);
+    EXPECT_EQ(s.spring.attachment()[0].node, 2 * nx);
+    EXPECT_EQ(s.spring.attachment()[0].weight, 1.0);  // bit for bit the point load of the same node
+}
+
+TEST(DrivingSpring, APatchPullsAsAUniformTractionEachNodeTakingItsSpansShare) {
+    // 5 mm around h = 5 mm covers 2.5 to 7.5 mm: half of row 1's span, row 2's, half of row 3's.
+    SpringOnLattice s(over_patch(0.005, 0.005));
+    const auto& a = s.spring.attachment();
+    ASSERT_EQ(a.size(), 3u);
+    const double expected[] = {0.25, 0.5, 0.25};
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(a[k].node, (k + 1) * nx);
+        EXPECT_NEAR(a[k].weight, expected[k], 1e-15);
+    }
+    s.begin_stage(0.0);
+    s.y(2 * nx) += 4e-6;  // x_h is the traction-weighted mean of the column
+    const Eigen::VectorXd f = s.fx(0.1);
+    const double xh = 0.5 * 4e-6, F = 0.8e6 * (1e-5 - xh);
+    EXPECT_NEAR(s.scalar("driving_displacement"), xh, 1e-17);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(f((k + 1) * nx), expected[k] * F, 1e-9);
+    EXPECT_NEAR(f.sum(), F, 1e-9);
+}
+
+TEST(DrivingSpring, APatchReachingBeyondTheColumnNamesTheLargestThatFits) {
+    test_support::Services services;
+    SpringLattice2d lattice(SpringLattice2d::Params{}, services.context());
+    try {
+        DrivingSpring(over_patch(0.005, 0.012), services.context(&lattice.body()));
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        for (const char* part : {"patch = 0.012", "trailing_edge", "at most 0.01 m"})
+            EXPECT_NE(what.find(part), std::string::npos) << part << " missing in: " << what;
+    }
+}
+
 TEST(DrivingSpring, OnAChainDrivesTheTrailingBlockAtAnyHeightUpToTheSlidersHeight) {
     // A chain's trailing edge is block 0 alone: h = 5 mm of a lattice scene still drives it (its torque
     // F_S h is not modelled), and h above the slider's height H = 20 mm is refused.
