@@ -137,7 +137,12 @@ def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tm
             write(folder / "interface_normal_force.csv", f"time,time_since_loading,{blocks}\n"
                   f"0,-0.01,{','.join(['0'] * nx)}\n0.01,0,{','.join(['2.5'] * nx)}\n")
             runs.append(f"{case},{seed},1,0.1,0.2,0.3,nan,nan,{0.38 + shift + noise},0.2,nan,nan")
+    # A case an interruption left unrun has a row of empty statistics and no folder: it is left out.
+    runs.append("lattice-9x3_seed-4,4" + "," * STATISTICS.count(",") + ",")
     write(tmp_path / "conv/run_statistics.csv", f"case,seed,{STATISTICS}\n" + "\n".join(runs) + "\n")
+    cases = [r.split(",")[0] for r in runs]
+    write(tmp_path / "conv/sweep.csv", "case,status\n" + "".join(
+        f"{c},{'not run' if c.endswith('seed-4') else 'done'}\n" for c in cases))
     write(tmp_path / "doc.md", "<!-- lattice-convergence -->\nold\n<!-- /lattice-convergence -->\n")
     build = os.path.dirname(os.path.dirname(ensembles.__file__))  # build/python
     out = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/lattice-convergence"), "conv",
@@ -152,3 +157,10 @@ def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tm
     assert lines["first precursor, F_S/F_N"].endswith("| +0.000 [+0.000, +0.000] |")  # not resolved: no bold
     assert (tmp_path / "f.png").stat().st_size > 0
     assert (tmp_path / "doc.md").read_text() == f"<!-- lattice-convergence -->\n{out.stdout}<!-- /lattice-convergence -->\n"
+    # Grouped by case (a sweep over something else on one lattice), each compared with the last case.
+    by_case = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/lattice-convergence"), "conv",
+                              "--by", "case"], cwd=tmp_path, capture_output=True, text=True,
+                             env={**os.environ, "PYTHONPATH": build, "MPLBACKEND": "Agg"})
+    assert by_case.returncode == 0, by_case.stderr
+    assert "| quantity | lattice-5x2 | lattice-9x3 | lattice-5x2 − lattice-9x3 |" in by_case.stdout
+    assert "**+0.020 [" in by_case.stdout
