@@ -1,6 +1,7 @@
 #include "rigid_base_contact.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <fmt/format.h>
@@ -17,6 +18,12 @@ ParamSpec<RigidBaseContact::Params> RigidBaseContact::spec() {
           "Contact stiffness K_b per node relative to the bulk's bond stiffness K (Li2020: 1/2).")
         .unit("1")
         .greater_than(0);
+    s.add("reference_spacing", &Params::reference_spacing,
+          "Spacing at which K_b = stiffness_ratio * K (2.5 mm: the paper's 41 x 9 slider). At another spacing l_s, "
+          "K_b = stiffness_ratio * K * l_s/reference_spacing: the base keeps its stiffness per unit area as the "
+          "lattice is refined (share/docs/lattice-resolution.md). 0: K_b per node at every spacing, as printed.")
+        .unit("m")
+        .at_least(0);
     s.add("node_set", &Params::node_set, "Node set in contact with the base.");
     return s;
 }
@@ -27,7 +34,11 @@ double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body)
         throw InputError(
             "rigid_base_contact: the bulk model gives no bond stiffness K, so K_b = stiffness_ratio * K "
             "is undefined");
-    return p.stiffness_ratio * body.bond_stiffness;
+    const double reference = p.reference_spacing;
+    // At the reference spacing (to 1e-9 of it) exactly the per-node value, as the bulk's mass and damping.
+    if (reference <= 0 || std::abs(body.spacing - reference) <= 1e-9 * reference)
+        return p.stiffness_ratio * body.bond_stiffness;
+    return p.stiffness_ratio * body.bond_stiffness * (body.spacing / reference);
 }
 }  // namespace
 

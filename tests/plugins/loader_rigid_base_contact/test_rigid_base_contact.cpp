@@ -42,6 +42,14 @@ TEST(RigidBaseContact, StiffnessIsHalfTheBondStiffnessByDefault) {
     EXPECT_DOUBLE_EQ(other.contact.contact_stiffness(), 0.2 * 1.125e7);
 }
 
+TEST(RigidBaseContact, AReferenceSpacingKeepsTheStiffnessPerUnitArea) {
+    RigidBaseContact::Params p;
+    p.reference_spacing = 0.0025;  // the lattice's own l_s: exactly the per-node value
+    EXPECT_EQ(ContactOnLattice(p).contact.contact_stiffness(), 0.5 * 1.125e7);
+    p.reference_spacing = 0.005;  // a lattice twice as fine as the reference: half the stiffness per node
+    EXPECT_DOUBLE_EQ(ContactOnLattice(p).contact.contact_stiffness(), 0.5 * 1.125e7 * 0.5);
+}
+
 TEST(RigidBaseContact, PushesPenetratingNodesUpAndLeavesSeparatedOnesFree) {
     ContactOnLattice s;
     const Index n = s.layout.nodes, pressed = 7, lifted = 8, row_above = 41 + 7;
