@@ -18,12 +18,11 @@ ParamSpec<RigidBaseContact::Params> RigidBaseContact::spec() {
           "Contact stiffness K_b per node relative to the bulk's bond stiffness K (Li2020: 1/2).")
         .unit("1")
         .greater_than(0);
-    s.add("reference_spacing", &Params::reference_spacing,
-          "Spacing at which K_b = stiffness_ratio * K (2.5 mm: the paper's 41 x 9 slider). At another spacing l_s, "
-          "K_b = stiffness_ratio * K * l_s/reference_spacing: the base keeps its stiffness per unit area as the "
-          "lattice is refined (share/docs/lattice-resolution.md). 0: K_b per node at every spacing, as printed.")
-        .unit("m")
-        .at_least(0);
+    s.choice("stiffness_per", &Params::stiffness_per, {{"area", Per::area}, {"node", Per::node}},
+             "area: K_b = stiffness_ratio * K at the bulk's reference spacing l_ref (the paper's 41 x 9) and "
+             "K_b * l_s/l_ref on another lattice, the same stiffness per unit area (a bulk without one, as "
+             "chain_1d: per node); node: stiffness_ratio * K per node at every spacing, as printed, so a finer "
+             "lattice has a stiffer base (share/docs/lattice-resolution.md).");
     s.add("node_set", &Params::node_set, "Node set in contact with the base.");
     return s;
 }
@@ -34,7 +33,7 @@ double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body)
         throw InputError(
             "rigid_base_contact: the bulk model gives no bond stiffness K, so K_b = stiffness_ratio * K "
             "is undefined");
-    const double reference = p.reference_spacing;
+    const double reference = p.stiffness_per == RigidBaseContact::Per::area ? body.reference_spacing : 0.0;
     // At the reference spacing (to 1e-9 of it) exactly the per-node value, as the bulk's mass and damping.
     if (reference <= 0 || std::abs(body.spacing - reference) <= 1e-9 * reference)
         return p.stiffness_ratio * body.bond_stiffness;

@@ -10,9 +10,10 @@ namespace frictionlab {
 /// Normal contact of the interface nodes with a rigid base (Li2020 Eq. 5, theory.md B.5):
 ///     P_b = -K_b (z_i - z0_i)  if z_i <= z0_i,   else 0,
 /// acting in +z, with K_b = stiffness_ratio * K (K the bulk's bond stiffness; Li2020 and
-/// Tromborg 2014 use K/2, the foundation stiffness of the same material). With reference_spacing
-/// l_ref > 0, K_b = stiffness_ratio * K * l_s/l_ref: the same stiffness per unit area of the base on
-/// every lattice (theory.md §1a), exactly the per-node value at l_ref. No damping, no
+/// Tromborg 2014 use K/2, the foundation stiffness of the same material) at the bulk's reference
+/// spacing l_ref (Body::reference_spacing); on another lattice K_b = stiffness_ratio * K * l_s/l_ref,
+/// the same stiffness per unit area of the base (theory.md §1a), unless stiffness_per is node (as
+/// printed: a finer lattice then has a stiffer base). No damping, no
 /// adhesion. P_b is published as the field "normal_force" over the node set; it is refreshed from
 /// the end-of-step state in commit(), where the friction law (evaluated after the loaders) reads
 /// it to judge its own transitions.
@@ -24,9 +25,11 @@ namespace frictionlab {
 class RigidBaseContact final : public Loader {
 public:
     bool checkpointable() const override { return true; }  // no state beyond the state vector
+    /// Whether K_b keeps its value per node or per unit area of the base on another lattice.
+    enum class Per { area, node };
     struct Params {
         double stiffness_ratio = 0.5;  // K_b / K at reference_spacing
-        double reference_spacing = 0;  // m; 0: K_b per node at every spacing
+        Per stiffness_per = Per::area;
         std::string node_set = "interface";
     };
     static constexpr std::string_view type = "rigid_base_contact";

@@ -10,8 +10,8 @@ namespace frictionlab {
 namespace {
 
 struct ContactOnLattice {
-    explicit ContactOnLattice(const RigidBaseContact::Params& p = {})
-        : lattice(SpringLattice2d::Params{}, services.context()),
+    explicit ContactOnLattice(const RigidBaseContact::Params& p = {}, const SpringLattice2d::Params& bulk = {})
+        : lattice(bulk, services.context()),
           layout{lattice.body().size(), 0},
           contact(p, services.context(&lattice.body())) {
         y = Eigen::VectorXd::Zero(layout.size());
@@ -42,12 +42,18 @@ TEST(RigidBaseContact, StiffnessIsHalfTheBondStiffnessByDefault) {
     EXPECT_DOUBLE_EQ(other.contact.contact_stiffness(), 0.2 * 1.125e7);
 }
 
-TEST(RigidBaseContact, AReferenceSpacingKeepsTheStiffnessPerUnitArea) {
+TEST(RigidBaseContact, KeepsItsStiffnessPerUnitAreaOnAnotherLattice) {
     RigidBaseContact::Params p;
-    p.reference_spacing = 0.0025;  // the lattice's own l_s: exactly the per-node value
-    EXPECT_EQ(ContactOnLattice(p).contact.contact_stiffness(), 0.5 * 1.125e7);
-    p.reference_spacing = 0.005;  // a lattice twice as fine as the reference: half the stiffness per node
-    EXPECT_DOUBLE_EQ(ContactOnLattice(p).contact.contact_stiffness(), 0.5 * 1.125e7 * 0.5);
+    EXPECT_EQ(ContactOnLattice(p).contact.contact_stiffness(), 0.5 * 1.125e7);  // at the reference: exactly K/2
+    SpringLattice2d::Params twice_as_fine;  // a lattice whose spacing is half the reference's
+    twice_as_fine.reference_spacing = 0.005;
+    EXPECT_DOUBLE_EQ(ContactOnLattice(p, twice_as_fine).contact.contact_stiffness(), 0.5 * 1.125e7 * 0.5);
+    p.stiffness_per = RigidBaseContact::Per::node;  // as printed: K/2 per node on any lattice
+    EXPECT_EQ(ContactOnLattice(p, twice_as_fine).contact.contact_stiffness(), 0.5 * 1.125e7);
+    SpringLattice2d::Params per_block;  // a bulk without a reference spacing: per node
+    per_block.reference_spacing = 0;
+    per_block.nx = 81, per_block.nz = 17;
+    EXPECT_EQ(ContactOnLattice({}, per_block).contact.contact_stiffness(), 0.5 * 1.125e7);
 }
 
 TEST(RigidBaseContact, PushesPenetratingNodesUpAndLeavesSeparatedOnesFree) {

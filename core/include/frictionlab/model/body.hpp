@@ -30,6 +30,10 @@ struct Body {
     /// Stiffness K of the bulk's nearest-neighbour springs (N/m): boundary effects that the model
     /// defines relative to it (the paper's base contact K_b = K/2) read it from here.
     double bond_stiffness = 0;
+    /// Spacing at which the bulk's per-block values are the model's (spring_lattice_2d's
+    /// reference_spacing), m; 0: none. Boundary effects the model gives per node (the base contact)
+    /// scale from it to stay the same per unit area on another lattice.
+    double reference_spacing = 0;
     std::map<std::string, NodeSet, std::less<>> node_sets;
     std::vector<std::array<Index, 2>> bonds;  // springs, for pictures and bond-force output
     std::vector<std::array<Index, 4>> cells;  // quads, counter-clockwise; empty for a chain
