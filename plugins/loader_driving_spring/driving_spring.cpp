@@ -55,9 +55,9 @@ NodeHeights sorted_heights(const Body& body, const NodeSet& set) {
 
 /// A uniform traction over h +- w/2: each node of the column takes the part of the patch its span
 /// (half the gaps to its neighbours either side, within the column) covers.
-std::vector<DrivingSpring::Attachment> spread(const DrivingSpring::Params& p, const NodeHeights& n) {
+std::vector<DrivingSpring::Attachment> spread(const DrivingSpring::Params& p, const NodeHeights& n, double tolerance) {
     const double low = p.height - p.patch / 2, high = p.height + p.patch / 2, top = n.heights.back();
-    if (low < 0 || high > top * (1 + 1e-9))
+    if (low < -tolerance || high > top + tolerance)
         throw InputError(
             fmt::format("driving_spring: patch = {:g} m around height = {:g} m reaches outside node set "
                         "'{}' (0 to {:g} m); make it at most {:g} m",
@@ -81,6 +81,9 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     if (n.nodes.size() == 1) {
         // A chain's trailing edge is one block: any h up to the slider's height drives it, without the
         // torque F_S h, which a 1D chain cannot carry.
+        if (p.patch > 0)
+            throw InputError("driving_spring: patch needs a column of nodes to spread over; node set '" + p.node_set +
+                             "' has one node (a chain's trailing block): remove patch");
         if (p.height > body.height * (1 + 1e-9))
             throw InputError(fmt::format("driving_spring: height = {:g} m is above the slider (height {:g} m)",
                                          p.height, body.height));
@@ -90,7 +93,7 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     if (p.height < -tolerance || p.height > n.heights.back() + tolerance)
         throw InputError(fmt::format("driving_spring: height = {:g} m is outside node set '{}' (0 to {:g} m)", p.height,
                                      p.node_set, n.heights.back()));
-    if (p.patch > 0) return spread(p, n);
+    if (p.patch > 0) return spread(p, n, tolerance);
     const auto above = std::lower_bound(n.heights.begin(), n.heights.end(), p.height - tolerance);
     const std::size_t k = std::min<std::size_t>(above - n.heights.begin(), n.heights.size() - 1);
     if (std::abs(n.heights[k] - p.height) <= tolerance) return {{n.nodes[k], 1.0}};

@@ -228,6 +228,8 @@ TEST(DrivingSpring, OnAChainDrivesTheTrailingBlockAtAnyHeightUpToTheSlidersHeigh
         EXPECT_EQ(spring.attachment()[0].weight, 1.0);
     }
     EXPECT_THROW(DrivingSpring(at_height(0.021), services.context(&chain.body())), InputError);
+    // One block has no column to spread a patch over: refused, not ignored.
+    EXPECT_THROW(DrivingSpring(over_patch(0.005, 0.0025), services.context(&chain.body())), InputError);
 }
 
 }  // namespace
