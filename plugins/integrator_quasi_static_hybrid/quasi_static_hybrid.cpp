@@ -185,7 +185,7 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     (creep ? statistics_.creep_time : statistics_.dynamic_time) += h;
     if (!creep) ++statistics_.dynamic_steps;
     if (calm_.check_due(system.time(), p_.check_interval)) {
-        if (may_turn_quiet(system)) {
+        if (may_turn_quiet(system, creep)) {
             quiet_ = true, ++statistics_.switches_to_quiet, short_steps_ = 0;
             log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
         }
@@ -202,13 +202,14 @@ bool QuasiStaticHybrid::creep_step(System& system, double max_dt) {
     return creeping_ && creep_.step(system, max_dt);
 }
 
-bool QuasiStaticHybrid::may_turn_quiet(System& system) {
+bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
     const double t = system.time();
     const Index n = system.layout().nodes;
     // With jumps: dynamic, the run turns quiet only when no clock runs.
     bool calm =
         system.quasi_static_regime(system.state()) && (p_.jumps != Jumps::dynamic || no_scheduled_event(system));
-    const auto velocities = system.y().segment(2 * n, 2 * n);
+    const Eigen::Ref<const Eigen::VectorXd> velocities =
+        after_creep ? creep_.mean_velocity(2 * n) : system.y().segment(2 * n, 2 * n);
     // While the lattice still rings far from the steady velocities of the last full check, the
     // static solves of a full check would only confirm it.
     if (calm && calm_.steady.size() == velocities.size() && ++calm_.checks_since_full < full_check_every &&

@@ -112,8 +112,9 @@ private:
     /// A creep step, if creep steps are on, every node is slow enough (with the hysteresis) and the
     /// creep stepper takes it; false (nothing done) for the explicit scheme to step.
     bool creep_step(System& system, double max_dt);
-    /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis).
-    bool may_turn_quiet(System& system);
+    /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis). After a
+    /// creep step (`after_creep`), the velocities judged are the step's mean ones.
+    bool may_turn_quiet(System& system, bool after_creep);
     /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
     bool quasi_static_state(System& system, double t);
     /// Whether the velocities (the dof after the dof positions) of `after` are within quiet_speed

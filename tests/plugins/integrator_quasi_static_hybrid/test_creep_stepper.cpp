@@ -122,6 +122,46 @@ TEST(CreepStepper, RefusesAStepThatWouldPassAClockAnObservationOrAForeseenThresh
     EXPECT_EQ(creep.counts().steps, 3);
 }
 
+/// K x + C v back to rest on x, K z on z: overdamped, with a fast mode at -C/m and a slow one at -K/C.
+class Overdamped final : public Effect {
+public:
+    static constexpr double K = 1e4, C = 2e4;  // N/m, N s/m (with m = 1 kg: rates 2e4 and 0.5 1/s)
+    std::string describe() const override { return "overdamped node"; }
+    void add_forces(const StageView& s, ForceView& f) override {
+        f.fx(0) -= K * s.x(0) + C * s.vx(0);
+        f.fz(0) -= K * s.z(0);
+    }
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const override {
+        stiffness.emplace_back(0, 0, K);
+        stiffness.emplace_back(1, 1, K);
+    }
+};
+
+TEST(CreepStepper, ItsMeanVelocityCancelsTheFlipOfAStiffMode) {
+    // Kicked to 1 mm/s, the node's fast mode dies within 0.2 ms; steps of 10 ms (a = h C/2m = 100)
+    // keep it, its end velocity flipping sign every step and shrinking only by (1 - a)/(1 + a): the
+    // rule is A- but not L-stable. The step's mean velocity (q1 - q0)/h = (v0 + v1)/2 cancels the
+    // flip but for 1/(1 + a) of it.
+    Body body = test_support::one_node(m);
+    System system(body, 0);
+    system.initial_state()(2) = 1e-3;
+    system.add_effect(std::make_unique<Overdamped>());
+    const double h = 1e-2, a = h * Overdamped::C / (2 * m);
+    CreepStepper creep({.step = h});
+    double previous = system.state().vx(0);
+    for (int i = 0; i < 10; ++i) {
+        ASSERT_TRUE(creep.step(system, infinity));
+        const double v = system.state().vx(0), mean = creep.mean_velocity(2)(0);
+        EXPECT_LT(v * previous, 0) << "the end velocity flips, step " << i;
+        EXPECT_NEAR(v / previous, -(a - 1) / (a + 1), 1e-3) << "and barely shrinks, step " << i;
+        EXPECT_NEAR(mean, (previous + v) / 2, 1e-9 * std::abs(v)) << "step " << i;
+        EXPECT_LT(std::abs(mean), 1.01 * std::abs(previous) / (1 + a)) << "step " << i;
+        EXPECT_EQ(creep.mean_velocity(2)(1), 0.0);
+        previous = v;
+    }
+}
+
 /// The explicit schemes the hybrid builds its dynamic phase from, as a run's registry holds them.
 const Registry& dynamic_schemes() {
     static Registry registry;
