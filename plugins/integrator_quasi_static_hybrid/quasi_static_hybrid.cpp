@@ -94,8 +94,8 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
              "them and gives each one's measured accuracy.");
     s.add("dt", &Params::dt, "Time step of the dynamic phase.").unit("s").greater_than(0);
     s.add("quiet_speed", &Params::quiet_speed,
-          "The dynamic phase may turn quiet while every node's velocity is within this of the quasi-static "
-          "steady velocity.")
+          "The dynamic phase may turn quiet while every node's velocity (after a creep step, its mean over the "
+          "step) is within this of the quasi-static steady velocity.")
         .unit("m/s")
         .greater_than(0);
     s.add("quiet_hold", &Params::quiet_hold,
