@@ -17,7 +17,6 @@
 namespace frictionlab {
 namespace {
 
-constexpr Index nodes = 3;
 constexpr double mass = 2.0;
 constexpr double rk4_radius = 2.785;  // any radius: the estimate divides it by lambda_max
 
@@ -27,7 +26,8 @@ constexpr double rk4_radius = 2.785;  // any radius: the estimate divides it by 
 class ChainBonds final : public Effect {
 public:
     enum Acting { on_positions, on_velocities };
-    ChainBonds(Acting acting, double coefficient) : acting_(acting), coefficient_(coefficient) {}
+    ChainBonds(Acting acting, double coefficient, Index nodes)
+        : acting_(acting), coefficient_(coefficient), nodes_(nodes) {}
     std::string describe() const override { return acting_ == on_positions ? "springs" : "dashpots"; }
     void add_forces(const StageView& s, ForceView& f) override {
         const bool velocities = acting_ == on_velocities;
@@ -37,11 +37,12 @@ public:
 
 private:
     void add(const Eigen::Map<const Eigen::ArrayXd>& u, Eigen::Map<Eigen::ArrayXd>& f) const {
-        for (Index i = 0; i < nodes; ++i)
-            f(i) -= coefficient_ * (2 * u(i) - (i > 0 ? u(i - 1) : 0.0) - (i + 1 < nodes ? u(i + 1) : 0.0));
+        for (Index i = 0; i < nodes_; ++i)
+            f(i) -= coefficient_ * (2 * u(i) - (i > 0 ? u(i - 1) : 0.0) - (i + 1 < nodes_ ? u(i + 1) : 0.0));
     }
     Acting acting_;
     double coefficient_;
+    Index nodes_;
 };
 
 /// -c vx on each mass: local in vx, as friction is, so an integrator implicit in that dependence
@@ -58,11 +59,12 @@ private:
     double c_;
 };
 
-/// The chain with springs k, dashpots c on its bonds and, if `base` > 0, base damping.
+/// The chain of `nodes` masses with springs k, dashpots c on its bonds and, if `base` > 0, base damping.
 struct Chain {
-    Chain(double k, double c, double base = 0) : system(body, 0) {
-        system.add_effect(std::make_unique<ChainBonds>(ChainBonds::on_positions, k));
-        if (c > 0) system.add_effect(std::make_unique<ChainBonds>(ChainBonds::on_velocities, c));
+    Chain(double k, double c, double base = 0, Index nodes = 3)
+        : body(testing::point_masses(nodes, mass)), system(body, 0) {
+        system.add_effect(std::make_unique<ChainBonds>(ChainBonds::on_positions, k, nodes));
+        if (c > 0) system.add_effect(std::make_unique<ChainBonds>(ChainBonds::on_velocities, c, nodes));
         if (base > 0) system.add_effect(std::make_unique<BaseDamping>(base));
         const double a = 4 * std::pow(std::sin(nodes * std::numbers::pi / (2 * (nodes + 1))), 2);  // a_N
         omega2 = k * a / mass;
@@ -73,7 +75,7 @@ struct Chain {
         const double discriminant = gamma * gamma - 4 * omega2;
         return discriminant >= 0 ? (gamma + std::sqrt(discriminant)) / 2 : std::sqrt(omega2);
     }
-    Body body = testing::point_masses(nodes, mass);
+    Body body;
     System system;
     double omega2, gamma;  // k a_N / m and c a_N / m
 };
@@ -91,8 +93,8 @@ TEST(Stability, AnOverdampedChainsLargestEigenvalueIsTheClosedForm) {
 TEST(Stability, AnUnderdampedChainsLargestEigenvalueIsItsStiffestFrequency) {
     Chain chain(5.0, 0.1);
     const StabilityEstimate e = estimate_stability(chain.system, rk4_radius);
-    // A complex pair: power iteration averages the growth of |A^k u| over 60 iterations, to within 2 %.
-    EXPECT_NEAR(e.lambda_max, chain.largest_eigenvalue(), 0.02 * chain.largest_eigenvalue());
+    // A complex pair: the Krylov subspace holds the whole 12-dimensional system, so it is exact.
+    EXPECT_NEAR(e.lambda_max, chain.largest_eigenvalue(), 1e-10 * chain.largest_eigenvalue());
     EXPECT_EQ(e.limiting_effect, "springs");
 }
 
@@ -104,7 +106,7 @@ TEST(Stability, AnIntegratorImplicitInLocalVelocityLeavesLocalDampingOut) {
     EXPECT_NEAR(explicit_scheme.limiting_lambda, 400.0 / mass, 1e-10 * 400.0 / mass);
     // Left out, what remains is the undamped chain: +-i sqrt(k a_N / m).
     const StabilityEstimate imex = estimate_stability(chain.system, rk4_radius, true);
-    EXPECT_NEAR(imex.lambda_max, std::sqrt(chain.omega2), 0.02 * std::sqrt(chain.omega2));
+    EXPECT_NEAR(imex.lambda_max, std::sqrt(chain.omega2), 1e-10 * std::sqrt(chain.omega2));
     EXPECT_EQ(imex.limiting_effect, "springs");
 }
 
@@ -129,10 +131,25 @@ TEST(Stability, TheStableStepOfSymplecticEulerIsTheClosedFormOfItsStepMap) {
         Chain chain(5.0, c);
         const double h = 4 / (chain.gamma + std::sqrt(chain.gamma * chain.gamma + 4 * chain.omega2));
         const StabilityEstimate e = estimate_stable_step(chain.system, SymplecticEuler());
-        // Bisected to 1e-3; power iteration near the limit, where the multiplier is just inside the
-        // circle, errs on the safe side.
+        // Bisected to 1e-3, the bracket's stable end reported.
         EXPECT_LE(e.dt_limit, h * (1 + 1e-5)) << "c = " << c;
         EXPECT_GE(e.dt_limit, h * (1 - 3e-3)) << "c = " << c;
+    }
+}
+
+TEST(Stability, TheEdgeOfADenseSpectrumIsResolved) {
+    // 400 masses: the stiffest modes lie ~5e-5 apart (relative), as the top of a fine lattice's
+    // spectrum does. Power iteration's growth put the underdamped chain's top 1.5 % high (the pair
+    // is not normal); the Ritz values resolve it, and the step map's limit is not claimed above the
+    // closed form. (tests/model holds the estimate to runs on a 161 x 33 lattice.)
+    for (const double c : {30.0, 0.1}) {
+        Chain chain(5.0, c, 0, 400);
+        const StabilityEstimate e = estimate_stability(chain.system, rk4_radius);
+        EXPECT_NEAR(e.lambda_max, chain.largest_eigenvalue(), 1e-3 * chain.largest_eigenvalue()) << "c = " << c;
+        const double h = 4 / (chain.gamma + std::sqrt(chain.gamma * chain.gamma + 4 * chain.omega2));
+        const StabilityEstimate step = estimate_stable_step(chain.system, SymplecticEuler());
+        EXPECT_LE(step.dt_limit, h * (1 + 1e-5)) << "c = " << c;
+        EXPECT_GE(step.dt_limit, h * (1 - 3e-3)) << "c = " << c;
     }
 }
 

@@ -1,7 +1,11 @@
 #include "frictionlab/simulation/stability.hpp"
 
 #include <cmath>
+#include <complex>
 #include <functional>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/simulation/system.hpp"
@@ -13,19 +17,39 @@ namespace {
 using Rate = std::function<void(const Eigen::VectorXd& y, Eigen::VectorXd& dy)>;
 using Map = std::function<void(const Eigen::VectorXd& u, Eigen::VectorXd& out)>;
 
-/// The growth factor per application of the linear map `apply` on its dominant eigenvector, from
-/// the growth of ||A^k u||: this also converges for a dominant complex pair, where the plain
-/// Rayleigh quotient oscillates. Non-finite if the map gives a non-finite vector.
+/// What iterating a linear map tells of its dominant eigenvalues.
+struct DominantSpectrum {
+    /// Power iteration's growth factor per application, from the growth of ||A^k u||: it also
+    /// converges for a dominant complex pair, where the plain Rayleigh quotient oscillates, but
+    /// only as 1/k where the top of the spectrum is nearly continuous. Non-finite if the map gives
+    /// a non-finite vector.
+    double growth = 0;
+    /// The Ritz values theta of a Krylov subspace started from power iteration's last vector, and
+    /// their residuals ||A z - theta z|| (||z|| = 1): theta is an eigenvalue of A perturbed by that
+    /// much, so for a normal A an eigenvalue lies within it.
+    Eigen::VectorXcd ritz;
+    Eigen::ArrayXd residual;
+    /// The largest |eigenvalue| the Ritz values vouch for: max |f(theta)| - |f'| residual over them,
+    /// for the eigenvalues f(theta) of a map A' with A = g(A') (f: the inverse of an affine g).
+    double vouched(std::complex<double> scale = 1.0, std::complex<double> offset = 0.0) const {
+        double largest = 0;
+        for (Index i = 0; i < ritz.size(); ++i)
+            largest = std::max(largest, std::abs(offset + scale * ritz(i)) - std::abs(scale) * residual(i));
+        return largest;
+    }
+};
+
+/// Power iteration, then Arnoldi (each new vector orthogonalised twice) from where it stopped.
 ///
-/// A fixed count, and a known limit of it: on a fine lattice the top of the spectrum is nearly
-/// continuous and the estimate creeps up as 1/k, so at 161 x 33 velocity Verlet's limit comes out
-/// 2 % above the runs' (2.53e-8 s against 2.48-2.5e-8 s). 1,000 iterations give 2.49e-8 s there, but
-/// on the step map G they also find growth at 41 x 9 that runs do not show (its settling limit
-/// falls from 4.02e-7 s to 9.3e-8 s, where runs at 4.02e-7 s settle), most likely the norm of an
-/// undamped mode swinging over thousands of steps. Restarted Arnoldi (Spectra) fails on the
-/// nilpotent Jacobian of a constant load and takes minutes on the step map at 161 x 33.
-double dominant_growth(const Map& apply, Index size) {
-    constexpr int iterations = 160, averaged = 60;
+/// Why both: on a fine lattice the top of the spectrum is nearly continuous, and power iteration's
+/// estimate creeps up only as 1/k there (160 iterations put velocity Verlet's limit at 161 x 33 2 %
+/// above the runs'); a Krylov subspace resolves such an edge far sooner. But Ritz values lie in the
+/// map's field of values, which for a non-normal map (a step map whose slow modes swing, positions
+/// and velocities on scales a frequency apart) reaches beyond its spectrum: a Ritz value counts
+/// only as far as its residual vouches for it (DominantSpectrum::vouched).
+DominantSpectrum dominant_spectrum(const Map& apply, Index size) {
+    constexpr int iterations = 160, averaged = 60, dimension = 40;
+    DominantSpectrum d;
     Eigen::VectorXd u(size), au(size);
     for (Index i = 0; i < size; ++i)
         u(i) = (i % 2 ? 1.0 : -1.0) * (1.0 + 0.37 * std::sin(1.3 * i));  // not an eigenvector
@@ -34,11 +58,52 @@ double dominant_growth(const Map& apply, Index size) {
     for (int k = 0; k < iterations; ++k) {
         apply(u, au);
         const double norm = au.norm();
-        if (!(norm > 0) || !std::isfinite(norm)) return std::isfinite(norm) ? 0.0 : norm;
+        if (!(norm > 0) || !std::isfinite(norm)) {
+            d.growth = std::isfinite(norm) ? 0.0 : norm;
+            return d;
+        }
         if (k >= iterations - averaged) log_growth += std::log(norm);
         u = au / norm;
     }
-    return std::exp(log_growth / averaged);
+    d.growth = std::exp(log_growth / averaged);
+
+    Eigen::MatrixXd basis(size, dimension + 1);
+    Eigen::MatrixXd hessenberg = Eigen::MatrixXd::Zero(dimension + 1, dimension);
+    basis.col(0) = u;
+    int m = dimension;
+    for (int j = 0; j < dimension; ++j) {
+        apply(basis.col(j), au);
+        if (!std::isfinite(au.norm())) {
+            d.growth = au.norm();
+            return d;
+        }
+        for (int pass = 0; pass < 2; ++pass) {
+            const Eigen::VectorXd h = basis.leftCols(j + 1).transpose() * au;
+            au -= basis.leftCols(j + 1) * h;
+            hessenberg.col(j).head(j + 1) += h;
+        }
+        const double beta = au.norm();
+        hessenberg(j + 1, j) = beta;
+        // The subspace is invariant (a map of low rank, a small system): its Ritz values are exact.
+        if (!(beta > 1e-12 * hessenberg.col(j).head(j + 1).norm())) {
+            m = j + 1;
+            break;
+        }
+        basis.col(j + 1) = au / beta;
+    }
+    // A Ritz pair (theta, V s) of the m-dimensional subspace has residual |h(m, m-1)| |s(m-1)| (||s|| = 1).
+    const Eigen::EigenSolver<Eigen::MatrixXd> ritz(hessenberg.topLeftCorner(m, m));
+    const double beta = m < dimension ? 0.0 : hessenberg(m, m - 1);
+    d.ritz = ritz.eigenvalues();
+    d.residual = beta * ritz.eigenvectors().row(m - 1).array().abs().transpose();
+    return d;
+}
+
+/// The largest |eigenvalue| of the linear map `apply`, as far as the Ritz values vouch for it
+/// (non-finite if the map gives a non-finite vector).
+double largest_modulus(const Map& apply, Index size) {
+    const DominantSpectrum d = dominant_spectrum(apply, size);
+    return std::isfinite(d.growth) ? d.vouched() : d.growth;
 }
 
 /// u -> J u for the Jacobian of `rate` at y0, by central finite differences.
@@ -57,25 +122,29 @@ Map jacobian_product(const Rate& rate, const Eigen::VectorXd& y0) {
 
 /// Largest |eigenvalue| of the Jacobian of `rate` at y0.
 double largest_eigenvalue(const Rate& rate, const Eigen::VectorXd& y0) {
-    return dominant_growth(jacobian_product(rate, y0), y0.size());
+    return largest_modulus(jacobian_product(rate, y0), y0.size());
 }
 
-/// Whether the scheme's linearised step G(h) has a multiplier beyond the unit circle, from power
-/// iteration on G and on (I - G)/2. Explicit schemes mostly lose stability where a multiplier passes
-/// through -1: (I - G)/2 keeps that one (|1 - mu|/2 = 1 at mu = -1, above 1 beyond) and damps the
-/// slow modes near mu = 1, which would otherwise hide it for hundreds of iterations; G itself
-/// catches a complex pair leaving the circle elsewhere (velocity Verlet with damping).
+/// Whether the scheme's linearised step G(h) has a multiplier beyond the unit circle: power
+/// iteration's growth or a Ritz value that its residual vouches for, of G and of (I - G)/2. Where a
+/// multiplier passes through -1 (symplectic Euler), (I - G)/2 makes it dominant (|1 - mu|/2 = 1 at
+/// mu = -1) and damps the slow modes near mu = 1, which would otherwise crowd it out of the
+/// subspace; G itself catches one leaving elsewhere (velocity Verlet under the lattice's bond
+/// damping: a real multiplier past +1).
 bool step_map_unstable(const Integrator& integrator, const Map& jacobian, double h, Index positions, Index size) {
+    constexpr double tolerance = 1 + 1e-6;
     Eigen::VectorXd g;
-    const auto growth = [&](double shift) {
-        return dominant_growth(
+    const auto unstable = [&](bool shifted) {
+        const DominantSpectrum d = dominant_spectrum(
             [&](const Eigen::VectorXd& u, Eigen::VectorXd& out) {
                 integrator.linearised_step(jacobian, h, positions, u, g);
-                out = shift == 0 ? g : Eigen::VectorXd(0.5 * (u - g));
+                out = shifted ? Eigen::VectorXd(0.5 * (u - g)) : g;
             },
             size);
+        // The multipliers are mu = 1 - 2 theta for the Ritz values theta of (I - G)/2.
+        return !(d.growth <= tolerance) || (shifted ? d.vouched(-2.0, 1.0) : d.vouched()) > tolerance;
     };
-    return !(growth(1) <= 1 + 1e-6) || !(growth(0) <= 1 + 1e-6);
+    return unstable(true) || unstable(false);
 }
 
 /// The pipeline linearised at the accepted state, as an integrator with the given implicitness sees

@@ -18,9 +18,10 @@ struct StabilityEstimate {
     double limiting_lambda = 0;   // that effect's own largest |eigenvalue|, 1/s
 };
 
-/// Power iteration on finite-difference Jacobian-vector products of derivative() (a few
-/// hundred force evaluations). The linearisation is exact for linear effects; for a nonlinear one
-/// (contact at its kink, rate-and-state) it is taken at the current state. With
+/// Power iteration, then the Ritz values of a Krylov subspace (Arnoldi), on finite-difference
+/// Jacobian-vector products of derivative() (a few hundred force evaluations). The linearisation
+/// is exact for linear effects; for a nonlinear one (contact at its kink, rate-and-state) it is
+/// taken at the current state. With
 /// implicit_local_velocity (an integrator that treats local velocity dependence implicitly, e.g.
 /// imex_euler), the velocity dependence of effects with a velocity Jacobian is left out: they are
 /// linearised at the current velocities, in their other variables only.
