@@ -81,6 +81,11 @@ double NormalLoad::foreseen_event_time(const StageView& s) const {
     return params_.ramp_time > 0 && ramp_end > s.t ? ramp_end : std::numeric_limits<double>::infinity();
 }
 
+double NormalLoad::load_ramp_end() const {
+    return started_ && params_.ramp_time > 0 ? ramp_start_ + params_.ramp_time
+                                             : -std::numeric_limits<double>::infinity();
+}
+
 void NormalLoad::add_forces(const StageView& s, ForceView& f) {
     const double r = ramp(s.t);
     if (first_ >= 0)  // the top row of the lattice: one vectorised pass

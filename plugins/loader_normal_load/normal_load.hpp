@@ -46,6 +46,7 @@ public:
     /// A prescribed force: no stiffness; the end of its ramp (a kink in time) is a foreseen event.
     bool quasi_static_regime(const StageView&) const override { return true; }
     double foreseen_event_time(const StageView& s) const override;
+    double load_ramp_end() const override;
 
     /// The full (un-ramped) load W_i on each node of the set, N, in set order.
     const Eigen::ArrayXd& weights() const { return weights_; }

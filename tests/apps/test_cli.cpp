@@ -350,6 +350,31 @@ TEST_F(Cli, CheckEstimatesTheStableStepOfEveryStage) {
     EXPECT_NE(run.output.find("stage 'load'"), std::string::npos) << run.output;
 }
 
+TEST_F(Cli, CheckAndRunRefuseASettleThatEndsBeforeItsLoadIsFull) {
+    // The normal load ramps up over 1e-4 s: a stage that must end at rest cannot end by then.
+    const fs::path file = scene("tiny_lattice.yaml");
+    const std::string settle = " --set stages[0].max_speed_at_end=1e-6 --set stages[0].duration=";
+    auto r = frictionlab("check " + file.string() + settle + "5e-5", dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    std::istringstream in(read_text(file));
+    std::string line, where;
+    for (int n = 1; where.empty() && std::getline(in, line); ++n)
+        if (line.find("name: settle") != std::string::npos)
+            where = file.string() + ":" + std::to_string(n) + ":" + std::to_string(line.find("name") + 1);
+    EXPECT_NE(r.output.find(where + ": error: stages[0]: stage 'settle' must end at rest (max_speed_at_end 1e-06 "
+                                    "m/s) at t = 5e-05 s, but the normal load 100 N"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("reaches its full value only at t = 0.0001 s"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("shorten the ramp"), std::string::npos) << "it names the fix: " << r.output;
+    // run refuses it before its first step, leaving no directory; past the ramp, check passes it.
+    auto run = frictionlab("run -q " + file.string() + settle + "5e-5 -o refused", dir_);
+    EXPECT_EQ(run.code, 2) << run.output;
+    EXPECT_NE(run.output.find("must end at rest"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(dir_ / "refused"));
+    EXPECT_EQ(frictionlab("check " + file.string() + settle + "2e-4", dir_).code, 0);
+}
+
 TEST_F(Cli, DashOMakesTheOutputKeyOptional) {
     std::string text = read_text(scene("tiny_lattice.yaml"));
     text.erase(text.find("output: tiny_out\n"), std::string("output: tiny_out\n").size());

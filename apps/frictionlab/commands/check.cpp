@@ -6,7 +6,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/campaign/file_kind.hpp"
 #include "frictionlab/simulation/run.hpp"
-#include "frictionlab/simulation/stable_step_check.hpp"
+#include "frictionlab/simulation/stage_start_check.hpp"
 #include "run_flags.hpp"
 #include "scene_input.hpp"
 #include "study.hpp"
@@ -39,7 +39,7 @@ int check(CheckOptions o, const Invocation& in) {
     const ResolvedChoices choices = check_scene_builds(*scene, registry, *in.global.checking_logger());
     Diagnostics diagnostics;
     std::vector<std::string> stable_steps;
-    check_stable_steps(*scene, registry, *in.global.checking_logger(), diagnostics, &stable_steps);
+    check_stage_starts(*scene, registry, *in.global.checking_logger(), diagnostics, &stable_steps);
     if (!diagnostics.empty()) return report_errors(diagnostics, o.file);
     std::cout << o.file.string() << ": ok\n";
     for (const auto& line : stable_steps) std::cout << "  " << line << "\n";

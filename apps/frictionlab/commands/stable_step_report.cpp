@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "frictionlab/base/scene_errors.hpp"
-#include "frictionlab/simulation/stable_step_check.hpp"
+#include "frictionlab/simulation/stage_start_check.hpp"
 
 namespace frictionlab::cli {
 
@@ -29,7 +29,7 @@ std::size_t report_stable_steps(const std::vector<std::pair<std::string, const S
     for (const auto& [name, scene] : runs) {
         Diagnostics found;
         try {
-            check_stable_steps(*scene, registry, *log, found);
+            check_stage_starts(*scene, registry, *log, found);
             above += found.empty() ? 0 : 1;
         } catch (const SceneErrors& e) {  // a component refuses the case's scene: every reason, named
             for (const auto& d : e.diagnostics().list()) found.error(d.where, d.key_path, d.message);

@@ -1,7 +1,8 @@
 #pragma once
-// The stable-step estimate `check` makes for a scene (stable_step_check.hpp), made for every run of
-// a campaign, each finding naming its run: a step above the stable one, or a component that refuses
-// the run's scene (a law that needs another integrator, an observer without the fields it reads).
+// The stable-step estimate `check` makes for a scene (stage_start_check.hpp), made for every run of
+// a campaign, each finding naming its run: a step above the stable one, a settling stage that ends
+// while its load still ramps up, or a component that refuses the run's scene (a law that needs
+// another integrator, an observer without the fields it reads).
 #include <cstddef>
 #include <string>
 #include <utility>

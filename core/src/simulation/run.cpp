@@ -62,10 +62,10 @@ public:
                         [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
             sim_.system().enable_work_accounting();
         check_checkpoints();
-        // The first stage is begun (its stable step judged) before anything is written, so that a
+        // The first stage is begun (its stable step and its end judged) before anything is written, so that a
         // run refused before its first step, like `check`, leaves no directory behind.
         if (!options.resume) {
-            last_stage_ = sim_.begin_stage(0);
+            last_stage_ = begin_stage(0);
             prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
         } else if (!created_by_frictionlab(output_))
             throw InputError(fmt::format("'{}' holds no run of FrictionLab to resume", output_.string()));
@@ -153,7 +153,7 @@ private:
             if (i > first || !options_.resume) {
                 if (i > 0) {
                     stop_if_asked(last_stage_);
-                    last_stage_ = sim_.begin_stage(i);
+                    last_stage_ = begin_stage(i);
                 }
                 if (i == 0)
                     for (auto& o : observers_) o.observer->begin(view(last_stage_));
@@ -183,6 +183,13 @@ private:
             progress.update(stage, sys.time(), sys.step_index());
             stop_if_asked(stage);
         }
+    }
+
+    /// Begins stage i; refuses it, as `check` does, if it must end at rest but a load still ramps up then.
+    StageInfo begin_stage(std::size_t i) {
+        const StageInfo stage = sim_.begin_stage(i);
+        if (const std::string why = sim_.cannot_end_at_rest(i); !why.empty()) throw InputError(why);
+        return stage;
     }
 
     /// Between whole steps only: the state, the observers and their files stay consistent.

@@ -229,6 +229,25 @@ void Simulation::check_stability(const StageInfo& stage) {
     log_.warn("{}", message);
 }
 
+std::string Simulation::cannot_end_at_rest(std::size_t index) const {
+    const StageSpec& spec = scene_.stages.at(index);
+    if (!std::isfinite(spec.max_speed_at_end)) return {};
+    double end = 0;
+    for (std::size_t i = 0; i <= index; ++i) end += scene_.stages[i].duration;
+    const std::vector<std::string> names = system_->pipeline();
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        const double ramp_end = system_->load_ramp_end(k);
+        if (ramp_end < end) continue;
+        return fmt::format(
+            "stage '{}' must end at rest (max_speed_at_end {:g} m/s) at t = {:g} s, but the {} reaches its full "
+            "value only at t = {:g} s, so the slider is still being pressed then. Make the stage last well beyond "
+            "the ramp (the slider needs time to calm after it: the shipped scenes settle for 8 ms after a 2 ms "
+            "ramp), or shorten the ramp",
+            spec.name, spec.max_speed_at_end, end, names[k], ramp_end);
+    }
+    return {};
+}
+
 double Simulation::step(double max_dt) {
     const double dt = integrator_->step(*system_, max_dt);
     if (!all_finite(system_->y().data(), system_->y().size()))

@@ -99,11 +99,12 @@ DominantSpectrum dominant_spectrum(const Map& apply, Index size) {
     return d;
 }
 
-/// The largest |eigenvalue| of the linear map `apply`, as far as the Ritz values vouch for it
-/// (non-finite if the map gives a non-finite vector).
+/// The largest |eigenvalue| of the linear map `apply`, as far as the Ritz values vouch for it;
+/// power iteration's growth if they vouch for none (non-finite if the map gives a non-finite vector).
 double largest_modulus(const Map& apply, Index size) {
     const DominantSpectrum d = dominant_spectrum(apply, size);
-    return std::isfinite(d.growth) ? d.vouched() : d.growth;
+    const double vouched = d.vouched();
+    return std::isfinite(d.growth) && vouched > 0 ? vouched : d.growth;
 }
 
 /// u -> J u for the Jacobian of `rate` at y0, by central finite differences.

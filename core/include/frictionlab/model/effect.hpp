@@ -51,6 +51,9 @@ public:
     virtual void commit(const StageView& /*end*/, double /*dt*/) {}
     /// Simulated time of the next scheduled discrete event, for adaptive steppers.
     virtual double next_event_time() const { return std::numeric_limits<double>::infinity(); }
+    /// When a load this effect applies gradually reaches its full value (known once its first stage
+    /// has begun); -infinity if it applies none so. A stage that must end at rest cannot end before.
+    virtual double load_ramp_end() const { return -std::numeric_limits<double>::infinity(); }
     /// Elastic energy this effect stores at a state (J): springs, contact, junctions, a loading
     /// spring. Energy bookkeeping compares it with the work the effect does (System work accounting);
     /// effects that store none (dashpots, prescribed forces) keep the default.

@@ -71,6 +71,10 @@ public:
     /// Makes stage `index`, begun at `t_start`, the current one again, for a run resumed within it
     /// (its effects and the system then restore their state from the checkpoint).
     StageInfo resume_stage(std::size_t index, double t_start);
+    /// Why stage `index`, once begun, cannot end at rest as its max_speed_at_end asks, or empty: a
+    /// load still ramping up at its end (Effect::load_ramp_end). Its end is the scene's, the sum of
+    /// the durations so far, so `check`, which steps nothing, judges it as `run` does.
+    std::string cannot_end_at_rest(std::size_t index) const;
     /// Whether begin_stage refuses a step above the estimated stable step (default) or only warns.
     void refuse_unstable_steps(bool refuse) { refuse_unstable_ = refuse; }
     /// One integrator step, no longer than max_dt. Throws RunError, naming the step, time, block

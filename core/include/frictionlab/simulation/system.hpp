@@ -86,6 +86,10 @@ public:
     bool has_velocity_jacobian(std::size_t active_index) const {
         return parts_.at(active_parts_.at(active_index))->has_velocity_jacobian();
     }
+    /// An active part's Effect::load_ramp_end() (index into pipeline()).
+    double load_ramp_end(std::size_t active_index) const {
+        return parts_.at(active_parts_.at(active_index))->load_ramp_end();
+    }
     /// Every integrator, before a step's evaluations: the effects freeze their discrete state.
     void begin_step();
     /// Every integrator, after a step: makes (t, y) the accepted state and lets every active effect

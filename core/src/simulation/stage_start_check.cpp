@@ -1,11 +1,11 @@
-#include "frictionlab/simulation/stable_step_check.hpp"
+#include "frictionlab/simulation/stage_start_check.hpp"
 
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/simulation/simulation.hpp"
 
 namespace frictionlab {
 
-void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics,
+void check_stage_starts(const Scene& scene, const Registry& registry, spdlog::logger& log, Diagnostics& diagnostics,
                         std::vector<std::string>* stable_steps) {
     const auto dt = scene.integrator.value_where.find("dt");
     const SourceLocation where = dt != scene.integrator.value_where.end() ? dt->second : scene.integrator.where;
@@ -17,14 +17,20 @@ void check_stable_steps(const Scene& scene, const Registry& registry, spdlog::lo
     for (std::size_t i = 1; i < at_start.stages.size(); ++i) at_start.stages[i].friction_events = false;
     Simulation simulation(at_start, registry, log);  // a component's refusal propagates, located
     simulation.refuse_unstable_steps(true);
-    try {
-        for (std::size_t i = 0; i < at_start.stages.size(); ++i) {
+    for (std::size_t i = 0; i < at_start.stages.size(); ++i) {
+        bool refused = false;
+        try {
             simulation.begin_stage(i);
             if (stable_steps)
                 stable_steps->push_back("stage '" + at_start.stages[i].name + "': " + simulation.stable_step_note());
+        } catch (const InputError& e) {
+            diagnostics.error(where, "integrator.dt", e.what());
+            refused = true;  // the later stages' estimates would most likely say the same
         }
-    } catch (const InputError& e) {
-        diagnostics.error(where, "integrator.dt", e.what());
+        const std::string cannot_rest = simulation.cannot_end_at_rest(i);
+        if (!cannot_rest.empty())
+            diagnostics.error(at_start.stages[i].where, "stages[" + std::to_string(i) + "]", cannot_rest);
+        if (refused) break;
     }
 }
 
