@@ -375,6 +375,29 @@ TEST_F(Cli, CheckAndRunRefuseASettleThatEndsBeforeItsLoadIsFull) {
     EXPECT_EQ(frictionlab("check " + file.string() + settle + "2e-4", dir_).code, 0);
 }
 
+TEST_F(Cli, ASettleThatEndsMovingSaysHowMuchLongerItNeeds) {
+    // After the 1e-4 s ramp the slider calms; 4e-4 s is not enough. The failure measures how fast its
+    // top speed fell since the stage's middle and says how much longer the stage needs at that rate.
+    const std::string settle = "run -q " + scene("tiny_lattice.yaml") + " --set stages[0].max_speed_at_end=1e-6";
+    auto short_settle = frictionlab(settle + " --set stages[0].duration=4e-4 -o short", dir_);
+    EXPECT_EQ(short_settle.code, 1) << short_settle.output;
+    const std::string says = "at that rate it needs about ";
+    const auto at = short_settle.output.find(says);
+    ASSERT_NE(at, std::string::npos) << short_settle.output;
+    const double more = std::stod(short_settle.output.substr(at + says.size()));
+    EXPECT_GT(more, 0);
+    // Settling that much longer, with a margin, ends at rest.
+    char duration[32];
+    std::snprintf(duration, sizeof duration, "%.3e", 4e-4 + 2 * more);
+    EXPECT_EQ(frictionlab(settle + " --set stages[0].duration=" + duration + " -o longer", dir_).code, 0) << duration;
+    // A drive pulling through the stage keeps the slider moving: more time would not help, and it says so.
+    auto driven =
+        frictionlab(settle + " --set stages[0].duration=4e-4 --set 'loaders[2].stages=[settle, load]' -o driven", dir_);
+    EXPECT_EQ(driven.code, 1) << driven.output;
+    EXPECT_NE(driven.output.find("did not fall"), std::string::npos) << driven.output;
+    EXPECT_NE(driven.output.find("a longer stage would not help"), std::string::npos) << driven.output;
+}
+
 TEST_F(Cli, DashOMakesTheOutputKeyOptional) {
     std::string text = read_text(scene("tiny_lattice.yaml"));
     text.erase(text.find("output: tiny_out\n"), std::string("output: tiny_out\n").size());

@@ -20,6 +20,7 @@
 #include "frictionlab/simulation/simulation.hpp"
 #include "frictionlab/simulation/system.hpp"
 #include "observer_slot.hpp"
+#include "calm_watch.hpp"
 #include "run_checkpoint.hpp"
 
 namespace frictionlab {
@@ -161,7 +162,7 @@ private:
             }
             progress.stage_started();
             run_stage(last_stage_, progress);
-            check_end_of_stage(scene_.stages[i]);
+            check_end_of_stage(scene_.stages[i], calm_);
         }
         progress.finish();
         observe_due(last_stage_, true);
@@ -170,6 +171,7 @@ private:
     void run_stage(const StageInfo& stage, ProgressLine& progress) {
         System& sys = sim_.system();
         const double t_end = stage.t_start + stage.duration;
+        calm_ = CalmWatch(sim_.calm_from(static_cast<std::size_t>(stage.index)));
         while (!sim_.reached(t_end)) {
             try {
                 double until = sim_.integrator().steps_to_observations() ? std::min(t_end, next_observation()) : t_end;
@@ -178,6 +180,7 @@ private:
             } catch (const RunError& e) {
                 throw RunError(fmt::format("stage '{}', {}", stage.name, e.what()));
             }
+            calm_.observe(sys.state());
             if (!observers_.empty()) observe_due(stage, false);
             if (checkpoint_due()) write_checkpoint();
             progress.update(stage, sys.time(), sys.step_index());
@@ -209,16 +212,19 @@ private:
         return next;
     }
 
-    void check_end_of_stage(const StageSpec& spec) {
+    void check_end_of_stage(const StageSpec& spec, const CalmWatch& calm) {
         if (!std::isfinite(spec.max_speed_at_end)) return;
         const StageView s = sim_.system().state();
         Index worst = 0;
-        const double speed = (s.vx.square() + s.vz.square()).sqrt().maxCoeff(&worst);
-        if (speed > spec.max_speed_at_end)
+        const double speed = top_speed(s, &worst);
+        if (speed > spec.max_speed_at_end) {
+            const std::string advice = calm.advice(s.t, speed, spec.max_speed_at_end);
             throw RunError(
                 fmt::format("stage '{}' ended at t = {:.9g} s with block {} moving at {:.3g} m/s, above "
-                            "its max_speed_at_end of {:.3g} m/s (settle longer or damp more)",
-                            spec.name, s.t, worst, speed, spec.max_speed_at_end));
+                            "its max_speed_at_end of {:.3g} m/s ({})",
+                            spec.name, s.t, worst, speed, spec.max_speed_at_end,
+                            advice.empty() ? "settle longer or damp more" : advice));
+        }
         log_.info("stage '{}' ended at rest: max speed {:.3g} m/s (limit {:.3g} m/s)", spec.name, speed,
                   spec.max_speed_at_end);
     }
@@ -333,6 +339,7 @@ private:
     std::filesystem::path output_;
     std::vector<ObserverSlot> observers_;  // after sim_: destroyed first
     StageInfo last_stage_;
+    CalmWatch calm_;         // of the stage running
     bool resuming_ = false;  // observers are being begun again on a resumed run
     bool checkpoints_possible_ = false;
     double next_checkpoint_time_ = 0;

@@ -1,8 +1,10 @@
 #include "frictionlab/simulation/simulation.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -229,11 +231,16 @@ void Simulation::check_stability(const StageInfo& stage) {
     log_.warn("{}", message);
 }
 
+double Simulation::stage_end(std::size_t index) const {
+    double end = 0;
+    for (std::size_t i = 0; i <= index; ++i) end += scene_.stages.at(i).duration;
+    return end;
+}
+
 std::string Simulation::cannot_end_at_rest(std::size_t index) const {
     const StageSpec& spec = scene_.stages.at(index);
     if (!std::isfinite(spec.max_speed_at_end)) return {};
-    double end = 0;
-    for (std::size_t i = 0; i <= index; ++i) end += scene_.stages[i].duration;
+    const double end = stage_end(index);
     const std::vector<std::string> names = system_->pipeline();
     for (std::size_t k = 0; k < names.size(); ++k) {
         const double ramp_end = system_->load_ramp_end(k);
@@ -246,6 +253,15 @@ std::string Simulation::cannot_end_at_rest(std::size_t index) const {
             spec.name, spec.max_speed_at_end, end, names[k], ramp_end);
     }
     return {};
+}
+
+double Simulation::calm_from(std::size_t index) const {
+    const StageSpec& spec = scene_.stages.at(index);
+    if (!std::isfinite(spec.max_speed_at_end)) return std::numeric_limits<double>::infinity();
+    double from = stage_end(index) - 0.5 * spec.duration;
+    const std::size_t effects = system_->pipeline().size();
+    for (std::size_t k = 0; k < effects; ++k) from = std::max(from, system_->load_ramp_end(k));
+    return from;
 }
 
 double Simulation::step(double max_dt) {

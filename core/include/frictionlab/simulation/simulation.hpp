@@ -75,6 +75,9 @@ public:
     /// load still ramping up at its end (Effect::load_ramp_end). Its end is the scene's, the sum of
     /// the durations so far, so `check`, which steps nothing, judges it as `run` does.
     std::string cannot_end_at_rest(std::size_t index) const;
+    /// From when stage `index`, begun, may show how fast it calms: past its middle and every load
+    /// ramp; +infinity if it need not end at rest.
+    double calm_from(std::size_t index) const;
     /// Whether begin_stage refuses a step above the estimated stable step (default) or only warns.
     void refuse_unstable_steps(bool refuse) { refuse_unstable_ = refuse; }
     /// One integrator step, no longer than max_dt. Throws RunError, naming the step, time, block
@@ -97,6 +100,8 @@ public:
     const std::string& stable_step_note() const { return stable_step_note_; }
 
 private:
+    /// Stage `index`'s end in the scene's time: the sum of the durations so far.
+    double stage_end(std::size_t index) const;
     void check_bounded() const;
     void check_step_count() const;
     /// Every field a component reads that no effect publishes, at the reader, with its remedy.
