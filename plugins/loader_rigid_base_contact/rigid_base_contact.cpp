@@ -47,6 +47,7 @@ RigidBaseContact::RigidBaseContact(const Params& p, const Context& ctx)
       first_(consecutive_start(nodes_)),
       z0_(ctx.body->z0(nodes_)),
       stiffness_(contact_stiffness_of(p, *ctx.body)),
+      touch_(1e-4 * ctx.body->spacing),
       normal_force_(ctx.quantities->field("normal_force", p.node_set, static_cast<Index>(nodes_.size()), "N",
                                           "Normal force P_b of the rigid base on each interface node (+z).")) {}
 
@@ -71,6 +72,14 @@ void RigidBaseContact::add_forces(const StageView& s, ForceView& f) {
         return;
     }
     for (std::size_t k = 0; k < nodes_.size(); ++k) f.fz(nodes_[k]) += normal_force_(k);
+}
+
+void RigidBaseContact::add_loaded_forces(const StageView& s, ForceView& f) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const double gap = s.z(nodes_[k]) - z0_(k);
+        normal_force_(k) = gap < touch_ ? -stiffness_ * gap : 0.0;
+        f.fz(nodes_[k]) += normal_force_(k);
+    }
 }
 
 void RigidBaseContact::commit(const StageView& end, double) { update_normal_force(end); }

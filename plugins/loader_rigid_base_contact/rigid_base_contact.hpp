@@ -39,6 +39,11 @@ public:
 
     std::string describe() const override;
     void add_forces(const StageView& s, ForceView& f) override;
+    /// As add_forces(), but a node touching the base (within 1e-4 of the lattice spacing of it,
+    /// beyond the stable-step estimate's finite differences and short of any load's compression) is
+    /// taken as pressed, on K_b's linear branch: linearised there, the contact counts whole, as it
+    /// will once the load presses it, not halved, as its kink would give.
+    void add_loaded_forces(const StageView& s, ForceView& f) override;
     void commit(const StageView& end, double dt) override;
     double potential_energy(const StageView& s) const override;
     /// Linear while the contact set stays: K_b on z of each node in contact. A node's contact
@@ -58,6 +63,7 @@ private:
     Index first_;        // the set's first node if its nodes are consecutive, else -1
     Eigen::ArrayXd z0_;  // reference heights of the set's nodes, m
     double stiffness_;   // K_b, N/m
+    double touch_;       // a node this close above the base touches it (add_loaded_forces), m
     Eigen::ArrayXd& normal_force_;
 };
 

@@ -159,6 +159,12 @@ public:
             any_implicit_ = any_implicit_ || implicit_.back();
         }
     }
+    /// The effects publish the quantities of the accepted state again, not those of the last
+    /// perturbed (and loaded) evaluation: a contact's normal force, which a friction law reads.
+    ~FrozenPipeline() { system_.refresh(); }
+    FrozenPipeline(const FrozenPipeline&) = delete;
+    FrozenPipeline& operator=(const FrozenPipeline&) = delete;
+
     const Eigen::VectorXd& y0() const { return y0_; }
     std::size_t effects() const { return implicit_.size(); }
 
@@ -166,19 +172,19 @@ public:
     /// sees the velocities of y0 instead: what is left is the part the explicit scheme must resolve.
     void effect_rate(std::size_t k, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
         if (!implicit_[k]) {
-            derivative(system_, t_, y, dy, Evaluation::outside_step(k));
+            derivative(system_, t_, y, dy, loaded(Evaluation::outside_step(k)));
             return;
         }
         frozen_ = y;
         frozen_.segment(2 * n_, n_) = y0_.segment(2 * n_, n_);
-        derivative(system_, t_, frozen_, dy, Evaluation::outside_step(k));
+        derivative(system_, t_, frozen_, dy, loaded(Evaluation::outside_step(k)));
         dy.head(2 * n_) = y.segment(2 * n_, 2 * n_);
     }
     /// The whole pipeline's dy/dt at y, effect by effect in its order (each reads what the earlier
     /// ones published) when some are frozen in velocity, else the whole derivative() at once.
     void rate(const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
         if (!any_implicit_) {
-            derivative(system_, t_, y, dy);
+            derivative(system_, t_, y, dy, loaded(Evaluation()));
             return;
         }
         const Index rest = y.size() - 2 * n_;
@@ -191,6 +197,12 @@ public:
     }
 
 private:
+    /// A contact touching its base is linearised pressed: the load presses it within steps.
+    static Evaluation loaded(Evaluation how) {
+        how.loaded = true;
+        return how;
+    }
+
     System& system_;
     const Eigen::VectorXd y0_;
     const double t_;

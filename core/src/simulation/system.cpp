@@ -58,16 +58,17 @@ void System::add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::Ve
     const StageView s = view_of(y, layout_, t);
     ForceView forces = forces_at(f.data(), layout_);
     const bool accounting = work_accounting() && how.work_weight != 0;
+    const auto add = [&](Effect& e) { how.loaded ? e.add_loaded_forces(s, forces) : e.add_forces(s, forces); };
     if (how.part) {
         const std::size_t k = active_parts_.at(*how.part);
         if (accounting) add_work(k, s, how.work_weight);
-        parts_[k]->add_forces(s, forces);
+        add(*parts_[k]);
     } else {
         for (const Slot* slot : active_) {
             if (accounting)
                 for (std::size_t k = slot->first_part; k < slot->first_part + slot->part_count; ++k)
                     add_work(k, s, how.work_weight);
-            slot->effect->add_forces(s, forces);
+            add(*slot->effect);
         }
     }
     if (how.counted) ++evaluations_;

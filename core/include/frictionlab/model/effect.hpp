@@ -43,6 +43,12 @@ public:
     /// alone, such as loads and friction, carry no stress between nodes).
     virtual void add_cell_virial(const StageView&, Eigen::Ref<Eigen::ArrayX3d> /*virial*/) const {}
 
+    /// add_forces(), except where s sits at a kink of the forces that the load will take the effect
+    /// across within steps (a contact touching its base, not yet pressed): there, the forces of the
+    /// side it is taken to, so that a linearisation at s sees the stiffness it will have. For the
+    /// stable-step estimate (Evaluation::loaded).
+    virtual void add_loaded_forces(const StageView& s, ForceView& f) { add_forces(s, f); }
+
     /// Called at the start of every stage of the run, before any step of it.
     virtual void begin_stage(const StageInfo&, const StageView&) {}
     /// Called before each integrator step with the accepted state the step starts from.

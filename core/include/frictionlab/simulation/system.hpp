@@ -28,6 +28,9 @@ struct Evaluation {
     /// One active part alone (index into pipeline()); unset: the whole pipeline, a composite in its
     /// one pass.
     std::optional<std::size_t> part;
+    /// Whether effects at a kink the load will take them across give the forces of the side it takes
+    /// them to (Effect::add_loaded_forces): the stable-step estimate's linearisation.
+    bool loaded = false;
 
     /// An evaluation of a time step, with its quadrature weight.
     static Evaluation weighted(double work_weight) {
