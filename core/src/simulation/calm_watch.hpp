@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frictionlab/model/state.hpp"
+#include "frictionlab/simulation/system.hpp"
 
 namespace frictionlab {
 
@@ -16,10 +17,10 @@ class CalmWatch {
 public:
     /// Samples the first state at or after `from` (s); +infinity: none (a stage free to end moving).
     explicit CalmWatch(double from = std::numeric_limits<double>::infinity()) : from_(from) {}
-    /// After each step.
-    void observe(const StageView& s) {
-        if (taken_ || s.t < from_) return;
-        t_ = s.t, speed_ = top_speed(s), taken_ = true;
+    /// After each step: the time alone, until the sample is due.
+    void observe(const System& system) {
+        if (taken_ || system.time() < from_) return;
+        t_ = system.time(), speed_ = top_speed(system.state()), taken_ = true;
     }
     /// For a stage that ended at t_end with top speed `speed`, above `limit`: at the rate its top
     /// speed fell since the sample, how much longer it needs; or that it did not fall. Empty

@@ -19,8 +19,8 @@
 #include "frictionlab/simulation/run_record.hpp"
 #include "frictionlab/simulation/simulation.hpp"
 #include "frictionlab/simulation/system.hpp"
-#include "observer_slot.hpp"
 #include "calm_watch.hpp"
+#include "observer_slot.hpp"
 #include "run_checkpoint.hpp"
 
 namespace frictionlab {
@@ -63,8 +63,8 @@ public:
                         [](const ObserverSlot& o) { return o.observer->needs_work_accounting(); }))
             sim_.system().enable_work_accounting();
         check_checkpoints();
-        // The first stage is begun (its stable step and its end judged) before anything is written, so that a
-        // run refused before its first step, like `check`, leaves no directory behind.
+        // The first stage is begun (its stable step and its end judged) before anything is written,
+        // so that a run refused before its first step, like `check`, leaves no directory behind.
         if (!options.resume) {
             last_stage_ = begin_stage(0);
             prepare_output_directory(scene.output_directory, options.overwrite, {scene.file});
@@ -180,7 +180,7 @@ private:
             } catch (const RunError& e) {
                 throw RunError(fmt::format("stage '{}', {}", stage.name, e.what()));
             }
-            calm_.observe(sys.state());
+            calm_.observe(sys);
             if (!observers_.empty()) observe_due(stage, false);
             if (checkpoint_due()) write_checkpoint();
             progress.update(stage, sys.time(), sys.step_index());

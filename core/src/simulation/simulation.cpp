@@ -237,31 +237,31 @@ double Simulation::stage_end(std::size_t index) const {
     return end;
 }
 
+std::pair<double, std::size_t> Simulation::latest_load_ramp_end() const {
+    std::pair<double, std::size_t> latest{-std::numeric_limits<double>::infinity(), 0};
+    const std::size_t effects = system_->pipeline().size();
+    for (std::size_t k = 0; k < effects; ++k) latest = std::max(latest, {system_->load_ramp_end(k), k});
+    return latest;
+}
+
 std::string Simulation::cannot_end_at_rest(std::size_t index) const {
     const StageSpec& spec = scene_.stages.at(index);
     if (!std::isfinite(spec.max_speed_at_end)) return {};
     const double end = stage_end(index);
-    const std::vector<std::string> names = system_->pipeline();
-    for (std::size_t k = 0; k < names.size(); ++k) {
-        const double ramp_end = system_->load_ramp_end(k);
-        if (ramp_end < end) continue;
-        return fmt::format(
-            "stage '{}' must end at rest (max_speed_at_end {:g} m/s) at t = {:g} s, but the {} reaches its full "
-            "value only at t = {:g} s, so the slider is still being pressed then. Make the stage last well beyond "
-            "the ramp (the slider needs time to calm after it: the shipped scenes settle for 8 ms after a 2 ms "
-            "ramp), or shorten the ramp",
-            spec.name, spec.max_speed_at_end, end, names[k], ramp_end);
-    }
-    return {};
+    const auto [ramp_end, effect] = latest_load_ramp_end();
+    if (ramp_end < end) return {};
+    return fmt::format(
+        "stage '{}' must end at rest (max_speed_at_end {:g} m/s) at t = {:g} s, but the {} reaches its full "
+        "value only at t = {:g} s, so the slider is still being pressed then. Make the stage last well beyond "
+        "the ramp (the slider needs time to calm after it: the shipped scenes settle for 8 ms after a 2 ms "
+        "ramp), or shorten the ramp",
+        spec.name, spec.max_speed_at_end, end, system_->pipeline().at(effect), ramp_end);
 }
 
 double Simulation::calm_from(std::size_t index) const {
     const StageSpec& spec = scene_.stages.at(index);
     if (!std::isfinite(spec.max_speed_at_end)) return std::numeric_limits<double>::infinity();
-    double from = stage_end(index) - 0.5 * spec.duration;
-    const std::size_t effects = system_->pipeline().size();
-    for (std::size_t k = 0; k < effects; ++k) from = std::max(from, system_->load_ramp_end(k));
-    return from;
+    return std::max(stage_end(index) - 0.5 * spec.duration, latest_load_ramp_end().first);
 }
 
 double Simulation::step(double max_dt) {

@@ -5,6 +5,7 @@
 // directly.
 #include <memory>
 #include <new>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -102,6 +103,9 @@ public:
 private:
     /// Stage `index`'s end in the scene's time: the sum of the durations so far.
     double stage_end(std::size_t index) const;
+    /// The latest Effect::load_ramp_end() of the active effects, and that effect's index in the
+    /// pipeline (-infinity if none ramps).
+    std::pair<double, std::size_t> latest_load_ramp_end() const;
     void check_bounded() const;
     void check_step_count() const;
     /// Every field a component reads that no effect publishes, at the reader, with its remedy.
