@@ -19,18 +19,17 @@ struct Bench {
         p.height = p.length / (nx - 1) * (nz - 1);
         lattice = std::make_unique<SpringLattice2d>(p, Context{log, 0, nullptr, &quantities, &aux, "bench"});
         effects = lattice->effects(Context{log, 0, &lattice->body(), &quantities, &aux, "bench"});
-        const Index n = lattice->body().size();
-        layout = {n, 0};
+        const Body& body = lattice->body();
+        layout = StateLayout(body.size(), body.dimension(), 0);
         y = Eigen::VectorXd::Zero(layout.size());
         dy = y;
         std::mt19937_64 rng(1);
         std::uniform_real_distribution<double> u(-1e-6, 1e-6);
-        for (Index i = 0; i < n; ++i) {
-            y(i) = lattice->body().x0(i) + u(rng);
-            y(n + i) = lattice->body().z0(i) + u(rng);
-            y(2 * n + i) = u(rng);
-            y(3 * n + i) = u(rng);
-        }
+        for (Index i = 0; i < body.size(); ++i)
+            for (int axis = 0; axis < body.dimension(); ++axis) {
+                y(layout.position_index(i, axis)) = body.reference_position(i, axis) + u(rng);
+                y(layout.velocity_index(i, axis)) = u(rng);
+            }
     }
 
     spdlog::logger log{"bench"};

@@ -21,15 +21,15 @@ constexpr double spacing = 2.5e-3, block_normal_force = 9.76, dt = 2e-7;
 
 struct Interface {
     Interface() : log("bench") {
-        body.x0 = Eigen::ArrayXd::LinSpaced(blocks, 0, spacing * (blocks - 1));
-        body.z0 = Eigen::ArrayXd::Zero(blocks);
+        body.reference_position = planar_positions(Eigen::ArrayXd::LinSpaced(blocks, 0, spacing * (blocks - 1)),
+                                                   Eigen::ArrayXd::Zero(blocks));
         body.mass = Eigen::ArrayXd::Constant(blocks, 3.2e-5);
         NodeSet interface;
         for (Index i = 0; i < blocks; ++i) interface.push_back(i);
         body.node_sets["interface"] = interface;
-        layout = {blocks, 0};
+        layout = StateLayout(blocks, 2, 0);
         y = Eigen::VectorXd::Zero(layout.size());
-        y.head(blocks) = body.x0.matrix();
+        layout.positions_along(y, 0) = body.x0().matrix();
         dy = Eigen::VectorXd::Zero(layout.size());
         normal = &quantities.field("normal_force", "interface", blocks, "N", "bench");
         Context ctx{log, 1, &body, &quantities, nullptr, "friction"};
@@ -40,7 +40,7 @@ struct Interface {
     StageView view() const { return view_of(y, layout, t); }
     void step_to(const Eigen::ArrayXd& x) {
         law->begin_step(view());
-        y.head(blocks) = x.matrix();
+        layout.positions_along(y, 0) = x.matrix();
         t += dt;
         law->commit(view(), dt);
     }
@@ -50,14 +50,14 @@ struct Interface {
         law->begin_stage({"settle", 0, 0, 1, false}, view());
         for (int n = 1; n <= 100; ++n) {
             normal->setConstant(block_normal_force * n / 100);
-            step_to(y.head(blocks).array() + 2e-9);
+            step_to(layout.positions_along(y, 0).array() + 2e-9);
         }
         law->begin_stage({"load", 1, t, 1, true}, view());
-        step_to(y.head(blocks).array());
+        step_to(layout.positions_along(y, 0).array());
     }
 
     /// Moves every block forward far enough to break nearly every junction.
-    void rupture() { step_to(y.head(blocks).array() + 2.5e-6); }
+    void rupture() { step_to(layout.positions_along(y, 0).array() + 2.5e-6); }
 
     spdlog::logger log;
     Body body;
@@ -101,11 +101,11 @@ BENCHMARK(BM_AddForcesRupture);
 /// begin_step + commit, the blocks oscillating by 1 nm so nothing changes state. Time is held, so a
 /// rupture stays a rupture for the whole measurement (every sliding clock is still judged).
 void commit(benchmark::State& state, Interface& s) {
-    const Eigen::ArrayXd at = s.y.head(blocks).array(), shifted = at + 1e-9;
+    const Eigen::ArrayXd at = s.layout.positions_along(s.y, 0).array(), shifted = at + 1e-9;
     int n = 0;
     for (auto _ : state) {
         s.law->begin_step(s.view());
-        s.y.head(blocks) = ((++n & 1) ? shifted : at).matrix();
+        s.layout.positions_along(s.y, 0) = ((++n & 1) ? shifted : at).matrix();
         s.law->commit(s.view(), dt);
         benchmark::DoNotOptimize(s.y.data());
     }

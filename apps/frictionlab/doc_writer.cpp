@@ -24,7 +24,8 @@ std::string library_of(const TypeInfo& t) {
 }
 
 std::string text(const TypeInfo& t) {
-    std::string out = fmt::format("{}/{}  ({})\n  {}\n", to_string(t.kind), t.type, library_of(t), t.summary);
+    std::string out = fmt::format("{}/{}  ({})\n  {}\n  dimensions: {}\n", to_string(t.kind), t.type, library_of(t),
+                                  t.summary, t.dimensions_text());
     std::size_t width = 4;
     for (const auto& p : t.params) width = std::max(width, p.key.size());
     for (const auto& p : t.params) {
@@ -37,8 +38,8 @@ std::string text(const TypeInfo& t) {
 }
 
 std::string markdown(const TypeInfo& t) {
-    std::string out = fmt::format("### `{}` ({})\n\n{}\n\nProvided by `{}`.\n\n", t.type, to_string(t.kind), t.summary,
-                                  library_of(t));
+    std::string out = fmt::format("### `{}` ({})\n\n{}\n\nProvided by `{}`. Dimensions: {}.\n\n", t.type,
+                                  to_string(t.kind), t.summary, library_of(t), t.dimensions_text());
     if (t.params.empty()) return out + "No parameters.\n\n";
     out += "| key | type | unit | default | constraints | meaning |\n|---|---|---|---|---|---|\n";
     for (const auto& p : t.params)
@@ -61,10 +62,9 @@ nlohmann::ordered_json json(const TypeInfo& t) {
         if (!p.choices.empty()) o["choices"] = p.choices;
         params.push_back(std::move(o));
     }
-    return {{"kind", to_string(t.kind)},
-            {"type", t.type},
-            {"library", library_of(t)},
-            {"summary", t.summary},
+    return {{"kind", to_string(t.kind)},  {"type", t.type},
+            {"library", library_of(t)},   {"summary", t.summary},
+            {"dimensions", t.dimensions}, {"dimension_limit", t.dimension_limit},
             {"params", std::move(params)}};
 }
 

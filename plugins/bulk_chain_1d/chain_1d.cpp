@@ -31,6 +31,7 @@ ParamSpec<Chain1d::Params> Chain1d::spec() {
         .unit("1")
         .at_least(0);
     s.rule("blocks", too_large);
+    s.dimensions({2}, "blocks moving in x and z, in a row along x");
     return s;
 }
 
@@ -44,8 +45,8 @@ std::string Chain1d::too_large(const Params& p) {
 Chain1d::Chain1d(const Params& p, const Context& ctx) {
     const Index n = spec().checked(p).blocks;
     const double a = p.length / (n - 1);
-    body_.x0 = Eigen::ArrayXd::LinSpaced(n, 0.0, p.length);
-    body_.z0 = Eigen::ArrayXd::Zero(n);
+    body_.reference_position = planar_positions(Eigen::ArrayXd::LinSpaced(n, 0.0, p.length), Eigen::ArrayXd::Zero(n));
+    body_.contact_frame = ContactFrame::horizontal_base(2);
     body_.mass = Eigen::ArrayXd::Constant(n, p.mass / n);
     body_.length = p.length;
     body_.height = p.height;

@@ -19,12 +19,13 @@ void ChainSprings::add_forces(const StageView& s, ForceView& f) {
     f.fx.tail(bonds) -= tension;
 }
 
-void ChainSprings::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+void ChainSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
     for (Index i = 0; i + 1 < nodes_; ++i) {
-        stiffness.emplace_back(i, i, stiffness_);
-        stiffness.emplace_back(i + 1, i + 1, stiffness_);
-        stiffness.emplace_back(i, i + 1, -stiffness_);
-        stiffness.emplace_back(i + 1, i, -stiffness_);
+        const Index a = s.position_index(i, 0), b = s.position_index(i + 1, 0);  // x of the two blocks
+        stiffness.emplace_back(a, a, stiffness_);
+        stiffness.emplace_back(b, b, stiffness_);
+        stiffness.emplace_back(a, b, -stiffness_);
+        stiffness.emplace_back(b, a, -stiffness_);
     }
 }
 

@@ -262,7 +262,6 @@ void LatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triple
     //     geometric     G = k (1 - l/r) I + k l / r^3 Delta Delta^T
     //     small strain  G = k e e^T
     // and K = -dF/dq takes +G on both nodes' diagonal blocks and -G on the coupling blocks.
-    const Index n = grid_.size();
     for (const BondFamily& b : families_) {
         const double k = stiffness_ * b.relative_stiffness, l = b.rest_length, inverse_l2 = 1 / (l * l);
         for (Index i = 0; i < b.count; ++i) {
@@ -278,7 +277,9 @@ void LatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triple
                 gxz = axial * dx * dz;
                 gzz = tension + axial * dz * dz;
             }
-            const Index dof[2][2] = {{i, n + i}, {j, n + j}};  // (x, z) of the from and to nodes
+            // (x, z) of the from and to nodes
+            const Index dof[2][2] = {{s.position_index(i, 0), s.position_index(i, 1)},
+                                     {s.position_index(j, 0), s.position_index(j, 1)}};
             const double g[2][2] = {{gxx, gxz}, {gxz, gzz}};
             for (int a = 0; a < 2; ++a)
                 for (int c = 0; c < 2; ++c)

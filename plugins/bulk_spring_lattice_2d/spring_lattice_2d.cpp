@@ -46,6 +46,7 @@ ParamSpec<SpringLattice2d::Params> SpringLattice2d::spec() {
              "configuration, cheaper, for small rotations only.");
     s.rule("nz", spacing_mismatch);
     s.rule("nx", too_large);
+    s.dimensions({2}, "a plane-stress lattice in x and z");
     return s;
 }
 
@@ -78,12 +79,12 @@ SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)
     : law_(spec().checked(p).springs), damping_mode_(p.damping_mode) {
     grid_ = {p.nx, p.nz, p.length / (p.nx - 1)};
     const Index n = grid_.size();
-    body_.x0.resize(n);
-    body_.z0.resize(n);
+    body_.reference_position.resize(n, 2);  // x, z
+    body_.contact_frame = ContactFrame::horizontal_base(2);
     for (Index iz = 0; iz < grid_.nz; ++iz)
         for (Index ix = 0; ix < grid_.nx; ++ix) {
-            body_.x0(grid_.node(ix, iz)) = ix * grid_.spacing;
-            body_.z0(grid_.node(ix, iz)) = iz * grid_.spacing;
+            body_.reference_position(grid_.node(ix, iz), 0) = ix * grid_.spacing;
+            body_.reference_position(grid_.node(ix, iz), 1) = iz * grid_.spacing;
         }
     const NodeScales scales = node_scales(p);
     body_.mass = Eigen::ArrayXd::Constant(n, scales.mass);

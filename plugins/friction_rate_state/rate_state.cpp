@@ -35,6 +35,7 @@ ParamSpec<RateState::Params> RateState::spec() {
              "State evolution: aging, dpsi/dt = (b v0/D_c)[exp((f0 - psi)/b) - |v|/v0]; or slip, "
              "dpsi/dt = -(|v|/D_c)(psi - psi_ss(v)).");
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
+    s.dimensions({2}, "x-velocity and x-force of each block, its velocity dependence implicit along x alone");
     return s;
 }
 

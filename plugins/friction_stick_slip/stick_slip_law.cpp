@@ -45,7 +45,7 @@ StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
     blocks_.resize(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         Block& b = blocks_[i];
-        b.x_start = b.anchor = ctx.body->x0[nodes_[i]];
+        b.x_start = b.anchor = ctx.body->x0()(nodes_[i]);
     }
 }
 
@@ -99,9 +99,11 @@ bool StickSlipLaw<Strength>::quasi_static_regime(const StageView&) const {
 }
 
 template <class Strength>
-void StickSlipLaw<Strength>::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
-    for (std::size_t k = 0; k < nodes_.size(); ++k)
-        if (blocks_[k].mode == Mode::stuck) stiffness.emplace_back(nodes_[k], nodes_[k], blocks_[k].stiffness);
+void StickSlipLaw<Strength>::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Index q = s.position_index(nodes_[k], 0);
+        if (blocks_[k].mode == Mode::stuck) stiffness.emplace_back(q, q, blocks_[k].stiffness);
+    }
 }
 
 template <class Strength>

@@ -109,6 +109,7 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     s.rule("initial_angle", angle_rule);
     s.rule("mu_d", order_rule);
+    s.dimensions({2}, "junction forces along x: the breaking test and the clamps order them on one axis");
     return s;
 }
 
@@ -152,8 +153,8 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
     const BlockJunctions::Constants c{p_, k_s_, params.mu_d};
     blocks_.reserve(nodes_.size());
     for (Index node : nodes_) {
-        blocks_.emplace_back(c, initial_capacity, ctx.body->x0[node]);
-        x_start_.push_back(ctx.body->x0[node]);
+        blocks_.emplace_back(c, initial_capacity, ctx.body->x0()[node]);
+        x_start_.push_back(ctx.body->x0()[node]);
     }
     removal_draws_.assign(nodes_.size(), 0);
     normal_rate_ = rate_base_ = normal_ = Eigen::VectorXd::Zero(static_cast<Index>(nodes_.size()));
@@ -200,7 +201,8 @@ void ThreeStateJunctions::add_stiffness(const StageView& s, std::vector<Eigen::T
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         const BlockJunctions& b = blocks_[i];
         const Index elastic = b.pinned() + b.elastic_active(s.x[nodes_[i]] - x_start_[i]);
-        if (elastic > 0) stiffness.emplace_back(nodes_[i], nodes_[i], static_cast<double>(elastic) * k_s_);
+        const Index q = s.position_index(nodes_[i], 0);
+        if (elastic > 0) stiffness.emplace_back(q, q, static_cast<double>(elastic) * k_s_);
     }
 }
 

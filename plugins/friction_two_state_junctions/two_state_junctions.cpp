@@ -52,6 +52,7 @@ ParamSpec<Params> TwoStateJunctions::spec() {
         .at_least(0);
     s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
     s.rule("mu_d", order_rule);
+    s.dimensions({2}, "junction forces along x: the breaking test orders them on one axis");
     return s;
 }
 
@@ -86,7 +87,7 @@ TwoStateJunctions::TwoStateJunctions(const Params& params, const Context& ctx)
         b.pinned = n_s_;
         b.next_deadline = infinity;
         b.k = k_bar_;
-        b.x_c = ctx.body->x0[nodes_[i]];
+        b.x_c = ctx.body->x0()[nodes_[i]];
     }
 }
 
@@ -118,10 +119,11 @@ void TwoStateJunctions::add_forces(const StageView& s, ForceView& f) {
     }
 }
 
-void TwoStateJunctions::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
-    for (std::size_t k = 0; k < nodes_.size(); ++k)
-        if (blocks_[k].pinned > 0)
-            stiffness.emplace_back(nodes_[k], nodes_[k], static_cast<double>(blocks_[k].pinned) * blocks_[k].k);
+void TwoStateJunctions::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Index q = s.position_index(nodes_[k], 0);
+        if (blocks_[k].pinned > 0) stiffness.emplace_back(q, q, static_cast<double>(blocks_[k].pinned) * blocks_[k].k);
+    }
 }
 
 double TwoStateJunctions::foreseen_event_time(const StageView& s) const {

@@ -84,6 +84,7 @@ ParamSpec<Params> DormandPrince::spec() {
         .less_than(1);
     s.rule("dt_min", dt_min_rule);
     s.rule("initial_step", initial_step_rule);
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -119,8 +120,7 @@ void DormandPrince::attempt(System& system, double h) {
 double DormandPrince::step(System& system, double max_dt) {
     if (!norm_) {
         const StateLayout& layout = system.layout();
-        Eigen::VectorXd reference(2 * layout.nodes);
-        reference << system.body().x0.matrix(), system.body().z0.matrix();
+        const Eigen::VectorXd reference = system.body().reference_position.reshaped().matrix();
         norm_.emplace(ErrorNorm::Tolerances{p_.rtol, p_.atol_position, p_.atol_velocity, p_.atol_aux}, layout,
                       reference);
         for (auto* v : {&k_[0], &k_[1], &k_[2], &k_[3], &k_[4], &k_[5], &k_[6], &stage_, &y1_, &err_})

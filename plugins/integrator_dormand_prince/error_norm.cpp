@@ -28,23 +28,26 @@ ErrorNorm::Result ErrorNorm::operator()(const Eigen::VectorXd& error, const Eige
         while (std::isfinite(error(i))) ++i;
         return {std::numeric_limits<double>::infinity(), i};
     }
-    const Index positions = 2 * layout_.nodes, aux = layout_.aux;
-    const Result parts[] = {part_norm(error.head(positions), y0.head(positions) - reference_,
-                                      y1.head(positions) - reference_, tol_.atol_position, tol_.rtol),
-                            part_norm(error.segment(positions, positions), y0.segment(positions, positions),
-                                      y1.segment(positions, positions), tol_.atol_velocity, tol_.rtol),
-                            part_norm(error.tail(aux), y0.tail(aux), y1.tail(aux), tol_.atol_aux, tol_.rtol)};
+    const StateLayout& l = layout_;
+    const Result parts[] = {
+        part_norm(l.positions(error), l.positions(y0) - reference_, l.positions(y1) - reference_, tol_.atol_position,
+                  tol_.rtol),
+        part_norm(l.velocities(error), l.velocities(y0), l.velocities(y1), tol_.atol_velocity, tol_.rtol),
+        part_norm(l.aux_variables(error), l.aux_variables(y0), l.aux_variables(y1), tol_.atol_aux, tol_.rtol)};
+    const Index starts[] = {0, l.velocity_start(), l.aux_start()};
     Result worst{-1, 0};
     for (int k = 0; k < 3; ++k)
-        if (parts[k].value > worst.value) worst = {parts[k].value, parts[k].worst + k * positions};
+        if (parts[k].value > worst.value) worst = {parts[k].value, parts[k].worst + starts[k]};
     return worst;
 }
 
 std::string component_name(const StateLayout& layout, Index i) {
-    const Index n = layout.nodes;
-    if (i >= 4 * n) return fmt::format("auxiliary variable {}", i - 4 * n);
-    static constexpr const char* names[] = {"x", "z", "vx", "vz"};
-    return fmt::format("{} of block {}", names[i / n], i % n);
+    if (i >= layout.aux_start()) return fmt::format("auxiliary variable {}", i - layout.aux_start());
+    const bool velocity = i >= layout.velocity_start();
+    const Index entry = velocity ? i - layout.velocity_start() : i;
+    const int axis = static_cast<int>(entry / layout.nodes);
+    return fmt::format("{}{} of block {}", velocity ? "v" : "", axis_name(axis, layout.dimension),
+                       entry % layout.nodes);
 }
 
 }  // namespace frictionlab

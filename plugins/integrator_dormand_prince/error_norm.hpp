@@ -8,7 +8,7 @@ namespace frictionlab {
 /// The size of an embedded error estimate e (one entry per entry of y) relative to its tolerance,
 /// in the max norm: err = max_i |e_i| / sc_i, with the step accepted when err <= 1, and
 ///
-///     positions x, z   sc_i = atol_position + rtol * max(|u_i(t)|, |u_i(t + h)|),  u = y - reference position
+///     positions        sc_i = atol_position + rtol * max(|u_i(t)|, |u_i(t + h)|),  u = y - reference position
 ///     velocities       sc_i = atol_velocity + rtol * max(|v_i(t)|, |v_i(t + h)|)
 ///     aux variables    sc_i = atol_aux      + rtol * max(|a_i(t)|, |a_i(t + h)|)
 ///
@@ -34,7 +34,7 @@ public:
 private:
     Tolerances tol_;
     StateLayout layout_;
-    Eigen::VectorXd reference_;  // [x0 | z0], m
+    Eigen::VectorXd reference_;  // the reference positions laid out as y's, m
 };
 
 /// Names entry i of y in the physics' terms: "vx of block 12", "auxiliary variable 3".

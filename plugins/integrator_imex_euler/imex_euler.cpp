@@ -40,8 +40,7 @@ double ImexEuler::step(System& system, double max_dt) {
     const Eigen::VectorXd& y = system.y();
     if (next_.size() != y.size())
         for (auto* v : {&rate_, &next_, &trial_}) v->resize(y.size());
-    // y = [positions (2n) | velocities (2n) | aux (K)].
-    const Index p = 2 * system.layout().nodes;
+    const Index p = system.layout().dof();  // y = [positions (p) | velocities (p) | aux]
 
     system.begin_step();
     derivative(system, t, y, rate_, Evaluation::weighted(h));
@@ -54,10 +53,11 @@ double ImexEuler::step(System& system, double max_dt) {
 }
 
 void ImexEuler::solve_velocity(System& system, double t, double h) {
-    const Index n = system.layout().nodes;
+    const StateLayout& layout = system.layout();
+    const Index n = layout.nodes;
     const Eigen::ArrayXd& mass = system.body().mass;
-    const auto v_start = system.y().segment(2 * n, n).array();
-    auto v_explicit = next_.segment(2 * n, n).array();  // vx_n + h F/m, replaced by the solution
+    const auto v_start = layout.velocities_along(system.y(), 0).array();
+    auto v_explicit = layout.velocities_along(next_, 0).array();  // vx_n + h F/m, replaced by the solution
     // G(v) = v - v_explicit - (h/m)(F_L(v) - F_L(vx_n)) increases with v (G' = 1 - (h/m) J >= 1);
     // its root lies between vx_n, where G = vx_n - v_explicit, and v_explicit, where G >= 0 side.
     low_ = v_start.min(v_explicit);
@@ -65,7 +65,7 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
     v_ = v_start + (v_explicit - v_start) / (1 - h * jacobian0_ / mass);  // linearly implicit first guess
     trial_ = system.y();
     for (int iteration = 0;; ++iteration) {
-        trial_.segment(2 * n, n) = v_.matrix();
+        layout.velocities_along(trial_, 0) = v_.matrix();
         system.local_velocity_forces(t, trial_, force_, jacobian_);
         Index unconverged = -1;
         for (Index i = 0; i < n; ++i) {

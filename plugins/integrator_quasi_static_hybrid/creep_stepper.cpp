@@ -17,16 +17,17 @@ constexpr double contraction = 0.5;
 }  // namespace
 
 void CreepStepper::probe_damping(System& system, double t, const Eigen::VectorXd& y) {
-    const Index dof = 2 * system.layout().nodes;
+    const StateLayout& layout = system.layout();
+    const Index dof = layout.dof();
     Eigen::VectorXd probe = y;
-    probe.segment(dof, dof).setZero();
+    layout.velocities(probe).setZero();
     node_forces(system, t, probe, all_forces_, forces_);
     const Eigen::VectorXd at_rest = forces_;
     std::vector<Eigen::Triplet<double>> entries;
     for (Index j = 0; j < dof; ++j) {
-        probe[dof + j] = probe_speed;
+        layout.velocities(probe)[j] = probe_speed;
         node_forces(system, t, probe, all_forces_, forces_);
-        probe[dof + j] = 0;
+        layout.velocities(probe)[j] = 0;
         for (Index i = 0; i < dof; ++i)
             if (forces_[i] != at_rest[i]) entries.emplace_back(i, j, -(forces_[i] - at_rest[i]) / probe_speed);
     }
@@ -35,7 +36,7 @@ void CreepStepper::probe_damping(System& system, double t, const Eigen::VectorXd
 }
 
 bool CreepStepper::refactorise(System& system) {
-    const Index dof = 2 * system.layout().nodes;
+    const Index dof = system.layout().dof();
     const double h = s_.step;
     system.assemble_stiffness(system.state(), jacobian_);
     jacobian_ += (2 / h) * damping_;
@@ -49,16 +50,16 @@ bool CreepStepper::refactorise(System& system) {
 }
 
 bool CreepStepper::newton(System& system, double t1) {
-    const Index dof = 2 * system.layout().nodes;
+    const StateLayout& layout = system.layout();
     const double h = t1 - system.time();
-    const auto v0 = y0_.segment(dof, dof);
+    const auto v0 = layout.velocities(y0_);
     y1_ = y0_;
-    y1_.head(dof) += h * v0 + (h * h / 2) * a0_;  // the predictor: constant acceleration
+    layout.positions(y1_) += h * v0 + (h * h / 2) * a0_;  // the predictor: constant acceleration
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < s_.max_iterations; ++it) {
         ++counts_.iterations;
-        dq_ = y1_.head(dof) - y0_.head(dof);
-        y1_.segment(dof, dof) = (2 / h) * dq_ - v0;
+        dq_ = layout.positions(y1_) - layout.positions(y0_);
+        layout.velocities(y1_) = (2 / h) * dq_ - v0;
         node_forces(system, t1, y1_, all_forces_, forces_);
         // F(q1, v1) - M a1 with a1 = 4 dq / h^2 - 4 v0 / h - a0.
         residual_ = forces_ - (mass_ * ((4 / (h * h)) * dq_ - (4 / h) * v0 - a0_).array()).matrix();
@@ -69,7 +70,7 @@ bool CreepStepper::newton(System& system, double t1) {
         dq_ = ldlt_.solve(residual_);
         const double size = dq_.lpNorm<Eigen::Infinity>();
         if (!std::isfinite(size) || size > contraction * previous) return false;
-        y1_.head(dof) += dq_;
+        layout.positions(y1_) += dq_;
         previous = size;
     }
     return false;
@@ -77,7 +78,6 @@ bool CreepStepper::newton(System& system, double t1) {
 
 bool CreepStepper::step(System& system, double max_dt) {
     const StateLayout& layout = system.layout();
-    const Index dof = 2 * layout.nodes;
     const double t0 = system.time();
     if (t0 < blocked_until_ || layout.aux > 0) return false;
     // The step ends on what it may not pass: the next observation, the stage's end, a junction clock.
@@ -89,8 +89,8 @@ bool CreepStepper::step(System& system, double max_dt) {
     if (system.foreseen_event_time(start) < t1 + s_.event_overshoot || !system.quasi_static_regime(start)) return false;
     y0_ = system.y();
     system.begin_step();  // the effects' step-start references for the evaluations of the step
-    if (mass_.size() != dof) mass_ = system.body().mass.replicate(2, 1);
-    if (damping_.rows() != dof) probe_damping(system, t0, y0_);
+    if (mass_.size() != layout.dof()) mass_ = system.body().mass.replicate(layout.dimension, 1);
+    if (damping_.rows() != layout.dof()) probe_damping(system, t0, y0_);
     node_forces(system, t0, y0_, all_forces_, forces_);
     a0_ = (forces_.array() / mass_).matrix();
     // A kept J that made the last step slow, or one that no longer contracts, is renewed at this state.
@@ -99,7 +99,7 @@ bool CreepStepper::step(System& system, double max_dt) {
     // The step's mean velocity may foresee an event within it that the start's did not: the
     // explicit scheme takes the span to it.
     chord_ = y0_;
-    chord_.segment(dof, dof) = (y1_.head(dof) - y0_.head(dof)) / h;
+    layout.velocities(chord_) = (layout.positions(y1_) - layout.positions(y0_)) / h;
     const double foreseen = system.foreseen_event_time(view_of(chord_, layout, t0));
     if (foreseen < t1 + s_.event_overshoot) {
         blocked_until_ = foreseen;

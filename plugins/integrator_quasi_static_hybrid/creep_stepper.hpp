@@ -45,11 +45,13 @@ public:
     /// system has aux variables (their ODEs are the explicit scheme's), or Newton does not converge.
     bool step(System& system, double max_dt);
     const Counts& counts() const { return counts_; }
-    /// The mean velocity (q1 - q0)/h = (v0 + v1)/2 of the step just accepted, of `dof` degrees of
-    /// freedom. The trapezoidal rule is A- but not L-stable: a stiff mode's end velocity keeps
+    /// The mean velocity (q1 - q0)/h = (v0 + v1)/2 of the step just accepted, laid out as the
+    /// velocities of the state. The trapezoidal rule is A- but not L-stable: a stiff mode's end velocity keeps
     /// flipping sign from step to step, at the size Newton's tolerance leaves in it (~1e-6 m/s on a
     /// 161 x 33 lattice), long after the physical mode died. The mean keeps 1/(1 + h lambda/2) of it.
-    Eigen::VectorBlock<const Eigen::VectorXd> mean_velocity(Index dof) const { return chord_.segment(dof, dof); }
+    Eigen::VectorBlock<const Eigen::VectorXd> mean_velocity(const StateLayout& layout) const {
+        return layout.velocities(chord_);
+    }
 
     /// Checkpoints: the matrices J was made from (restoring factorises it again: the same factors).
     template <class Archive>

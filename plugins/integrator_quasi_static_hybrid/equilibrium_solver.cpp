@@ -29,8 +29,8 @@ bool EquilibriumSolver::refactorise(System& system, double t, const Eigen::Vecto
 
 bool EquilibriumSolver::equilibrium(System& system, double t, Eigen::VectorXd& y) {
     ++counts_.solves;
-    const Index dof = 2 * system.layout().nodes;
-    guess_ = y.head(dof);
+    const StateLayout& layout = system.layout();
+    guess_ = layout.positions(y);
     // A kept K that made the last solve slow is renewed first.
     if (stale_ && !refactorise(system, t, y)) return false;
     if (factorised_ && newton(system, t, y)) return true;
@@ -39,12 +39,12 @@ bool EquilibriumSolver::equilibrium(System& system, double t, Eigen::VectorXd& y
     // times (each renewal takes the branches of the iterate reached).
     for (int renewal = 0; renewal < max_renewals; ++renewal)
         if (refactorise(system, t, y) && newton(system, t, y)) return true;
-    y.head(dof) = guess_;
+    layout.positions(y) = guess_;
     return false;
 }
 
 bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
-    const Index dof = 2 * system.layout().nodes;
+    const StateLayout& layout = system.layout();
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < s_.max_iterations; ++it) {
         ++counts_.iterations;
@@ -53,7 +53,7 @@ bool EquilibriumSolver::newton(System& system, double t, Eigen::VectorXd& y) {
         const double size = dq_.lpNorm<Eigen::Infinity>();
         // Not contracting (a K far off, a contact flipping in and out): give up rather than wander.
         if (!std::isfinite(size) || size > contraction * previous) return false;
-        y.head(dof) += dq_;
+        layout.positions(y) += dq_;
         if (size <= s_.position_tolerance) {
             stale_ = stale_ || it >= s_.slow_after;
             return true;
@@ -91,8 +91,8 @@ bool EquilibriumSolver::steady_velocity_within(System& system, double t, Eigen::
 }
 
 bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::VectorXd& y, double absolute) {
-    const Index dof = 2 * system.layout().nodes;
-    Eigen::Ref<Eigen::VectorXd> v = y.segment(dof, dof);
+    const StateLayout& layout = system.layout();
+    Eigen::Ref<Eigen::VectorXd> v = layout.velocities(y);
     v = ldlt_.solve(rhs_);
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < s_.max_iterations; ++it) {
@@ -103,9 +103,9 @@ bool EquilibriumSolver::refined_velocity(System& system, double t, Eigen::Vector
         // e giving a displacement of probe_displacement: K v to second order in e.
         const double e = s_.probe_displacement / speed;
         probe_ = y;
-        probe_.head(dof) += e * v;
+        layout.positions(probe_) += e * v;
         node_forces(system, t, probe_, all_forces_, kv_);
-        probe_.head(dof) -= (2 * e) * v;
+        layout.positions(probe_) -= (2 * e) * v;
         node_forces(system, t, probe_, all_forces_, later_);
         kv_ = (later_ - kv_) / (2 * e);
         residual_ = rhs_ - kv_;

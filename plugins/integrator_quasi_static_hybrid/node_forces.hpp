@@ -10,11 +10,11 @@ namespace frictionlab {
 /// a time step: not a cost of the stepping, no work.
 inline void node_forces(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& all,
                         Eigen::VectorXd& out) {
-    const Index dof = 2 * system.layout().nodes;
-    all.resize(system.layout().size() - dof);
+    const StateLayout& layout = system.layout();
+    all.resize(layout.force_size());
     all.setZero();
     system.add_forces(t, y, all, Evaluation::outside_step());
-    out = all.head(dof);
+    out = all.head(layout.dof());  // [forces | aux rates]: the forces
 }
 
 }  // namespace frictionlab

@@ -131,6 +131,7 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
         .greater_than(0);
     s.rule("quiet_hold", hold_rule);
     s.rule("creep_step", creep_rule);
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -196,20 +197,19 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
 
 bool QuasiStaticHybrid::creep_step(System& system, double max_dt) {
     if (p_.creep_step == 0) return false;
-    const Index n = system.layout().nodes;
-    const double speed = system.y().segment(2 * n, 2 * n).lpNorm<Eigen::Infinity>();
+    const double speed = system.layout().velocities(system.y()).lpNorm<Eigen::Infinity>();
     creeping_ = speed <= (creeping_ ? 1 : creep_resume) * p_.creep_speed;
     return creeping_ && creep_.step(system, max_dt);
 }
 
 bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
     const double t = system.time();
-    const Index n = system.layout().nodes;
+    const StateLayout& layout = system.layout();
     // With jumps: dynamic, the run turns quiet only when no clock runs.
     bool calm =
         system.quasi_static_regime(system.state()) && (p_.jumps != Jumps::dynamic || no_scheduled_event(system));
     const Eigen::Ref<const Eigen::VectorXd> velocities =
-        after_creep ? creep_.mean_velocity(2 * n) : system.y().segment(2 * n, 2 * n);
+        after_creep ? creep_.mean_velocity(layout) : layout.velocities(system.y());
     // While the lattice still rings far from the steady velocities of the last full check, the
     // static solves of a full check would only confirm it.
     if (calm && calm_.steady.size() == velocities.size() && ++calm_.checks_since_full < full_check_every &&
@@ -221,7 +221,7 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
         calm_.checks_since_full = 0;
         y_ = system.y();
         if (solver_.steady_velocity_within(system, t, y_, check_accuracy * p_.quiet_speed)) {
-            calm_.steady = y_.segment(2 * n, 2 * n);
+            calm_.steady = layout.velocities(y_);
             calm = (velocities - calm_.steady).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
         } else {
             calm_.steady.resize(0), calm = false;  // no quasi-static state to compare with
@@ -234,8 +234,9 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
     return projected_;
 }
 
-bool QuasiStaticHybrid::keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, Index dof) const {
-    const auto v0 = before.segment(dof, dof), v1 = after.segment(dof, dof);
+bool QuasiStaticHybrid::keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                                   const StateLayout& layout) const {
+    const auto v0 = layout.velocities(before), v1 = layout.velocities(after);
     const double scale = std::max(v0.lpNorm<Eigen::Infinity>(), v1.lpNorm<Eigen::Infinity>());
     return (v1 - v0).lpNorm<Eigen::Infinity>() <= lag_floor * p_.quiet_speed + lag_fraction * scale;
 }
@@ -255,12 +256,12 @@ bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) 
     // y_ holds the static response to the jump, the system the state before it. Events the effects
     // foresee anyway (a count change due from the normal force's rate) are not the transient's:
     // only one the path brings earlier than the state at rest counts.
-    const Index dof = 2 * system.layout().nodes;
+    const StateLayout& layout = system.layout();
     mean_ = system.y();
-    mean_.segment(dof, dof).setZero();
-    const double at_rest = system.foreseen_event_time(view_of(mean_, system.layout(), t));
-    mean_.segment(dof, dof) = (y_.head(dof) - mean_.head(dof)) / transient_path_time;
-    const double on_path = system.foreseen_event_time(view_of(mean_, system.layout(), t));
+    layout.velocities(mean_).setZero();
+    const double at_rest = system.foreseen_event_time(view_of(mean_, layout, t));
+    layout.velocities(mean_) = (layout.positions(y_) - layout.positions(mean_)) / transient_path_time;
+    const double on_path = system.foreseen_event_time(view_of(mean_, layout, t));
     return on_path < at_rest && on_path - t <= transient_overshoot * transient_path_time;
 }
 
@@ -279,7 +280,6 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // The last commit may have made a jump (a junction broke, entered the dislocated state or was
     // removed): its static response comes first. If its new loads bring another junction to its
     // threshold, the next step is a short one to it.
-    const Index dof = 2 * layout.nodes;
     bool jumped = false;
     if (!projected && !solver_.in_equilibrium(system, t, y_, jump_residual * p_.position_tolerance)) {
         jumped = true;
@@ -306,19 +306,19 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
             {system.stage_end() - t, p_.max_quiet_step, std::max(event + p_.event_overshoot - t, event_slack * p_.dt)});
         const double t1 = t + length;
         y_ = span_.start;
-        y_.head(dof) += length * span_.start.segment(dof, dof);  // the linear response as the first guess
+        layout.positions(y_) += length * layout.velocities(span_.start);  // the linear response as the first guess
         if (!solver_.equilibrium(system, t1, y_)) return refuse("no static solution");
         // From a balanced start the response to the drive is (near) linear: its secant over the
         // span is the steady velocity (a jump or the turn to quiet solved for it at the start).
         // Over a span shorter than the dynamic step (to an event) the secant would carry Newton's
         // tolerance divided by the span: the velocities then stay as they were.
-        if (length >= p_.dt) y_.segment(dof, dof) = (y_.head(dof) - span_.start.head(dof)) / length;
+        if (length >= p_.dt) layout.velocities(y_) = (layout.positions(y_) - layout.positions(span_.start)) / length;
         // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
-        if (length * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(span_.start, y_, dof))
+        if (length * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(span_.start, y_, layout))
             return refuse(
                 "the steady velocities changed at once (a drive started or changed): the masses lag, and ring");
         mean_ = span_.start;
-        mean_.segment(dof, dof) = (y_.head(dof) - span_.start.head(dof)) / length;
+        layout.velocities(mean_) = (layout.positions(y_) - layout.positions(span_.start)) / length;
         const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
         if (foreseen + p_.event_overshoot + event_slack * p_.dt >= t1) break;
         log_.trace("quasi_static_hybrid: span from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
@@ -351,7 +351,7 @@ bool QuasiStaticHybrid::span_step(System& system, double max_dt, double& h) {
     // no commit). The first one begins the path from the span's start, the accepted state still.
     h = max_dt;
     if (!system.on_straight_path()) system.begin_straight_path(t1, span_.end);
-    span_.state_at(t + h, y_, 2 * system.layout().nodes);
+    span_.state_at(t + h, y_, system.layout());
     system.move_along_path(t + h, y_);
     return true;
 }

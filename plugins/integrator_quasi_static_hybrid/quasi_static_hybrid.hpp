@@ -117,10 +117,10 @@ private:
     bool may_turn_quiet(System& system, bool after_creep);
     /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
     bool quasi_static_state(System& system, double t);
-    /// Whether the velocities (the dof after the dof positions) of `after` are within quiet_speed
-    /// (and a percent of themselves) of those of `before`: a quasi-static state may follow a change
-    /// of the drive only as fast as inertia lets it.
-    bool keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, Index dof) const;
+    /// Whether the velocities of `after` are within quiet_speed (and a percent of themselves) of
+    /// those of `before`: a quasi-static state may follow a change of the drive only as fast as
+    /// inertia lets it.
+    bool keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, const StateLayout& layout) const;
     /// Whether the transient of the jump from the system's state to y_ could trigger an event.
     bool transient_reaches_event(const System& system, double t);
     /// Whether no effect has a scheduled event pending (no junction clock runs).

@@ -2,7 +2,7 @@
 // A quiet span of the hybrid (share/docs/quasi-static.md, "Quiet phase"): between events the
 // response is linear in time, so a step within the span lands on the straight line between its
 // solved ends, without a solve.
-#include <Eigen/Core>
+#include "frictionlab/model/state.hpp"
 
 namespace frictionlab {
 
@@ -11,12 +11,12 @@ struct QuietSpan {
     double start_time = 0, end_time = 0;
     bool open = false;  // steps land within it
 
-    /// The state at t within the span into y: the positions (the first `dof` entries) on the line
-    /// between its ends, the velocities the end's (the span's secant).
-    void state_at(double t, Eigen::VectorXd& y, Eigen::Index dof) const {
+    /// The state at t within the span into y: the positions on the line between its ends, the
+    /// velocities the end's (the span's secant).
+    void state_at(double t, Eigen::VectorXd& y, const StateLayout& layout) const {
         const double along = (t - start_time) / (end_time - start_time);
         y = end;
-        y.head(dof) = start.head(dof) + along * (end.head(dof) - start.head(dof));
+        layout.positions(y) = layout.positions(start) + along * (layout.positions(end) - layout.positions(start));
     }
 
     template <class Archive>

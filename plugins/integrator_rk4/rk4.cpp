@@ -97,38 +97,41 @@ double Rk4::step(System& system, double max_dt) {
     const Eigen::VectorXd& y = system.y();
     // k = [velocities of the stage | forces and aux rates]: the positions' rate is read from the
     // stage itself, never copied, and the forces become accelerations within the stage passes.
-    // Positions are y[0, 2N), velocities y[2N, 4N), aux variables y[4N, size).
-    const Index n = system.layout().nodes, size = y.size(), half = 2 * n, rest = size - half, aux = rest - half;
+    const StateLayout& layout = system.layout();
+    const Index n = layout.nodes, size = y.size(), dof = layout.dof(), aux = layout.aux;
+    const Index velocities_at = layout.velocity_start(), aux_at = layout.aux_start();
     // rate_ is all zeros between evaluations: each stage pass clears what it read.
-    if (stage_.size() != size) stage_.resize(size), sum_.resize(size), rate_.setZero(rest);
+    if (stage_.size() != size) stage_.resize(size), sum_.resize(size), rate_.setZero(layout.force_size());
     const double *y0 = y.data(), *inverse_mass = system.inverse_mass().data();
     double *stage = stage_.data(), *sum = sum_.data(), *rate = rate_.data();
-    // One stage: positions with the stage's velocities `v`, then the velocities (x, then z) and the
-    // aux variables with the new rates (in this order, as the rest overwrites the stage's velocities).
-    // A chunk of [0, 2N) does its positions, then the same entries' velocities (x below N, z from
-    // N): those are all that its positions read of the velocities, so chunks never wait on each other.
+    // One stage: positions with the stage's velocities `v`, then the velocities (axis by axis) and
+    // the aux variables with the new rates (in this order, as the rest overwrites the stage's
+    // velocities). A chunk of the positions does them, then the same entries' velocities, each
+    // axis's N entries divided by the N masses: those are all that its positions read of the
+    // velocities, so chunks never wait on each other.
     auto combine = [&](auto positions, auto velocities, auto aux_variables, const double* v, double c) {
-        for_each_chunk(half, [&](Index from, Index to) {
+        for_each_chunk(dof, [&](Index from, Index to) {
             positions(y0 + from, v + from, nullptr, c, to - from, stage + from, sum + from);
             for (Index a = from; a < to;) {
-                const Index b = a < n ? std::min(to, n) : to, node = a < n ? a : a - n;
-                velocities(y0 + half + a, rate + a, inverse_mass + node, c, b - a, stage + half + a, sum + half + a);
+                const Index node = a % n, b = std::min(to, a - node + n);  // to the end of this axis
+                velocities(y0 + velocities_at + a, rate + a, inverse_mass + node, c, b - a, stage + velocities_at + a,
+                           sum + velocities_at + a);
                 a = b;
             }
         });
-        aux_variables(y0 + 2 * half, rate + half, nullptr, c, aux, stage + 2 * half, sum + 2 * half);
+        aux_variables(y0 + aux_at, rate + dof, nullptr, c, aux, stage + aux_at, sum + aux_at);
     };
 
     // Each stage's quadrature weight, for work accounting (energy bookkeeping).
     system.begin_step();
     system.add_forces(t, y, rate_, Evaluation::weighted(h / 6));
-    combine(first_positions, first_velocities, first_aux, y0 + half, 0.5 * h);
+    combine(first_positions, first_velocities, first_aux, y0 + velocities_at, 0.5 * h);
     system.add_forces(t + 0.5 * h, stage_, rate_, Evaluation::weighted(h / 3));
-    combine(middle_positions, middle_velocities, middle_aux, stage + half, 0.5 * h);
+    combine(middle_positions, middle_velocities, middle_aux, stage + velocities_at, 0.5 * h);
     system.add_forces(t + 0.5 * h, stage_, rate_, Evaluation::weighted(h / 3));
-    combine(middle_positions, middle_velocities, middle_aux, stage + half, h);
+    combine(middle_positions, middle_velocities, middle_aux, stage + velocities_at, h);
     system.add_forces(t + h, stage_, rate_, Evaluation::weighted(h / 6));
-    combine(last_positions, last_velocities, last_aux, stage + half, h / 6.0);
+    combine(last_positions, last_velocities, last_aux, stage + velocities_at, h / 6.0);
     system.accept(t + h, stage_);
     return h;
 }

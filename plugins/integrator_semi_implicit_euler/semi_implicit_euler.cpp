@@ -27,7 +27,7 @@ double SemiImplicitEuler::step(System& system, double max_dt) {
     const auto rate = [&](double offset, const Eigen::VectorXd& s, Eigen::VectorXd& dy) {
         derivative(system, t + offset, s, dy, Evaluation::weighted(h));
     };
-    symplectic_euler_step(rate, h, 2 * system.layout().nodes, y, rate_, next_);
+    symplectic_euler_step(rate, h, system.layout().dof(), y, rate_, next_);
     system.accept(t + h, next_);
     return h;
 }

@@ -49,7 +49,7 @@ double VelocityVerlet::step(System& system, double max_dt) {
     const auto rate = [&](double offset, const Eigen::VectorXd& s, Eigen::VectorXd& dy) {
         derivative(system, t + offset, s, dy, Evaluation::weighted(h / 2));
     };
-    verlet_step(rate, h, 2 * system.layout().nodes, y, start_rate_, end_rate_, stage_);
+    verlet_step(rate, h, system.layout().dof(), y, start_rate_, end_rate_, stage_);
     system.accept(t + h, stage_);
     return h;
 }

@@ -37,24 +37,39 @@ ParamSpec<DrivingSpring::Params> DrivingSpring::spec() {
         .at_least(0);
     s.add("node_set", &Params::node_set, "Node set the driving point lies on (a column of nodes).");
     s.drives_loading();
+    s.dimensions({2, 3});
     return s;
 }
 
 namespace {
+/// The heights of a node set: its nodes grouped by height, lowest first.
 struct NodeHeights {
-    std::vector<Index> nodes;     // sorted by height
-    std::vector<double> heights;  // above the lowest node, m
+    std::vector<std::vector<Index>> levels;  // the nodes at each height
+    std::vector<double> heights;             // above the lowest node, m
 };
 
 NodeHeights sorted_heights(const Body& body, const NodeSet& set) {
-    NodeHeights h{set, {}};
-    std::sort(h.nodes.begin(), h.nodes.end(), [&](Index a, Index b) { return body.z0(a) < body.z0(b); });
-    for (Index n : h.nodes) h.heights.push_back(body.z0(n) - body.z0(h.nodes.front()));
+    const auto z = body.reference_position.col(body.contact_frame.normal);
+    std::vector<Index> nodes = set;
+    std::sort(nodes.begin(), nodes.end(), [&](Index a, Index b) { return z(a) < z(b); });
+    const double same = 1e-9 * (body.spacing > 0 ? body.spacing : 1.0);
+    NodeHeights h;
+    for (const Index n : nodes) {
+        const double height = z(n) - z(nodes.front());
+        if (h.levels.empty() || height - h.heights.back() > same) h.levels.emplace_back(), h.heights.push_back(height);
+        h.levels.back().push_back(n);
+    }
     return h;
 }
 
-/// A uniform traction over h +- w/2: each node of the column takes the part of the patch its span
-/// (half the gaps to its neighbours either side, within the column) covers.
+/// The attachments of a part `weight` of the force at height level k: shared by its nodes.
+void attach_level(std::vector<DrivingSpring::Attachment>& out, const NodeHeights& n, std::size_t k, double weight) {
+    const double count = static_cast<double>(n.levels[k].size());
+    for (const Index node : n.levels[k]) out.push_back({node, weight / count});
+}
+
+/// A uniform traction over h +- w/2: each height of the set takes the part of the patch its span
+/// (half the gaps to its neighbours either side, within the set) covers.
 std::vector<DrivingSpring::Attachment> spread(const DrivingSpring::Params& p, const NodeHeights& n, double tolerance) {
     const double low = p.height - p.patch / 2, high = p.height + p.patch / 2, top = n.heights.back();
     if (low < -tolerance || high > top + tolerance)
@@ -64,11 +79,11 @@ std::vector<DrivingSpring::Attachment> spread(const DrivingSpring::Params& p, co
                         p.patch, p.height, p.node_set, top, 2 * std::min(p.height, top - p.height)));
     std::vector<DrivingSpring::Attachment> nodes;
     double total = 0;
-    for (std::size_t k = 0; k < n.nodes.size(); ++k) {
+    for (std::size_t k = 0; k < n.levels.size(); ++k) {
         const double below = k == 0 ? 0 : (n.heights[k - 1] + n.heights[k]) / 2;
-        const double above = k + 1 == n.nodes.size() ? top : (n.heights[k] + n.heights[k + 1]) / 2;
+        const double above = k + 1 == n.levels.size() ? top : (n.heights[k] + n.heights[k + 1]) / 2;
         const double covered = std::min(above, high) - std::max(below, low);
-        if (covered > 1e-9 * p.patch) nodes.push_back({n.nodes[k], covered}), total += covered;
+        if (covered > 1e-9 * p.patch) attach_level(nodes, n, k, covered), total += covered;
     }
     for (DrivingSpring::Attachment& a : nodes) a.weight /= total;  // sums to 1; one node: exactly 1
     return nodes;
@@ -78,16 +93,18 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     const NodeSet& set = body.nodes(p.node_set);
     if (set.empty()) throw InputError("driving_spring: node set '" + p.node_set + "' is empty");
     const NodeHeights n = sorted_heights(body, set);
-    if (n.nodes.size() == 1) {
-        // A chain's trailing edge is one block: any h up to the slider's height drives it, without the
-        // torque F_S h, which a 1D chain cannot carry.
+    std::vector<DrivingSpring::Attachment> out;
+    if (n.levels.size() == 1) {
+        // A chain's trailing edge is one block (or one row across the width): any h up to the slider's
+        // height drives it, without the torque F_S h, which a 1D chain cannot carry.
         if (p.patch > 0)
             throw InputError("driving_spring: patch needs a column of nodes to spread over; node set '" + p.node_set +
-                             "' has one node (a chain's trailing block): remove patch");
+                             "' has nodes at one height only (a chain's trailing block): remove patch");
         if (p.height > body.height * (1 + 1e-9))
             throw InputError(fmt::format("driving_spring: height = {:g} m is above the slider (height {:g} m)",
                                          p.height, body.height));
-        return {{n.nodes.front(), 1.0}};
+        attach_level(out, n, 0, 1.0);
+        return out;
     }
     const double tolerance = 1e-9 * (body.spacing > 0 ? body.spacing : std::max(n.heights.back(), 1.0));
     if (p.height < -tolerance || p.height > n.heights.back() + tolerance)
@@ -96,26 +113,32 @@ std::vector<DrivingSpring::Attachment> attach(const DrivingSpring::Params& p, co
     if (p.patch > 0) return spread(p, n, tolerance);
     const auto above = std::lower_bound(n.heights.begin(), n.heights.end(), p.height - tolerance);
     const std::size_t k = std::min<std::size_t>(above - n.heights.begin(), n.heights.size() - 1);
-    if (std::abs(n.heights[k] - p.height) <= tolerance) return {{n.nodes[k], 1.0}};
+    if (std::abs(n.heights[k] - p.height) <= tolerance) {
+        attach_level(out, n, k, 1.0);
+        return out;
+    }
     if (p.attachment == DrivingSpring::Attach::node)
         throw InputError(fmt::format(
             "driving_spring: height = {:g} m is not the height of a node of '{}'; the nearest node heights are "
             "{:g} m and {:g} m (or use attachment: interpolated)",
             p.height, p.node_set, n.heights[k - 1], n.heights[k]));
     const double w = (p.height - n.heights[k - 1]) / (n.heights[k] - n.heights[k - 1]);
-    return {{n.nodes[k - 1], 1.0 - w}, {n.nodes[k], w}};
+    attach_level(out, n, k - 1, 1.0 - w);
+    attach_level(out, n, k, w);
+    return out;
 }
 }  // namespace
 
 DrivingSpring::DrivingSpring(const Params& p, const Context& ctx)
     : params_(spec().checked(p)),
+      sliding_(ctx.body->contact_frame.tangential.front()),
       attachment_(attach(p, *ctx.body)),
       force_(ctx.quantities->scalar("driving_force", "N", "Force F_S of the loading spring on the slider (+x).")),
       displacement_(ctx.quantities->scalar("driving_displacement", "m",
                                            "Displacement x_h - x_h0 of the driving point since loading began.")),
       driver_(ctx.quantities->scalar("driver_position", "m",
                                      "Displacement X(t) of the spring's far end since loading began.")) {
-    x_h0_ = driving_point_x(ctx.body->x0);
+    x_h0_ = driving_point_x(ctx.body->reference_position.col(sliding_));
 }
 
 template <class Positions>
@@ -155,7 +178,7 @@ void DrivingSpring::begin_stage(const StageInfo& stage, const StageView& s) {
     if (started_) return;
     started_ = true;
     t0_ = stage.t_start;
-    x_h0_ = driving_point_x(s.x);
+    x_h0_ = driving_point_x(s.positions_along(sliding_));
     next_reversal_ = reversal_after(t0_);
 }
 
@@ -163,21 +186,23 @@ void DrivingSpring::commit(const StageView& end, double /*dt*/) { next_reversal_
 
 void DrivingSpring::add_forces(const StageView& s, ForceView& f) {
     driver_ = far_end(s.t);
-    displacement_ = driving_point_x(s.x) - x_h0_;
+    displacement_ = driving_point_x(s.positions_along(sliding_)) - x_h0_;
     force_ = params_.stiffness * (driver_ - displacement_);
-    for (const Attachment& a : attachment_) f.fx(a.node) += a.weight * force_;
+    auto fx = f.forces_along(sliding_);
+    for (const Attachment& a : attachment_) fx(a.node) += a.weight * force_;
 }
 
-void DrivingSpring::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
+void DrivingSpring::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
     for (const Attachment& a : attachment_)
         for (const Attachment& b : attachment_)
-            stiffness.emplace_back(a.node, b.node, params_.stiffness * a.weight * b.weight);
+            stiffness.emplace_back(s.position_index(a.node, sliding_), s.position_index(b.node, sliding_),
+                                   params_.stiffness * a.weight * b.weight);
 }
 
 double DrivingSpring::potential_energy(const StageView& s) const {
     if (!started_) return 0;  // not yet in the pipeline: no spring to store anything
     // The stretch add_forces() turns into F_S = K_S * stretch, without publishing it.
-    const double stretch = far_end(s.t) - (driving_point_x(s.x) - x_h0_);
+    const double stretch = far_end(s.t) - (driving_point_x(s.positions_along(sliding_)) - x_h0_);
     return 0.5 * params_.stiffness * stretch * stretch;
 }
 

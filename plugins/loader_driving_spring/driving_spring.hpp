@@ -29,6 +29,10 @@ namespace frictionlab {
 /// of one node (the trailing block of a chain, plugins/bulk_chain_1d) is the driving point for any h
 /// from 0 to the slider's height H: the torque F_S h is then not modelled.
 ///
+/// In any dimension: x is the sliding direction and heights are along z, the normal, of the body's
+/// contact frame; the nodes of the set at one height (a row across the width of a 3D body's face)
+/// share that height's part of the force equally, and x_h is the mean with the same weights.
+///
 /// Stored energy: the loading spring's own, E = F_S^2 / (2 K_S) (0 before the loader's first
 /// stage). Its far end is moved by the driver, so the energy the driver puts in is the work on the
 /// nodes plus E's change: W + dE = int F_S dX/dt dt (negative while a reversed far end unloads it).
@@ -85,6 +89,7 @@ private:
     double reversal_after(double t) const;
 
     Params params_;
+    int sliding_;  // the axis x, the contact frame's sliding direction
     std::vector<Attachment> attachment_;
     double t0_ = 0, x_h0_ = 0;
     double next_reversal_ = std::numeric_limits<double>::infinity();

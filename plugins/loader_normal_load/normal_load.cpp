@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -31,19 +32,46 @@ ParamSpec<NormalLoad::Params> NormalLoad::spec() {
           "active in; 0 applies it at once.")
         .unit("s")
         .at_least(0);
-    s.add("node_set", &Params::node_set, "Node set that carries the load, ordered by x.");
+    s.add("node_set", &Params::node_set,
+          "Node set that carries the load; its nodes at one x (a column across the width, in 3D) share a column's "
+          "load.");
+    s.dimensions({2, 3});
     return s;
 }
 
 namespace {
-Eigen::ArrayXd load_weights(const NormalLoad::Params& p, Index n) {
-    Eigen::ArrayXd w(n);
-    for (Index k = 0; k < n; ++k) {
-        const double i = k + 1.0;
+/// Which column along x each node of the set is in (0 the lowest x), and the number of columns: the
+/// distinct reference positions along the sliding direction, to 1e-9 of the body's spacing.
+std::vector<Index> columns_of(const Body& body, const NodeSet& nodes, Index& count) {
+    const auto x = body.reference_position.col(body.contact_frame.tangential.front());
+    std::vector<double> positions;
+    for (const Index node : nodes) positions.push_back(x(node));
+    std::sort(positions.begin(), positions.end());
+    const double tolerance = 1e-9 * (body.spacing > 0 ? body.spacing : 1.0);
+    positions.erase(
+        std::unique(positions.begin(), positions.end(), [&](double a, double b) { return b - a <= tolerance; }),
+        positions.end());
+    count = static_cast<Index>(positions.size());
+    std::vector<Index> column;
+    for (const Index node : nodes)
+        column.push_back(std::lower_bound(positions.begin(), positions.end(), x(node) - tolerance) - positions.begin());
+    return column;
+}
+
+/// W_i of each column over the column's nodes, for every node of the set.
+Eigen::ArrayXd load_weights(const NormalLoad::Params& p, const Body& body, const NodeSet& nodes) {
+    Index n = 0;
+    const std::vector<Index> column = columns_of(body, nodes, n);
+    std::vector<double> sharing(static_cast<std::size_t>(n), 0.0);  // nodes per column
+    for (const Index c : column) sharing[static_cast<std::size_t>(c)] += 1;
+    Eigen::ArrayXd w(static_cast<Index>(nodes.size()));
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const double i = column[k] + 1.0;
         const double shape = p.formula == NormalLoad::Formula::paper_literal ? (2 * i - n) / n
                              : n > 1                                         ? (2 * i - n - 1) / (n - 1.0)
                                                                              : 0.0;
-        w(k) = p.total_force / n * (1 + p.theta * shape);
+        w(static_cast<Index>(k)) =
+            p.total_force / n * (1 + p.theta * shape) / sharing[static_cast<std::size_t>(column[k])];
     }
     return w;
 }
@@ -52,10 +80,11 @@ Eigen::ArrayXd load_weights(const NormalLoad::Params& p, Index n) {
 NormalLoad::NormalLoad(const Params& p, const Context& ctx)
     : params_(spec().checked(p)),
       nodes_(ctx.body->nodes(p.node_set)),
+      normal_(ctx.body->contact_frame.normal),
       first_(consecutive_start(nodes_)),
       applied_(ctx.quantities->scalar("normal_load", "N", "Total normal load applied on the top surface now.")) {
     if (nodes_.empty()) throw InputError("normal_load: node set '" + p.node_set + "' is empty");
-    weights_ = load_weights(p, static_cast<Index>(nodes_.size()));
+    weights_ = load_weights(p, *ctx.body, nodes_);
     full_total_ = weights_.sum();
 }
 
@@ -88,10 +117,11 @@ double NormalLoad::load_ramp_end() const {
 
 void NormalLoad::add_forces(const StageView& s, ForceView& f) {
     const double r = ramp(s.t);
+    auto fz = f.forces_along(normal_);
     if (first_ >= 0)  // the top row of the lattice: one vectorised pass
-        f.fz.segment(first_, weights_.size()) -= r * weights_;
+        fz.segment(first_, weights_.size()) -= r * weights_;
     else
-        for (std::size_t k = 0; k < nodes_.size(); ++k) f.fz(nodes_[k]) -= r * weights_(k);
+        for (std::size_t k = 0; k < nodes_.size(); ++k) fz(nodes_[k]) -= r * weights_(k);
     applied_ = r * full_total_;
 }
 

@@ -11,7 +11,9 @@ namespace frictionlab {
 /// Vertical load on the top surface, pushing down (-z), linear along x (Li2020 Eq. 3):
 ///     normalised (theory.md B.1):  W_i = (F_N/N_x) [1 + theta (2i - N_x - 1)/(N_x - 1)]
 ///     paper_literal (Eq. 3 as printed): W_i = (F_N/N_x) [1 + theta (2i - N_x)/N_x]
-/// for i = 1..N_x over the node set ordered by x. The normalised form sums to F_N exactly and puts
+/// for the N_x columns i = 1..N_x of the node set, its nodes grouped by their reference position
+/// along x and shared equally by a column's nodes (one in 2D; a row across the width in 3D). z is
+/// the normal, x the sliding direction of the body's contact frame. The normalised form sums to F_N exactly and puts
 /// (1 - theta) F_N/N_x on the trailing edge and (1 + theta) F_N/N_x on the leading edge; the
 /// literal one sums to F_N (1 + theta/N_x). theta > 0 loads the trailing (driven) edge less.
 /// With ramp_time > 0 the load grows linearly from 0 over that time, starting at the first stage
@@ -48,7 +50,8 @@ public:
     double foreseen_event_time(const StageView& s) const override;
     double load_ramp_end() const override;
 
-    /// The full (un-ramped) load W_i on each node of the set, N, in set order.
+    /// The full (un-ramped) load on each node of the set, N, in set order: its column's W_i over the
+    /// column's nodes.
     const Eigen::ArrayXd& weights() const { return weights_; }
     /// Fraction of the full load applied at time t: min(1, (t - t_start)/ramp_time).
     double ramp(double t) const;
@@ -56,6 +59,7 @@ public:
 private:
     Params params_;
     NodeSet nodes_;
+    int normal_;   // the axis z, the contact frame's normal
     Index first_;  // the set's first node if its nodes are consecutive, else -1
     Eigen::ArrayXd weights_;
     double full_total_ = 0;  // sum of W_i: F_N, or F_N (1 + theta/N_x) for the literal formula

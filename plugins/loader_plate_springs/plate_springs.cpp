@@ -17,6 +17,7 @@ ParamSpec<PlateSprings::Params> PlateSprings::spec() {
         .unit("m/s");
     s.add("node_set", &Params::node_set, "Node set the plate pulls, one spring per node.");
     s.drives_loading();
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -35,7 +36,8 @@ const NodeSet& pulled_nodes(const PlateSprings::Params& p, const Context& ctx) {
 PlateSprings::PlateSprings(const Params& p, const Context& ctx)
     : params_(spec().checked(p)),
       nodes_(pulled_nodes(p, ctx)),
-      x_origin_(ctx.body->x0(nodes_)),
+      sliding_(ctx.body->contact_frame.tangential.front()),
+      x_origin_(ctx.body->reference_position.col(sliding_)(nodes_)),
       force_(ctx.quantities->scalar("driving_force", "N", "Force of the loading on the slider (+x).")),
       displacement_(ctx.quantities->scalar("driving_displacement", "m",
                                            "Displacement of the driving point(s) since loading began.")),
@@ -52,16 +54,18 @@ void PlateSprings::begin_stage(const StageInfo& stage, const StageView& s) {
     if (started_) return;
     started_ = true;
     t0_ = stage.t_start;
-    x_origin_ = s.x(nodes_);
+    x_origin_ = s.positions_along(sliding_)(nodes_);
 }
 
 void PlateSprings::add_forces(const StageView& s, ForceView& f) {
     driver_ = params_.velocity * (s.t - t0_);
+    const auto x = s.positions_along(sliding_);
+    auto fx = f.forces_along(sliding_);
     double pull = 0, moved = 0;
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const double u = s.x(nodes_[k]) - x_origin_(static_cast<Index>(k));
+        const double u = x(nodes_[k]) - x_origin_(static_cast<Index>(k));
         const double force = params_.stiffness * (driver_ - u);
-        f.fx(nodes_[k]) += force;
+        fx(nodes_[k]) += force;
         pull += force;
         moved += u;
     }
@@ -69,14 +73,17 @@ void PlateSprings::add_forces(const StageView& s, ForceView& f) {
     displacement_ = moved / static_cast<double>(nodes_.size());
 }
 
-void PlateSprings::add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const {
-    for (const Index node : nodes_) stiffness.emplace_back(node, node, params_.stiffness);
+void PlateSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    for (const Index node : nodes_) {
+        const Index q = s.position_index(node, sliding_);
+        stiffness.emplace_back(q, q, params_.stiffness);
+    }
 }
 
 double PlateSprings::potential_energy(const StageView& s) const {
     if (!started_) return 0;  // not yet in the pipeline: no spring to store anything
     const double driver = params_.velocity * (s.t - t0_);
-    return 0.5 * params_.stiffness * (driver - (s.x(nodes_) - x_origin_)).square().sum();
+    return 0.5 * params_.stiffness * (driver - (s.positions_along(sliding_)(nodes_) - x_origin_)).square().sum();
 }
 
 }  // namespace frictionlab

@@ -14,9 +14,10 @@ namespace frictionlab {
 ///
 ///     F_j = k_p (V (t - t0) - (x_j - x_j0))
 ///
-/// t0 and x_j0 are taken at the start of the first stage in which the loader is active, so F_j(t0) = 0,
-/// as for driving_spring (theory.md B.3). k_p is per node (the BK equation's), so the plate's total
-/// stiffness is N k_p. With a chain (plugins/bulk_chain_1d) and a friction law this is the BK chain
+/// along x, the sliding direction of the body's contact frame (any dimension). t0 and x_j0 are taken at the start of
+/// the first stage in which the loader is active, so F_j(t0) = 0, as for driving_spring (theory.md B.3). k_p is per
+/// node (the BK equation's), so the plate's total stiffness is N k_p. With a chain (plugins/bulk_chain_1d) and a
+/// friction law this is the BK chain
 ///     m u_i'' = k_c (u_{i+1} - 2 u_i + u_{i-1}) + k_p (V t - u_i) - F_i.
 ///
 /// Published, so loading_curve and precursors read it like the driving spring: "driving_force" =
@@ -57,6 +58,7 @@ public:
 private:
     Params params_;
     NodeSet nodes_;
+    int sliding_;              // the axis x, the contact frame's sliding direction
     Eigen::ArrayXd x_origin_;  // x_j0 of the set's nodes, m
     double t0_ = 0;
     bool started_ = false;

@@ -24,6 +24,7 @@ ParamSpec<RigidBaseContact::Params> RigidBaseContact::spec() {
              "chain_1d: per node); node: stiffness_ratio * K per node at every spacing, as printed, so a finer "
              "lattice has a stiffer base (share/docs/lattice-resolution.md).");
     s.add("node_set", &Params::node_set, "Node set in contact with the base.");
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -44,8 +45,9 @@ double contact_stiffness_of(const RigidBaseContact::Params& p, const Body& body)
 RigidBaseContact::RigidBaseContact(const Params& p, const Context& ctx)
     : params_(spec().checked(p)),
       nodes_(ctx.body->nodes(p.node_set)),
+      normal_(ctx.body->contact_frame.normal),
       first_(consecutive_start(nodes_)),
-      z0_(ctx.body->z0(nodes_)),
+      z0_(ctx.body->reference_position.col(normal_)(nodes_)),
       stiffness_(contact_stiffness_of(p, *ctx.body)),
       touch_(1e-4 * ctx.body->spacing),
       normal_force_(ctx.quantities->field("normal_force", p.node_set, static_cast<Index>(nodes_.size()), "N",
@@ -57,44 +59,51 @@ std::string RigidBaseContact::describe() const {
 }
 
 void RigidBaseContact::update_normal_force(const StageView& s) {
+    const auto z = s.positions_along(normal_);
     if (first_ >= 0) {  // a row of the lattice: one vectorised pass
-        normal_force_ = stiffness_ * (z0_ - s.z.segment(first_, z0_.size())).max(0.0);
+        normal_force_ = stiffness_ * (z0_ - z.segment(first_, z0_.size())).max(0.0);
         return;
     }
     for (std::size_t k = 0; k < nodes_.size(); ++k)
-        normal_force_(k) = stiffness_ * std::max(0.0, z0_(k) - s.z(nodes_[k]));
+        normal_force_(k) = stiffness_ * std::max(0.0, z0_(k) - z(nodes_[k]));
 }
 
 void RigidBaseContact::add_forces(const StageView& s, ForceView& f) {
     update_normal_force(s);
+    auto fz = f.forces_along(normal_);
     if (first_ >= 0) {
-        f.fz.segment(first_, normal_force_.size()) += normal_force_;
+        fz.segment(first_, normal_force_.size()) += normal_force_;
         return;
     }
-    for (std::size_t k = 0; k < nodes_.size(); ++k) f.fz(nodes_[k]) += normal_force_(k);
+    for (std::size_t k = 0; k < nodes_.size(); ++k) fz(nodes_[k]) += normal_force_(k);
 }
 
 void RigidBaseContact::add_loaded_forces(const StageView& s, ForceView& f) {
+    const auto z = s.positions_along(normal_);
+    auto fz = f.forces_along(normal_);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const double gap = s.z(nodes_[k]) - z0_(k);
+        const double gap = z(nodes_[k]) - z0_(k);
         normal_force_(k) = gap < touch_ ? -stiffness_ * gap : 0.0;
-        f.fz(nodes_[k]) += normal_force_(k);
+        fz(nodes_[k]) += normal_force_(k);
     }
 }
 
 void RigidBaseContact::commit(const StageView& end, double) { update_normal_force(end); }
 
 void RigidBaseContact::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
-    const Index n = s.x.size();
-    for (std::size_t k = 0; k < nodes_.size(); ++k)
-        if (s.z(nodes_[k]) < z0_(k)) stiffness.emplace_back(n + nodes_[k], n + nodes_[k], stiffness_);
+    const auto z = s.positions_along(normal_);
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Index q = s.position_index(nodes_[k], normal_);
+        if (z(nodes_[k]) < z0_(k)) stiffness.emplace_back(q, q, stiffness_);
+    }
 }
 
 double RigidBaseContact::foreseen_event_time(const StageView& s) const {
     // Node k crosses the base, z = z0_k, at t + (z0_k - z) / vz if it moves towards it.
     double next = std::numeric_limits<double>::infinity();
+    const auto z = s.positions_along(normal_), v = s.velocities_along(normal_);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const double gap = z0_(k) - s.z(nodes_[k]), vz = s.vz(nodes_[k]);
+        const double gap = z0_(k) - z(nodes_[k]), vz = v(nodes_[k]);
         const bool in_contact = gap > 0;
         if ((in_contact && vz > 0) || (!in_contact && vz < 0)) next = std::min(next, s.t + gap / vz);
     }
@@ -103,8 +112,9 @@ double RigidBaseContact::foreseen_event_time(const StageView& s) const {
 
 double RigidBaseContact::potential_energy(const StageView& s) const {
     double penetration_squared = 0;
+    const auto z = s.positions_along(normal_);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const double d = std::max(0.0, z0_(k) - s.z(nodes_[k]));
+        const double d = std::max(0.0, z0_(k) - z(nodes_[k]));
         penetration_squared += d * d;
     }
     return 0.5 * stiffness_ * penetration_squared;

@@ -9,13 +9,12 @@ namespace frictionlab {
 
 /// Normal contact of the interface nodes with a rigid base (Li2020 Eq. 5, theory.md B.5):
 ///     P_b = -K_b (z_i - z0_i)  if z_i <= z0_i,   else 0,
-/// acting in +z, with K_b = stiffness_ratio * K (K the bulk's bond stiffness; Li2020 and
-/// Tromborg 2014 use K/2, the foundation stiffness of the same material) at the bulk's reference
-/// spacing l_ref (Body::reference_spacing); on another lattice K_b = stiffness_ratio * K * l_s/l_ref,
-/// the same stiffness per unit area of the base (theory.md §1a), unless stiffness_per is node (as
-/// printed: a finer lattice then has a stiffer base). No damping, no
-/// adhesion. P_b is published as the field "normal_force" over the node set; it is refreshed from
-/// the end-of-step state in commit(), where the friction law (evaluated after the loaders) reads
+/// acting in +z, z the normal of the body's contact frame (any dimension), with K_b = stiffness_ratio * K (K the bulk's
+/// bond stiffness; Li2020 and Tromborg 2014 use K/2, the foundation stiffness of the same material) at the bulk's
+/// reference spacing l_ref (Body::reference_spacing); on another lattice K_b = stiffness_ratio * K * l_s/l_ref, the
+/// same stiffness per unit area of the base (theory.md §1a), unless stiffness_per is node (as printed: a finer lattice
+/// then has a stiffer base). No damping, no adhesion. P_b is published as the field "normal_force" over the node set;
+/// it is refreshed from the end-of-step state in commit(), where the friction law (evaluated after the loaders) reads
 /// it to judge its own transitions.
 ///
 /// Stored energy: E = 1/2 K_b sum_i max(0, z0_i - z_i)^2, so P_b = -dE/dz_i; the base is rigid and
@@ -60,6 +59,7 @@ private:
 
     Params params_;
     NodeSet nodes_;
+    int normal_;         // the axis z, the contact frame's normal
     Index first_;        // the set's first node if its nodes are consecutive, else -1
     Eigen::ArrayXd z0_;  // reference heights of the set's nodes, m
     double stiffness_;   // K_b, N/m

@@ -89,6 +89,7 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
         return "";
     });
     add_outputs(s, outputs);
+    s.dimensions({2}, "a block's neighbours and bond forces in the lattice's x-z plane");
     return s;
 }
 
@@ -109,7 +110,8 @@ double ContactArea::bond_force_x(double k, double r0, double xi, double zi, doub
 ContactArea::Bond ContactArea::bond_between(const Body& body, Index node, Index neighbour) const {
     for (const auto& [a, b] : body.bonds)
         if ((a == node && b == neighbour) || (a == neighbour && b == node))
-            return {neighbour, std::hypot(body.x0(neighbour) - body.x0(node), body.z0(neighbour) - body.z0(node))};
+            return {neighbour,
+                    std::hypot(body.x0()(neighbour) - body.x0()(node), body.z0()(neighbour) - body.z0()(node))};
     return {};
 }
 
@@ -164,7 +166,7 @@ void ContactArea::observe(const RunView& view) {
         const Index i = b.index;
         const double np = pinned(i), ns = sliding(i), nd = dislocated(i), total = np + ns + nd;
         if (total > 0 && ns + nd == 0) b.pinned_reference = np;
-        const double u = s.x(b.node) - view.body.x0(b.node);
+        const double u = s.x(b.node) - view.body.x0()(b.node);
         if (std::isnan(b.x_at_loading) && view.stage.name == params_.loading_stage) b.x_at_loading = s.x(b.node);
         row_.assign({t, step, stage, np, ns, nd, total, b.pinned_reference, ratio(np, b.pinned_reference),
                      ratio(np, total), ratio(ns, total), ratio(nd, total), u, s.x(b.node) - b.x_at_loading,

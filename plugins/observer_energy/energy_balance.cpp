@@ -22,6 +22,7 @@ ParamSpec<EnergyBalance::Params> EnergyBalance::spec() {
         "theorem (switches the run's work accounting on).");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
     add_outputs(s, outputs);
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -56,7 +57,10 @@ void EnergyBalance::begin(const RunView& view) {
 }
 
 double EnergyBalance::kinetic_energy(const RunView& view) {
-    return 0.5 * (view.body.mass * (view.state.vx.square() + view.state.vz.square())).sum();
+    const auto& v = view.state.velocity;
+    Eigen::ArrayXd speed_squared = v.col(0).square();
+    for (Index axis = 1; axis < v.cols(); ++axis) speed_squared += v.col(axis).square();
+    return 0.5 * (view.body.mass * speed_squared).sum();
 }
 
 void EnergyBalance::observe(const RunView& view) {

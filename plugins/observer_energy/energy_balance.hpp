@@ -45,7 +45,7 @@ struct EnergyReference {
 /// law, the key() of a bulk effect, e.g. lattice_springs, bond_damping):
 ///
 ///     time (s), step, stage           as in loading_curve
-///     kinetic_energy                  KE = 1/2 sum_i m_i (vx_i^2 + vz_i^2)
+///     kinetic_energy                  KE = 1/2 sum_i m_i |v_i|^2
 ///     <label>_energy                  E_e at the observed state
 ///     <label>_work                    W_e since the first observation
 ///     <label>_dissipated | _input     D_e (bulk effects, friction laws) or I_e (loaders), as above

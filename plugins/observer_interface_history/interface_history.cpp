@@ -34,6 +34,7 @@ ParamSpec<InterfaceHistory::Params> InterfaceHistory::spec() {
     s.add("node_set", &Params::node_set, "Node set to follow, ordered along x.");
     add_table_format_param(s, &Params::format);
     add_outputs(s, outputs);
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -50,7 +51,7 @@ void InterfaceHistory::begin(const RunView& view) {
                            std::move(value)});
     };
     add(velocity_file, [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
-    add(slip_file, [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0(nodes_[b]); });
+    add(slip_file, [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0()(nodes_[b]); });
     // Published fields are over the interface node set, indexed like it.
     const Quantities& q = view.quantities;
     const auto blocks = static_cast<Index>(nodes_.size());

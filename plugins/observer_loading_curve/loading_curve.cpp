@@ -19,6 +19,7 @@ ParamSpec<LoadingCurve::Params> LoadingCurve::spec() {
         "normal force, driving-point displacement against time, as CSV.");
     s.add("file", &Params::file, "CSV file name, in the run's output directory.");
     add_outputs(s, outputs);
+    s.dimensions({2, 3});
     return s;
 }
 

@@ -115,6 +115,7 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
     add_table_format_param(s, &Params::format);
     add_outputs(s, outputs);
+    s.dimensions({2}, "ruptures along a line of blocks ordered by x");
     return s;
 }
 
@@ -143,7 +144,7 @@ void Precursors::begin(const RunView& view) {
 
     RuptureEventDetector::Interface geometry;
     geometry.x.resize(n);
-    for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0(interface_[i]) - body.x0(interface_[0]);
+    for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0()(interface_[i]) - body.x0()(interface_[0]);
     geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
     geometry.spacing = body.spacing;
     detector_.emplace(
@@ -186,7 +187,7 @@ void Precursors::begin(const RunView& view) {
 void Precursors::classify(const RunView& view, bool rearm) {
     for (std::size_t i = 0; i < interface_.size(); ++i) {
         const Index node = interface_[i];
-        slip_(static_cast<Index>(i)) = view.state.x(node) - view.body.x0(node);
+        slip_(static_cast<Index>(i)) = view.state.x(node) - view.body.x0()(node);
     }
     if (params_.criterion == Criterion::pinned_fraction)
         ruptured_by_pinned_fraction(*counts_->pinned, *counts_->sliding, *counts_->dislocated,

@@ -74,15 +74,13 @@ void set_single(Array* array, const T& value) {
     array->Modified();
 }
 
-/// (a, b, 0) per node: the model's x-z plane as VTK's x-y plane.
-template <class A, class B>
-void set_plane_vectors(vtkDoubleArray* out, const A& a, const B& b) {
+/// A 3-vector per node from the rows of an [nnode, ndim] array: a 3D body's axes as VTK's, a planar
+/// body's x-z plane as VTK's x-y plane (0 out of it).
+template <class Vectors>
+void set_vectors(vtkDoubleArray* out, const Vectors& v) {
     double* p = out->GetPointer(0);
-    for (Index i = 0; i < a.size(); ++i) {
-        p[3 * i] = a[i];
-        p[3 * i + 1] = b[i];
-        p[3 * i + 2] = 0;
-    }
+    for (Index i = 0; i < v.rows(); ++i)
+        for (Index k = 0; k < 3; ++k) p[3 * i + k] = k < v.cols() ? v(i, k) : 0;
     out->Modified();
 }
 
@@ -116,6 +114,7 @@ ParamSpec<VtkSeries::Params> VtkSeries::spec() {
              "deformed positions (then do not warp: the displacement would count twice).");
     s.rule("prefix", prefix_problem);
     add_outputs(s, outputs);
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -136,7 +135,7 @@ void VtkSeries::begin(const RunView& view) {
     grid_->SetPoints(points);
     points_ = vtkDoubleArray::SafeDownCast(points->GetData());
     build_cells(body);
-    set_plane_vectors(points_, body.x0, body.z0);  // updated per snapshot only with `points: deformed`
+    set_vectors(points_, body.reference_position);  // updated per snapshot only with `points: deformed`
     add_strain(body);
 
     displacement_ = add_point_array("displacement", 3, "m");
@@ -179,8 +178,8 @@ void VtkSeries::add_strain(const Body& body) {
     for (const auto& c : body.cells) {
         double j11 = 0, j12 = 0, j21 = 0, j22 = 0;  // d(x, z)/d(xi, eta)
         for (int k = 0; k < 4; ++k) {
-            j11 += dxi[k] * body.x0[c[k]], j12 += dxi[k] * body.z0[c[k]];
-            j21 += deta[k] * body.x0[c[k]], j22 += deta[k] * body.z0[c[k]];
+            j11 += dxi[k] * body.x0()(c[k]), j12 += dxi[k] * body.z0()(c[k]);
+            j21 += deta[k] * body.x0()(c[k]), j22 += deta[k] * body.z0()(c[k]);
         }
         const double det = j11 * j22 - j12 * j21;
         std::array<std::array<double, 2>, 4> g{};
@@ -221,7 +220,7 @@ void VtkSeries::update_strain(const StageView& s, const Body& body) {
         double ux = 0, uz = 0, wx = 0, wz = 0;
         for (int k = 0; k < 4; ++k) {
             const Index n = body.cells[c][k];
-            const double u = s.x[n] - body.x0[n], w = s.z[n] - body.z0[n];
+            const double u = s.x[n] - body.x0()(n), w = s.z[n] - body.z0()(n);
             ux += corner_gradients_[c][k][0] * u, uz += corner_gradients_[c][k][1] * u;
             wx += corner_gradients_[c][k][0] * w, wz += corner_gradients_[c][k][1] * w;
         }
@@ -311,16 +310,15 @@ void VtkSeries::observe(const RunView& view) {
 void VtkSeries::update(const RunView& view) {
     const StageView& s = view.state;
     const Body& body = view.body;
-    const Eigen::VectorXd& f = view.system.net_force();
     if (params_.points == Points::deformed) {
-        set_plane_vectors(points_, s.x, s.z);
+        set_vectors(points_, s.position);
         grid_->GetPoints()->Modified();
     }
     update_strain(s, body);
     update_stress(view);
-    set_plane_vectors(displacement_, s.x - body.x0, s.z - body.z0);
-    set_plane_vectors(velocity_, s.vx, s.vz);
-    set_plane_vectors(net_force_, f.head(body.size()), f.tail(body.size()));
+    set_vectors(displacement_, s.position - body.reference_position);
+    set_vectors(velocity_, s.velocity);
+    set_vectors(net_force_, view.system.net_force());
     for (const NodeField& field : fields_) {
         for (std::size_t k = 0; k < field.nodes->size(); ++k)
             field.array->SetValue((*field.nodes)[k], (*field.values)[static_cast<Index>(k)]);

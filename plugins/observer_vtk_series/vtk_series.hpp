@@ -34,15 +34,16 @@ namespace frictionlab {
 /// Geometry: one point per node at its reference position (x0, z0), written once, with the
 /// `displacement` array for ParaView's Warp By Vector (scale 1: the deformed lattice; larger: the
 /// deformation magnified); `points: deformed` writes the deformed positions instead, and then a warp
-/// would count the displacement twice. The model plane x-z is drawn as VTK's x-y, point = (x, z, 0),
-/// so ParaView's default 2D view shows the slider upright, base at the bottom. Cells are the body's
+/// would count the displacement twice. A planar body's x-z plane is drawn as VTK's x-y, point =
+/// (x, z, 0), so ParaView's default 2D view shows the slider upright, base at the bottom; a 3D body's
+/// axes (x, y, z) are VTK's. Cells are the body's
 /// quads (VTK_QUAD) or, with `cells: bonds` or for a body without quads (a chain), its springs as
 /// lines (VTK_LINE). Connectivity is built once in begin(); a snapshot updates array values.
 ///
-/// Point data, SI units; vectors are (x, z, 0) like the points:
+/// Point data, SI units; vectors are laid out like the points, (x, z, 0) in 2D:
 ///
-///     displacement     3   m     (x - x0, z - z0)
-///     velocity         3   m/s   (vx, vz)
+///     displacement     3   m     position - reference position
+///     velocity         3   m/s
 ///     net_force        3   N     the sum of every effect's force at the observed state
 ///     role             1   -     bitmask of node sets: 1 top, 2 interface, 4 trailing edge, 8 leading edge
 ///     <field>          1   unit of the field: every field an effect publishes (glossary), e.g.

@@ -25,6 +25,7 @@ namespace fs = std::filesystem;
 using frictionlab::testing::BackgroundCli;
 using frictionlab::testing::frictionlab;
 using frictionlab::testing::read_text;
+using frictionlab::testing::run_outputs;
 using frictionlab::testing::wait_until;
 
 /// The every-observer scene (rupture detector, contact area, energy, VTK, tables), loaded for
@@ -41,18 +42,6 @@ std::vector<std::string> run_arguments(const std::string& output, const std::str
     return args;
 }
 
-/// Every output of a run but its record and checkpoints, by path relative to the directory.
-std::map<std::string, std::string> outputs(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-        if (!entry.is_regular_file()) continue;
-        const std::string name = entry.path().lexically_relative(dir).generic_string();
-        if (name == "run.yaml" || name.starts_with("checkpoint.")) continue;
-        files[name] = read_text(entry.path());
-    }
-    return files;
-}
-
 class Resume : public ::testing::Test {
 protected:
     /// The uninterrupted run every resumed one is compared with (each test process makes its own:
@@ -63,7 +52,7 @@ protected:
         fs::create_directories(reference_dir_);
         BackgroundCli cli(run_arguments("out"), reference_dir_);
         ASSERT_EQ(cli.wait(600), 0) << cli.output();
-        reference_ = outputs(reference_dir_ / "out");
+        reference_ = run_outputs(reference_dir_ / "out");
         ASSERT_GT(reference_.size(), 20u) << "the reference run wrote too few files";
     }
 
@@ -80,7 +69,7 @@ protected:
     frictionlab::testing::CliResult resume() { return frictionlab("run --resume out", dir_); }
 
     void expect_identical_to_reference() const {
-        const auto resumed = outputs(dir_ / "out");
+        const auto resumed = run_outputs(dir_ / "out");
         EXPECT_EQ(resumed.size(), reference_.size());
         for (const auto& [name, bytes] : reference_) {
             const auto it = resumed.find(name);
@@ -169,7 +158,7 @@ TEST_F(Resume, AdaptiveAndQuasiStaticSteppersResumeBitIdentically) {
         BackgroundCli uninterrupted(run_arguments("out", integrator), dir_ / "uninterrupted");
         ASSERT_EQ(uninterrupted.wait(600), 0) << uninterrupted.output();
         reference_dir_ = dir_ / "uninterrupted";
-        reference_ = outputs(reference_dir_ / "out");
+        reference_ = run_outputs(reference_dir_ / "out");
         auto cli = start_and_wait(std::chrono::milliseconds(150), run_arguments("out", integrator));
         cli->signal(SIGTERM);
         ASSERT_EQ(cli->wait(60), 143) << cli->output();

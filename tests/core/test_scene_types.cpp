@@ -39,6 +39,28 @@ private:
     Body body_;
 };
 
+/// A body in 2D or 3D, as its `dimension` says (ParamSpec::body_dimension).
+class FakeBlock final : public BulkModel {
+public:
+    struct Params {
+        int dimension = 2;
+    };
+    static constexpr std::string_view type = "fake_block";
+    static ParamSpec<Params> spec() {
+        ParamSpec<Params> s("A block in 2D or 3D that is never built.");
+        s.add("dimension", &Params::dimension, "Spatial dimension.").at_least(2).at_most(3);
+        s.dimensions({2, 3});
+        s.body_dimension([](const Params& p) { return p.dimension; });
+        return s;
+    }
+    FakeBlock(const Params&, const Context&) {}
+    const Body& body() const override { return body_; }
+    std::vector<std::unique_ptr<Effect>> effects(const Context&) override { return {}; }
+
+private:
+    Body body_;
+};
+
 class FakeEffect : public FrictionLaw {
 public:
     std::string describe() const override { return "fake"; }
@@ -81,6 +103,7 @@ public:
     static ParamSpec<Params> spec() {
         ParamSpec<Params> s("Coulomb friction.");
         s.add("mu", &Params::mu, "Friction coefficient.").unit("1").at_least(0);
+        s.dimensions({2, 3});
         return s;
     }
     Coulomb(const Params&, const Context&) {}
@@ -105,6 +128,7 @@ public:
         s.add("total_force", &Params::total_force, "Sum of the forces.").unit("N").greater_than(0).required();
         s.add("node_set", &Params::node_set, "Nodes pushed.");
         s.add("ramp_time", &Params::ramp_time, "Time to reach the full force.").unit("s").at_least(0);
+        s.dimensions({2, 3});
         return s;
     }
     FakeNormalLoad(const Params&, const Context&) {}
@@ -123,6 +147,7 @@ public:
         s.add("velocity", &Params::velocity, "Speed of the driver.").unit("m/s");
         s.add("stiffness", &Params::stiffness, "Spring constant.").unit("N/m").greater_than(0);
         s.add("sets", &Params::sets, "Node sets driven.").items_one_of({"top", "trailing_edge", "leading_edge"});
+        s.dimensions({2}, "pulls a column of nodes");
         return s;
     }
     FakeDriver(const Params&, const Context&) {}
@@ -137,6 +162,7 @@ public:
     static ParamSpec<Params> spec() {
         ParamSpec<Params> s("Fixed-step fourth-order Runge-Kutta.");
         s.add("dt", &Params::dt, "Time step.").unit("s").greater_than(0);
+        s.dimensions({2, 3});
         return s;
     }
     FakeRk4(const Params&, const Context&) {}
@@ -186,6 +212,7 @@ public:
 
 void register_scene_test_types(Registry& registry) {
     registry.add<FakeLattice>();
+    registry.add<FakeBlock>();
     registry.add<FakeJunctions>();
     registry.add<Coulomb>();
     registry.add<FakeNormalLoad>();

@@ -203,7 +203,7 @@ TEST(System, AStraightPathShowsItsStatesWithoutAStepOrAnEvaluation) {
     EXPECT_EQ(system.step_index(), 0);
     EXPECT_DOUBLE_EQ(system.time(), 0.5);
     EXPECT_DOUBLE_EQ(q.find_scalar("spring_force")->value, -5 * 0.1) << "linear: interpolated exactly";
-    EXPECT_DOUBLE_EQ(system.net_force()(0), -5 * 0.1);
+    EXPECT_DOUBLE_EQ(system.net_force()(0, 0), -5 * 0.1);
     // The work of the path so far: the trapezoid of F v over x from 0 to 0.1, -k x^2 / 2.
     EXPECT_NEAR(system.work()[0], -5 * 0.1 * 0.1 / 2, 1e-15);
     system.add_straight_path_work(2.0, end);

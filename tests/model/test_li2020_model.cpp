@@ -158,7 +158,8 @@ TEST(OnlyWhatTheSceneNames, ANonFiniteStateStopsTheRunNamingStepTimeBlockAndQuan
         SceneFixture f(scene("bare_lattice.yaml"));
         f.sim().begin_stage(0);
         for (int i = 0; i < 5; ++i) f.sim().step(1.0);
-        f.sim().system().initial_state()(3 * f.sim().system().layout().nodes + 200) = poison;  // vz of block 200
+        const StateLayout& layout = f.sim().system().layout();
+        f.sim().system().initial_state()(layout.velocity_index(200, 1)) = poison;  // vz of block 200
         try {
             f.sim().step(1.0);
             FAIL() << "a non-finite state went on";

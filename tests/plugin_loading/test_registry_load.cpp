@@ -51,8 +51,7 @@ TEST(RegistryLoad, GoodPluginTypesAreListedMadeAndUsed) {
     spdlog::logger log("test", sink);
 
     Body body;
-    body.x0 = Eigen::ArrayXd::LinSpaced(3, 0.0, 2.0);
-    body.z0 = Eigen::ArrayXd::Zero(3);
+    body.reference_position = planar_positions(Eigen::ArrayXd::LinSpaced(3, 0.0, 2.0), Eigen::ArrayXd::Zero(3));
     body.mass = Eigen::ArrayXd::Ones(3);
     Quantities quantities;
     Context ctx{log, 0, &body, &quantities, nullptr, "observers[0]"};
@@ -72,7 +71,7 @@ TEST(RegistryLoad, GoodPluginTypesAreListedMadeAndUsed) {
     auto push = registry.create<Loader>("test_constant_push", {{"force", 2.5}}, ctx);
     EXPECT_EQ(push->describe(), "constant push");
     Eigen::VectorXd y = Eigen::VectorXd::Zero(12), dy = Eigen::VectorXd::Zero(12);
-    const StateLayout layout{3, 0};
+    const StateLayout layout(3, 2, 0);
     ForceView f = forces_of(dy, layout);
     push->add_forces(view_of(y, layout, 0.0), f);
     EXPECT_TRUE((f.fx == 2.5).all());

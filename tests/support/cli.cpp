@@ -114,6 +114,17 @@ std::string read_text(const std::filesystem::path& file) {
     return s.str();
 }
 
+std::map<std::string, std::string> run_outputs(const std::filesystem::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+        if (!entry.is_regular_file()) continue;
+        const std::string name = entry.path().lexically_relative(dir).generic_string();
+        if (name == "run.yaml" || name.starts_with("checkpoint.")) continue;
+        files[name] = read_text(entry.path());
+    }
+    return files;
+}
+
 void expect_figure(const std::filesystem::path& dir, const std::string& name) {
     const auto png = dir / (name + ".png"), svg = dir / (name + ".svg");
     ASSERT_TRUE(std::filesystem::exists(png)) << png;

@@ -2,6 +2,7 @@
 // The frictionlab command as a user runs it, for tests.
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,10 @@ std::filesystem::path work_directory();
 
 /// The whole text of a file ("" if it cannot be read).
 std::string read_text(const std::filesystem::path& file);
+
+/// Every output of a run but its record (run.yaml) and checkpoints, by path relative to the
+/// run's directory: what a resumed run must write as the run never stopped did, byte for byte.
+std::map<std::string, std::string> run_outputs(const std::filesystem::path& dir);
 
 /// Checks that `<dir>/<name>.png` is a PNG image of some size and `<dir>/<name>.svg` a whole SVG
 /// document, as the plotting script draws every figure.

@@ -7,8 +7,7 @@ namespace frictionlab::testing {
 /// `n` nodes at the origin, each of `mass`; no node sets, bonds or cells.
 inline Body point_masses(Index n, double mass) {
     Body b;
-    b.x0 = Eigen::ArrayXd::Zero(n);
-    b.z0 = Eigen::ArrayXd::Zero(n);
+    b.reference_position = Eigen::ArrayXXd::Zero(n, 2);
     b.mass = Eigen::ArrayXd::Constant(n, mass);
     return b;
 }

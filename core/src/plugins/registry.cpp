@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace frictionlab {
 
@@ -22,6 +23,23 @@ std::string duplicate_in(const std::vector<TypeInfo>& types, std::size_t first) 
     return {};
 }
 }  // namespace
+
+bool TypeInfo::works_in(int dimension) const {
+    return std::find(dimensions.begin(), dimensions.end(), dimension) != dimensions.end();
+}
+
+std::string TypeInfo::dimensions_text() const {
+    std::vector<std::string> names;
+    for (const int d : dimensions) names.push_back(fmt::format("{}D", d));
+    const std::string text = names.size() == 1 ? names.front() + " only" : fmt::format("{}", fmt::join(names, " and "));
+    return dimension_limit.empty() ? text : fmt::format("{} ({})", text, dimension_limit);
+}
+
+void Registry::check_dimension(const TypeInfo& info, int dimension) {
+    if (!info.works_in(dimension))
+        throw InputError(fmt::format("{} type '{}' works in {}; this body is {}D", to_string(info.kind), info.type,
+                                     info.dimensions_text(), dimension));
+}
 
 Registry::Registry() = default;
 

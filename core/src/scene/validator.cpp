@@ -72,15 +72,25 @@ public:
         if (!root.IsMap()) return scene;
         read_header(top, scene);
         report_missing_sections(root, top);
-        if (auto bulk = entry(top, "bulk")) scene.bulk = read_component(Kind::bulk_model, *bulk, "bulk").spec;
-        if (auto friction = entry(top, "friction"))
-            scene.friction = read_component(Kind::friction_law, *friction, "friction").spec;
+        std::vector<ComponentRead> components;  // every component but the bulk model
+        ComponentRead bulk;
+        if (auto given = entry(top, "bulk")) bulk = read_component(Kind::bulk_model, *given, "bulk");
+        scene.bulk = bulk.spec;
+        if (auto friction = entry(top, "friction")) {
+            components.push_back(read_component(Kind::friction_law, *friction, "friction"));
+            scene.friction = components.back().spec;
+        }
         const auto loaders = read_components(Kind::loader, entry(top, "loaders"), "loaders");
-        if (auto integrator = entry(top, "integrator"))
-            scene.integrator = read_component(Kind::integrator, *integrator, "integrator").spec;
+        if (auto integrator = entry(top, "integrator")) {
+            components.push_back(read_component(Kind::integrator, *integrator, "integrator"));
+            scene.integrator = components.back().spec;
+        }
         scene.stages = read_stages(entry(top, "stages"));
         const auto observers = read_components(Kind::observer, entry(top, "observers"), "observers");
         if (auto checkpoint = entry(top, "checkpoint")) scene.checkpoint = read_checkpoint(*checkpoint);
+        components.insert(components.end(), loaders.begin(), loaders.end());
+        components.insert(components.end(), observers.begin(), observers.end());
+        check_dimensions(bulk, components);
         check_loader_stages(loaders);
         check_stage_parameters(observers, scene.stages);
         check_output_names(observers);
@@ -287,6 +297,26 @@ private:
             reporter_.error(here, key, "duplicate stage name " + quote(name) + ", first used by " + it->second);
         else
             stage_names_.push_back(name);
+    }
+
+    /// Every type must work in the dimension of the body the bulk model builds (ParamSpec::dimensions).
+    void check_dimensions(const ComponentRead& bulk, const std::vector<ComponentRead>& components) {
+        if (!bulk.info || !bulk.section.valid) return;
+        int dimension = 0;
+        try {
+            dimension = bulk.info->body_dimension(bulk.spec.values);
+        } catch (const std::exception&) {
+            return;  // the bulk model's own checks report its values
+        }
+        for (const auto& c : components) {
+            if (!c.info || c.info->works_in(dimension)) continue;
+            const auto type = c.section.given.find("type");
+            reporter_.error(
+                type != c.section.given.end() ? reporter_.where(type->second.value) : c.spec.where,
+                join_path(c.spec.path, "type"),
+                fmt::format("{} type {} works in {}, and the bulk model {} builds a {}D body", to_string(c.info->kind),
+                            quote(c.spec.type), c.info->dimensions_text(), quote(bulk.spec.type), dimension));
+        }
     }
 
     void check_loader_stages(const std::vector<ComponentRead>& loaders) {

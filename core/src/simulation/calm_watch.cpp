@@ -8,7 +8,7 @@ namespace frictionlab {
 
 double top_speed(const StageView& s, Index* node) {
     Index worst = 0;
-    const double speed = (s.vx.square() + s.vz.square()).sqrt().maxCoeff(&worst);
+    const double speed = s.velocity.square().rowwise().sum().sqrt().maxCoeff(&worst);
     if (node) *node = worst;
     return speed;
 }

@@ -24,11 +24,12 @@ namespace {
 /// Where the first non-finite value of the state is, said in the physics' terms.
 std::string locate_non_finite(const System& sys) {
     const StageView s = sys.state();
-    const std::pair<const char*, const Eigen::Map<const Eigen::ArrayXd>*> arrays[] = {
-        {"x", &s.x}, {"z", &s.z}, {"vx", &s.vx}, {"vz", &s.vz}};
-    for (const auto& [name, values] : arrays)
-        for (Index i = 0; i < values->size(); ++i)
-            if (!std::isfinite((*values)(i))) return fmt::format("{} of block {} is {}", name, i, (*values)(i));
+    for (const auto& [prefix, values] : {std::pair{"", &s.position}, std::pair{"v", &s.velocity}})
+        for (int axis = 0; axis < s.dimension(); ++axis)
+            for (Index i = 0; i < values->rows(); ++i)
+                if (!std::isfinite((*values)(i, axis)))
+                    return fmt::format("{}{} of block {} is {}", prefix, axis_name(axis, s.dimension()), i,
+                                       (*values)(i, axis));
     for (Index i = 0; i < s.aux.size(); ++i)
         if (!std::isfinite(s.aux(i))) return fmt::format("auxiliary variable {} is {}", i, s.aux(i));
     return "a value is not finite";
@@ -53,6 +54,11 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     bulk_ = located_in_scene(
         scene.bulk, [&] { return registry.create<BulkModel>(scene.bulk.type, scene.bulk.values, context("bulk")); });
     record_plugin(scene.bulk, Kind::bulk_model);
+    // The scene check judged every type against the dimension the bulk model declares: it must be the body's.
+    if (const int declared = registry.find(Kind::bulk_model, scene.bulk.type)->body_dimension(scene.bulk.values);
+        declared != bulk_->body().dimension())
+        throw InputError(fmt::format("bulk model '{}' declares {}D bodies (its spec's dimensions) but built a {}D one",
+                                     scene.bulk.type, declared, bulk_->body().dimension()));
 
     // Every other component is built even when one refuses, so that one pass names every change the
     // scene needs (design.md: fail early, precisely, all at once).
@@ -111,7 +117,7 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     system_->use_quantities(quantities_);
     for (auto& e : effects) system_->add_effect(std::move(e.effect), std::move(e.stages), std::move(e.label));
     Eigen::VectorXd& y = system_->initial_state();
-    Eigen::Ref<Eigen::ArrayXd> aux = y.tail(system_->layout().aux).array();
+    Eigen::Ref<Eigen::ArrayXd> aux = system_->layout().aux_variables(y).array();
     system_->for_each_effect([&](const Effect& e) { e.initialise_aux(aux); });
     check_step_count();
 }
@@ -279,7 +285,7 @@ void Simulation::check_bounded() const {
     const Body& body = system_->body();
     const double limit = runaway_factor * std::max(body.length, body.height);
     Index node = 0;
-    const double dx = (s.x - body.x0).abs().max((s.z - body.z0).abs()).maxCoeff(&node);
+    const double dx = (s.position - body.reference_position).abs().rowwise().maxCoeff().maxCoeff(&node);
     if (dx > limit)
         throw RunError(
             fmt::format("step {}, t = {:.9g} s: block {} has moved {:.3g} m from its reference position, "

@@ -153,7 +153,7 @@ bool step_map_unstable(const Integrator& integrator, const Map& jacobian, double
 class FrozenPipeline {
 public:
     FrozenPipeline(System& system, bool implicit_local_velocity)
-        : system_(system), y0_(system.y()), t_(system.time()), n_(system.layout().nodes), one_(y0_.size()) {
+        : system_(system), y0_(system.y()), t_(system.time()), layout_(system.layout()), one_(y0_.size()) {
         for (std::size_t k = 0; k < system.pipeline().size(); ++k) {
             implicit_.push_back(implicit_local_velocity && system.has_velocity_jacobian(k));
             any_implicit_ = any_implicit_ || implicit_.back();
@@ -169,16 +169,17 @@ public:
     std::size_t effects() const { return implicit_.size(); }
 
     /// Effect k's dy/dt at y. One whose local velocity dependence the integrator treats implicitly
-    /// sees the velocities of y0 instead: what is left is the part the explicit scheme must resolve.
+    /// sees the velocities of y0 (along x, Effect::has_velocity_jacobian) instead: what is left is the
+    /// part the explicit scheme must resolve.
     void effect_rate(std::size_t k, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
         if (!implicit_[k]) {
             derivative(system_, t_, y, dy, loaded(Evaluation::outside_step(k)));
             return;
         }
         frozen_ = y;
-        frozen_.segment(2 * n_, n_) = y0_.segment(2 * n_, n_);
+        layout_.velocities_along(frozen_, 0) = layout_.velocities_along(y0_, 0);
         derivative(system_, t_, frozen_, dy, loaded(Evaluation::outside_step(k)));
-        dy.head(2 * n_) = y.segment(2 * n_, 2 * n_);
+        layout_.positions(dy) = layout_.velocities(y);
     }
     /// The whole pipeline's dy/dt at y, effect by effect in its order (each reads what the earlier
     /// ones published) when some are frozen in velocity, else the whole derivative() at once.
@@ -187,13 +188,12 @@ public:
             derivative(system_, t_, y, dy, loaded(Evaluation()));
             return;
         }
-        const Index rest = y.size() - 2 * n_;
         dy.setZero(y.size());
         for (std::size_t k = 0; k < implicit_.size(); ++k) {
             effect_rate(k, y, one_);
-            dy.tail(rest) += one_.tail(rest);
+            layout_.after_positions(dy) += layout_.after_positions(one_);
         }
-        dy.head(2 * n_) = y.segment(2 * n_, 2 * n_);
+        layout_.positions(dy) = layout_.velocities(y);
     }
 
 private:
@@ -206,7 +206,7 @@ private:
     System& system_;
     const Eigen::VectorXd y0_;
     const double t_;
-    const Index n_;
+    const StateLayout layout_;
     std::vector<bool> implicit_;
     Eigen::VectorXd one_;
     bool any_implicit_ = false;
@@ -239,7 +239,7 @@ StabilityEstimate estimate_stable_step(System& system, const Integrator& integra
     FrozenPipeline pipeline(system, integrator.implicit_in_local_velocity());
     StabilityEstimate e = estimate(system, pipeline, integrator.stability_radius());
     const Eigen::VectorXd& y0 = pipeline.y0();
-    const Index positions = 2 * system.layout().nodes, size = y0.size();
+    const Index positions = system.layout().dof(), size = y0.size();
     const Map jacobian = jacobian_product([&](const auto& y, auto& dy) { pipeline.rate(y, dy); }, y0);
     Eigen::VectorXd probe;
     if (!(e.lambda_max > 0) || !integrator.linearised_step(jacobian, 0.0, positions, y0, probe)) return e;

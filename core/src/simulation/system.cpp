@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "frictionlab/base/errors.hpp"
 #include "frictionlab/base/hot_kernel.hpp"
 #include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/base/state_archive.hpp"
@@ -17,14 +20,20 @@ void scale(double* __restrict f, const double* __restrict inverse_mass, Index n)
 }
 }  // namespace
 
+namespace {
+const Body& checked(const Body& body) {
+    if (const std::string problem = body.contact_frame.problem(body.dimension()); !problem.empty())
+        throw InputError(fmt::format("the bulk model's body has {} axes, and {}", body.dimension(), problem));
+    return body;
+}
+}  // namespace
+
 System::System(const Body& body, Index aux_size)
-    : body_(body), layout_{body.size(), aux_size}, inverse_mass_(body.mass.inverse()) {
-    const Index n = layout_.nodes;
+    : body_(checked(body)), layout_(body.size(), body.dimension(), aux_size), inverse_mass_(body.mass.inverse()) {
     y_ = Eigen::VectorXd::Zero(layout_.size());
-    y_.segment(0, n) = body.x0.matrix();
-    y_.segment(n, n) = body.z0.matrix();
+    layout_.positions(y_) = body.reference_position.reshaped().matrix();
     scratch_ = Eigen::VectorXd::Zero(layout_.size());
-    net_force_ = Eigen::VectorXd::Zero(2 * n);
+    net_force_ = Eigen::ArrayXXd::Zero(layout_.nodes, layout_.dimension);
 }
 
 void System::add_effect(std::unique_ptr<Effect> effect, std::vector<std::string> active_in, std::string label) {
@@ -77,12 +86,11 @@ void System::add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::Ve
 void System::add_work(std::size_t part, const StageView& s, double weight) {
     // The part alone into a scratch vector, to know its power F_e . v at this stage. The forces
     // that move the state are summed apart, as without accounting, so accounting changes no result.
-    const Index n = layout_.nodes;
-    effect_force_.tail(layout_.size() - 2 * n).setZero();
+    layout_.after_positions(effect_force_).setZero();
     ForceView fe = forces_of(effect_force_, layout_);
     parts_[part]->add_forces(s, fe);
-    const Eigen::Map<const Eigen::VectorXd> velocity(s.vx.data(), 2 * n);  // [vx | vz]
-    pending_work_[part] += weight * effect_force_.segment(2 * n, 2 * n).dot(velocity);
+    const Eigen::Map<const Eigen::VectorXd> velocity(s.velocity.data(), layout_.dof());
+    pending_work_[part] += weight * layout_.velocities(effect_force_).dot(velocity);
 }
 
 bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx) {
@@ -165,8 +173,7 @@ bool System::quasi_static_regime(const StageView& s) const {
 void System::assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness) {
     triplets_.clear();
     for (const Slot* slot : active_) slot->effect->add_stiffness(s, triplets_);
-    const Index dof = 2 * layout_.nodes;
-    stiffness.resize(dof, dof);
+    stiffness.resize(layout_.dof(), layout_.dof());
     stiffness.setFromTriplets(triplets_.begin(), triplets_.end());
 }
 
@@ -178,14 +185,14 @@ double System::foreseen_event_time(const StageView& s) const {
 
 void System::add_straight_path_work(double t1, const Eigen::VectorXd& y1) {
     if (!work_accounting()) return;
-    const Index n = layout_.nodes;
     const double h = t1 - t_;
     if (!(h > 0)) return;
+    const StateLayout& l = layout_;
     path_state_ = y_;
-    path_state_.segment(2 * n, 2 * n) = (y1.head(2 * n) - y_.head(2 * n)) / h;
+    l.velocities(path_state_) = (l.positions(y1) - l.positions(y_)) / h;
     for (const std::size_t k : active_parts_) add_work(k, view_of(path_state_, layout_, t_), h / 2);
-    path_state_.head(2 * n) = y1.head(2 * n);
-    path_state_.tail(layout_.aux) = y1.tail(layout_.aux);
+    l.positions(path_state_) = l.positions(y1);
+    l.aux_variables(path_state_) = l.aux_variables(y1);
     for (const std::size_t k : active_parts_) add_work(k, view_of(path_state_, layout_, t1), h / 2);
 }
 
@@ -241,9 +248,9 @@ void System::refresh() {
 
 void System::evaluate_shown(double t, const Eigen::VectorXd& y) {
     derivative(*this, t, y, scratch_, Evaluation::outside_step());
-    const Index n = layout_.nodes;
-    net_force_.head(n) = (scratch_.segment(2 * n, n).array() * body_.mass).matrix();
-    net_force_.tail(n) = (scratch_.segment(3 * n, n).array() * body_.mass).matrix();
+    const ForceView accelerations = forces_of(scratch_, layout_);
+    for (int axis = 0; axis < layout_.dimension; ++axis)
+        net_force_.col(axis) = accelerations.force.col(axis) * body_.mass;
 }
 
 std::vector<std::string> System::pipeline() const {
@@ -254,18 +261,19 @@ std::vector<std::string> System::pipeline() const {
 
 void derivative(System& system, double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy, const Evaluation& how) {
     const StateLayout& layout = system.layout();
-    const Index n = layout.nodes;
+    const Index n = layout.nodes, dof = layout.dof();
     dy.resize(y.size());
-    for_each_chunk(2 * n, [&](Index from, Index to) {
-        dy.segment(from, to - from) = y.segment(2 * n + from, to - from);
-        dy.segment(2 * n + from, to - from).setZero();
+    // dy = [velocities | 0 ...] chunk by chunk: the velocities are y's entries one dof further on.
+    for_each_chunk(dof, [&](Index from, Index to) {
+        dy.segment(from, to - from) = y.segment(dof + from, to - from);
+        dy.segment(dof + from, to - from).setZero();
     });
-    dy.tail(layout.size() - 4 * n).setZero();
-    system.add_forces(t, y, dy.tail(layout.size() - 2 * n), how);
+    layout.aux_variables(dy).setZero();
+    system.add_forces(t, y, layout.after_positions(dy), how);
     ForceView f = forces_of(dy, layout);
     for_each_chunk(n, [&](Index from, Index to) {
-        scale(f.fx.data() + from, system.inverse_mass().data() + from, to - from);
-        scale(f.fz.data() + from, system.inverse_mass().data() + from, to - from);
+        for (int axis = 0; axis < layout.dimension; ++axis)
+            scale(&f.force(from, axis), system.inverse_mass().data() + from, to - from);
     });
 }
 

@@ -40,14 +40,13 @@ int main(int argc, char** argv) {
 
         spdlog::logger log("check_template");  // no sinks: quiet
         fl::Body body;
-        body.x0 = Eigen::ArrayXd::LinSpaced(2, 0.0, 1.0);
-        body.z0 = Eigen::ArrayXd::Zero(2);
+        body.reference_position = fl::planar_positions(Eigen::ArrayXd::LinSpaced(2, 0.0, 1.0), Eigen::ArrayXd::Zero(2));
         body.mass = Eigen::ArrayXd::Ones(2);
         fl::Quantities quantities;
         fl::System system(body, 0);
         Eigen::VectorXd& y = system.initial_state();
-        y.segment(4, 2) << 3.0, 0.5;  // vx
-        y.segment(6, 2) << 4.0, 0.5;  // vz
+        system.layout().velocities_along(y, 0) << 3.0, 0.5;
+        system.layout().velocities_along(y, 1) << 4.0, 0.5;
         const fl::StageInfo stage{"load", 0, 0.0, 1.0, true};
         fl::RunInfo run_info;
         run_info.framework_version = "0.0.0-check";

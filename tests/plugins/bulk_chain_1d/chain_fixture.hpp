@@ -24,7 +24,7 @@ struct ChainSystem {
     const Body& body() const { return chain.body(); }
     Index size() const { return chain.body().size(); }
     /// x displacement of every block from its reference position.
-    Eigen::ArrayXd u() const { return system.y().head(size()).array() - body().x0; }
+    Eigen::ArrayXd u() const { return system.state().x - body().x0(); }
     /// Kinetic energy plus every effect's stored energy.
     double energy() const {
         const StageView s = system.state();
@@ -38,14 +38,13 @@ struct ChainSystem {
     System system;
 };
 
-/// [fx | fz] of one effect on n nodes at rest positions with velocities (vx, vz).
-inline Eigen::VectorXd velocity_forces(Effect& e, const Eigen::ArrayXd& vx, const Eigen::ArrayXd& vz) {
-    const Index n = vx.size();
-    const StateLayout layout{n, 0};
+/// The forces [nnode, 2] (fx, fz) of one effect on n nodes at rest positions with velocities (vx, vz).
+inline Eigen::ArrayXXd velocity_forces(Effect& e, const Eigen::ArrayXd& vx, const Eigen::ArrayXd& vz) {
+    const StateLayout layout(vx.size(), 2, 0);
     Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size());
-    y.segment(2 * n, n) = vx.matrix();
-    y.segment(3 * n, n) = vz.matrix();
-    return test_support::forces_of_effect(e, y, layout, 0);
+    layout.velocities_along(y, 0) = vx.matrix();
+    layout.velocities_along(y, 1) = vz.matrix();
+    return layout.per_node(test_support::forces_of_effect(e, y, layout, 0));
 }
 
 }  // namespace frictionlab::testing

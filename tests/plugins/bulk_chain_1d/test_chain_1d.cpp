@@ -27,8 +27,8 @@ TEST(Chain1d, BodyFollowsTheBarItStandsFor) {
     EXPECT_NEAR(b.bond_stiffness / 99, 3e9 * 0.005 * 0.02 / 0.1, 1e-6);
     EXPECT_TRUE((b.mass == 0.0118 / 100).all());
     for (Index i = 0; i < 100; ++i) {
-        EXPECT_NEAR(b.x0(i), i * a, 1e-15) << i;
-        EXPECT_EQ(b.z0(i), 0.0) << i;
+        EXPECT_NEAR(b.x0()(i), i * a, 1e-15) << i;
+        EXPECT_EQ(b.z0()(i), 0.0) << i;
     }
     const double m = 0.0118 / 100, k = b.bond_stiffness;
     EXPECT_DOUBLE_EQ(chain.damping_coefficient(), std::sqrt(0.5 * k * m));

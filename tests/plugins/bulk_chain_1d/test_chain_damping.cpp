@@ -20,15 +20,15 @@ TEST(ChainDamping, ResistsRelativeMotionOfNeighboursOnly) {
     // v_i = w i: every dashpot is stretched at rate w; interior forces cancel, the ends feel -+ eta w.
     const double w = 0.01;
     const Eigen::ArrayXd v = w * Eigen::ArrayXd::LinSpaced(6, 0, 5);
-    const Eigen::VectorXd f = velocity_forces(damping, v, Eigen::ArrayXd::Zero(6));
-    EXPECT_NEAR(f(0), eta * w, 1e-15);
-    EXPECT_NEAR(f(5), -eta * w, 1e-15);
-    EXPECT_LT(f.segment(1, 4).cwiseAbs().maxCoeff(), 1e-15);
+    const Eigen::ArrayXXd f = velocity_forces(damping, v, Eigen::ArrayXd::Zero(6));
+    EXPECT_NEAR(f(0, 0), eta * w, 1e-15);
+    EXPECT_NEAR(f(5, 0), -eta * w, 1e-15);
+    EXPECT_LT(f.col(0).segment(1, 4).abs().maxCoeff(), 1e-15);
     // It dissipates: power sum f v = -eta sum (v_{i+1} - v_i)^2.
     const Eigen::ArrayXd wiggle = (Eigen::ArrayXd(6) << 0.1, -0.2, 0.05, 0.3, 0.0, -0.1).finished();
-    const Eigen::VectorXd g = velocity_forces(damping, wiggle, Eigen::ArrayXd::Zero(6));
+    const Eigen::ArrayXXd g = velocity_forces(damping, wiggle, Eigen::ArrayXd::Zero(6));
     const double dissipation = eta * (wiggle.tail(5) - wiggle.head(5)).square().sum();
-    EXPECT_NEAR(g.head(6).dot(wiggle.matrix()), -dissipation, 1e-14);
+    EXPECT_NEAR(g.col(0).matrix().dot(wiggle.matrix()), -dissipation, 1e-14);
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ TEST(ChainDynamics, NormalModesOscillateAtTheDiscreteDispersionFrequency) {
         const double omega = omega_max(b) * std::sin(std::numbers::pi * n / (2.0 * N)), A = 1e-7;
         Eigen::ArrayXd mode(N);
         for (Index i = 0; i < N; ++i) mode(i) = std::cos(std::numbers::pi * n * (i + 0.5) / N);
-        s.system.initial_state().head(N) += (A * mode).matrix();
+        s.system.layout().positions_along(s.system.initial_state(), 0) += (A * mode).matrix();
         test_support::Rk4 rk4(s.system);
         const double period = 2 * std::numbers::pi / omega, dt = period / 2000;
         double worst = 0;
@@ -60,8 +60,7 @@ TEST(ChainDynamics, NormalModesOscillateAtTheDiscreteDispersionFrequency) {
 void shake(ChainSystem& s, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> v(0.0, 1e-3);
-    const Index n = s.size();
-    for (Index q = 2 * n; q < 4 * n; ++q) s.system.initial_state()(q) = v(rng);
+    for (double& velocity : s.system.layout().velocities(s.system.initial_state())) velocity = v(rng);
 }
 
 // RK4 removes a fraction (omega dt)^6/72 of a mode's energy per step: at omega_max dt = 0.02 that is

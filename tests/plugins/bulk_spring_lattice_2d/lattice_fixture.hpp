@@ -16,16 +16,23 @@ struct LatticeFixture {
 
     const Body& body() const { return lattice.body(); }
     Index nodes() const { return body().size(); }
-    StateLayout layout() const { return {nodes(), 0}; }
+    StateLayout layout() const { return {nodes(), body().dimension(), 0}; }
     Index node(Index ix, Index iz) const { return lattice.grid().node(ix, iz); }
 
-    /// [x | z | vx | vz] at the reference positions, at rest.
+    /// The state at the reference positions, at rest.
     Eigen::VectorXd reference_state() const {
         Eigen::VectorXd y = Eigen::VectorXd::Zero(layout().size());
-        y.segment(0, nodes()) = body().x0.matrix();
-        y.segment(nodes(), nodes()) = body().z0.matrix();
+        layout().positions(y) = body().reference_position.reshaped().matrix();
         return y;
     }
+    /// Node i's position (velocity) along `axis` in a state y; its force along `axis` in forces F.
+    double& position(Eigen::VectorXd& y, Index i, int axis) const { return y(layout().position_index(i, axis)); }
+    double& velocity(Eigen::VectorXd& y, Index i, int axis) const { return y(layout().velocity_index(i, axis)); }
+    double position(const Eigen::VectorXd& y, Index i, int axis) const { return y(layout().position_index(i, axis)); }
+    double velocity(const Eigen::VectorXd& y, Index i, int axis) const { return y(layout().velocity_index(i, axis)); }
+    double force(const Eigen::VectorXd& F, Index i, int axis) const { return F(layout().position_index(i, axis)); }
+    /// The forces F (forces() below) along one axis: fx, fz.
+    auto forces_along(const Eigen::VectorXd& F, int axis) const { return layout().positions_along(F, axis); }
 
     /// Positions displaced by the field (ux, uz) = u(x0 - xc, z0 - zc) about the centre.
     template <class Displacement>
@@ -33,25 +40,25 @@ struct LatticeFixture {
         Eigen::VectorXd y = reference_state();
         const double xc = body().length / 2, zc = body().height / 2;
         for (Index i = 0; i < nodes(); ++i) {
-            const auto [ux, uz] = u(body().x0(i) - xc, body().z0(i) - zc);
-            y(i) += ux;
-            y(nodes() + i) += uz;
+            const auto [ux, uz] = u(body().x0()(i) - xc, body().z0()(i) - zc);
+            position(y, i, 0) += ux;
+            position(y, i, 1) += uz;
         }
         return y;
     }
 
-    /// [fx | fz] of one effect at state y.
+    /// The forces of one effect at state y, laid out as the positions ([fx | fz]).
     Eigen::VectorXd forces(Effect& e, const Eigen::VectorXd& y) const {
         return evaluated(y, [&](const StageView& s, ForceView& f) { e.add_forces(s, f); });
     }
-    /// [fx | fz] of the springs and the damping as the lattice hands them to the system: one effect.
+    /// The forces of the springs and the damping as the lattice hands them to the system: one effect.
     Eigen::VectorXd bond_forces(const Eigen::VectorXd& y) { return forces(*effects.at(0), y); }
     template <class Evaluate>
     Eigen::VectorXd evaluated(const Eigen::VectorXd& y, Evaluate evaluate) const {
         Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout().size());
         ForceView f = forces_of(dy, layout());
         evaluate(view_of(y, layout(), 0.0), f);
-        return dy.segment(2 * nodes(), 2 * nodes());
+        return layout().velocities(dy);
     }
 
     /// The parts of the lattice's one effect (LatticeBonds), or that effect itself without damping.

@@ -17,13 +17,13 @@ constexpr double production_dt = 2e-7;  // Li2020 Sec. 3.1
 
 /// Kinetic energy plus the elastic energy of Eq. 1 springs, (k/2)(r - l)^2 per bond.
 double total_energy(const Body& b, const Eigen::VectorXd& y) {
-    const Index n = b.size();
-    const auto vx = y.segment(2 * n, n).array(), vz = y.segment(3 * n, n).array();
-    double energy = 0.5 * (b.mass * (vx.square() + vz.square())).sum();
+    const StateLayout layout(b.size(), b.dimension(), 0);
+    const StageView s = view_of(y, layout, 0);
+    double energy = 0.5 * (b.mass * (s.vx.square() + s.vz.square())).sum();
     for (const auto& [i, j] : b.bonds) {
-        const double l = std::hypot(b.x0(j) - b.x0(i), b.z0(j) - b.z0(i));
+        const double l = std::hypot(b.x0()(j) - b.x0()(i), b.z0()(j) - b.z0()(i));
         const double k = l > 1.2 * b.spacing ? b.bond_stiffness / 2 : b.bond_stiffness;
-        const double r = std::hypot(y(j) - y(i), y(n + j) - y(n + i));
+        const double r = std::hypot(s.x(j) - s.x(i), s.z(j) - s.z(i));
         energy += 0.5 * k * (r - l) * (r - l);
     }
     return energy;
@@ -33,10 +33,10 @@ double total_energy(const Body& b, const Eigen::VectorXd& y) {
 void set_random_velocities(const Body& b, Eigen::VectorXd& y, double amplitude, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> v(0.0, amplitude);
-    const Index n = b.size();
-    for (Index c = 2; c < 4; ++c) {
-        auto vc = y.segment(c * n, n).array();
-        for (Index i = 0; i < n; ++i) vc(i) = v(rng);
+    const StateLayout layout(b.size(), b.dimension(), 0);
+    for (int axis = 0; axis < layout.dimension; ++axis) {
+        auto vc = layout.velocities_along(y, axis).array();
+        for (Index i = 0; i < vc.size(); ++i) vc(i) = v(rng);
         vc -= vc.mean();
     }
 }
@@ -118,9 +118,12 @@ double pulse_speed(bool transverse) {
     p.springs = LatticeSprings::Law::small_strain;  // linear waves
     FreeLattice free(p);
     const Body& b = free.fixture.body();
-    const Index n = b.size(), component = transverse ? n : 0;
-    free.system.initial_state().segment(component, n).array() += 1e-7 * (-((b.x0 - x_start) / width).square()).exp();
-    const Index station = component + free.fixture.node(static_cast<Index>((x_start + distance) / l + 0.5), p.nz / 2);
+    const int axis = transverse ? 1 : 0;
+    const StateLayout& layout = free.system.layout();
+    layout.positions_along(free.system.initial_state(), axis).array() +=
+        1e-7 * (-((b.x0() - x_start) / width).square()).exp();
+    const Index station =
+        layout.position_index(free.fixture.node(static_cast<Index>((x_start + distance) / l + 0.5), p.nz / 2), axis);
     test_support::Rk4 rk4(free.system);
     std::vector<double> u{free.system.y()(station)};
     // Stop before the pulses reflected at the free ends (path 0.15 m) reach the station.

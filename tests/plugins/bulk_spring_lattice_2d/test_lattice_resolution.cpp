@@ -47,11 +47,10 @@ TEST(LatticeResolution, FinerLatticesKeepTheDensityAndTheViscosity) {
 /// vx = rate * z: the summed x-force on the top row over the slider's length and width.
 double top_shear_stress(LatticeFixture& f, double rate) {
     Eigen::VectorXd y = f.reference_state();
-    const Index n = f.nodes();
-    for (Index i = 0; i < n; ++i) y(2 * n + i) = rate * f.body().z0(i);
+    f.layout().velocities_along(y, 0) = rate * f.body().z0().matrix();
     const Eigen::VectorXd F = f.forces(f.damping(), y);
     double fx = 0;
-    for (Index i : f.body().nodes("top")) fx += F(i);
+    for (Index i : f.body().nodes("top")) fx += f.force(F, i, 0);
     return -fx / (f.body().length * f.body().width);
 }
 

@@ -108,19 +108,19 @@ TEST(LatticeSprings, SmallStrainRotationActsAsIsotropicCompression) {
 /// The forces of Li2020 Eq. 1 (or its linearisation), bond by bond from the body's bond list.
 Eigen::VectorXd per_bond_reference(const LatticeFixture& f, const Eigen::VectorXd& y, bool geometric) {
     const Body& b = f.body();
-    const Index n = f.nodes();
-    Eigen::VectorXd F = Eigen::VectorXd::Zero(2 * n);
+    Eigen::VectorXd F = Eigen::VectorXd::Zero(f.layout().dof());
+    const auto x = [&](Index i, int a) { return f.position(y, i, a); };
     for (const auto& [i, j] : b.bonds) {
-        const Eigen::Vector2d ref(b.x0(j) - b.x0(i), b.z0(j) - b.z0(i));
-        const Eigen::Vector2d d(y(j) - y(i), y(n + j) - y(n + i));
+        const Eigen::Vector2d ref(b.x0()(j) - b.x0()(i), b.z0()(j) - b.z0()(i));
+        const Eigen::Vector2d d(x(j, 0) - x(i, 0), x(j, 1) - x(i, 1));
         const double l = ref.norm(), k = l > 1.2 * b.spacing ? b.bond_stiffness / 2 : b.bond_stiffness;
         const Eigen::Vector2d e = ref / l;
         const Eigen::Vector2d Fij =
             geometric ? Eigen::Vector2d(k * (d.norm() - l) * d / d.norm()) : Eigen::Vector2d(k * (d - ref).dot(e) * e);
-        F(i) += Fij.x();
-        F(n + i) += Fij.y();
-        F(j) -= Fij.x();
-        F(n + j) -= Fij.y();
+        for (int a = 0; a < 2; ++a) {
+            F(f.layout().position_index(i, a)) += Fij(a);
+            F(f.layout().position_index(j, a)) -= Fij(a);
+        }
     }
     return F;
 }
@@ -129,7 +129,8 @@ Eigen::VectorXd randomly_deformed(const LatticeFixture& f, double amplitude, uns
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-amplitude, amplitude);
     Eigen::VectorXd y = f.reference_state();
-    for (Index i = 0; i < 2 * f.nodes(); ++i) y(i) += u(rng);
+    auto q = f.layout().positions(y);
+    for (Index i = 0; i < q.size(); ++i) q(i) += u(rng);
     return y;
 }
 
@@ -140,8 +141,8 @@ TEST(LatticeSprings, BondFamiliesEqualThePerBondLoop) {
         const Eigen::VectorXd F = f.forces(f.springs(), y), ref = per_bond_reference(f, y, law == "geometric");
         EXPECT_LE((F - ref).cwiseAbs().maxCoeff(), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
         // Newton's third law: internal forces sum to zero.
-        EXPECT_LE(std::abs(F.head(f.nodes()).sum()), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
-        EXPECT_LE(std::abs(F.tail(f.nodes()).sum()), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
+        EXPECT_LE(std::abs(f.forces_along(F, 0).sum()), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
+        EXPECT_LE(std::abs(f.forces_along(F, 1).sum()), 1e-12 * ref.cwiseAbs().maxCoeff()) << law;
     }
 }
 
@@ -166,10 +167,11 @@ TEST(LatticeSprings, BondsBeyondTheSeriesBoundAreFoundWhereverTheyMove) {
     // Every node within 1.5 l of (xc, zc) moved by 5 % of l: its bonds strain far beyond the bound.
     auto poked = [&](std::initializer_list<std::pair<double, double>> centres) {
         Eigen::VectorXd y = randomly_deformed(f, 3e-4 * l, 5);
-        for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = 1e-3 * std::cos(0.11 * static_cast<double>(i));
+        auto v = f.layout().velocities(y);
+        for (Index i = 0; i < v.size(); ++i) v(i) = 1e-3 * std::cos(0.11 * static_cast<double>(v.size() + i));
         for (const auto& [xc, zc] : centres)
             for (Index i = 0; i < f.nodes(); ++i)
-                if (std::hypot(f.body().x0(i) - xc, f.body().z0(i) - zc) < 1.5 * l) y(i) += 0.05 * l;
+                if (std::hypot(f.body().x0()(i) - xc, f.body().z0()(i) - zc) < 1.5 * l) f.position(y, i, 0) += 0.05 * l;
         return y;
     };
     const double left = 0.1 * f.body().length, right = 0.8 * f.body().length, mid = f.body().height / 2;
@@ -194,7 +196,7 @@ TEST(LatticeSprings, InOnePassWithTheBondDampingEqualsBothPasses) {
     std::uniform_real_distribution<double> u(-0.01, 0.01);
     for (double amplitude : {1e-4, 0.1}) {
         Eigen::VectorXd y = randomly_deformed(f, amplitude * f.body().spacing, 13);
-        for (Index i = 2 * f.nodes(); i < 4 * f.nodes(); ++i) y(i) = u(rng);  // m/s
+        for (double& v : f.layout().velocities(y)) v = u(rng);  // m/s
         const Eigen::VectorXd damping = f.forces(f.damping(), y), both = f.forces(f.springs(), y) + damping;
         const Eigen::VectorXd one_pass = f.bond_forces(y);
         // Round-off of the sum only; leaving out the dashpots would be off by |damping|.
@@ -219,7 +221,8 @@ TEST(LatticeSprings, OnePassOnlyForGeometricSpringsWithFullVectorDampingOfTheSam
     EXPECT_FALSE(geometric.springs().can_carry(other.damping()));  // another lattice's dashpots
     for (LatticeFixture* f : {&small_strain, &bond_projected}) {
         Eigen::VectorXd y = randomly_deformed(*f, 1e-3 * f->body().spacing, 3);
-        for (Index i = 2 * f->nodes(); i < 4 * f->nodes(); ++i) y(i) = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+        auto v = f->layout().velocities(y);
+        for (Index i = 0; i < v.size(); ++i) v(i) = 1e-3 * std::sin(0.37 * static_cast<double>(v.size() + i));
         EXPECT_EQ(f->bond_forces(y), f->forces(f->springs(), y) + f->forces(f->damping(), y));
     }
 }

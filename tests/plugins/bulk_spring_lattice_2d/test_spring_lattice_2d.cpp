@@ -25,8 +25,8 @@ TEST(SpringLattice2d, BodyFollowsLi2020Defaults) {
     for (Index iz = 0; iz < 9; ++iz)
         for (Index ix = 0; ix < 41; ++ix) {
             const Index i = ix + 41 * iz;
-            EXPECT_NEAR(b.x0(i), ix * 0.0025, 1e-15);
-            EXPECT_NEAR(b.z0(i), iz * 0.0025, 1e-15);
+            EXPECT_NEAR(b.x0()(i), ix * 0.0025, 1e-15);
+            EXPECT_NEAR(b.z0()(i), iz * 0.0025, 1e-15);
         }
 }
 
@@ -60,13 +60,14 @@ TEST(SpringLattice2d, ConnectivityCoversEveryBondOnceAndCellsAreCounterClockwise
     std::set<std::pair<Index, Index>> seen;
     for (const auto& [i, j] : b.bonds) {
         EXPECT_TRUE(seen.insert({std::min(i, j), std::max(i, j)}).second) << "duplicate bond " << i << "-" << j;
-        const double d = std::hypot(b.x0(j) - b.x0(i), b.z0(j) - b.z0(i));
+        const double d = std::hypot(b.x0()(j) - b.x0()(i), b.z0()(j) - b.z0()(i));
         EXPECT_TRUE(std::abs(d - b.spacing) < 1e-12 || std::abs(d - std::sqrt(2.0) * b.spacing) < 1e-12);
     }
     ASSERT_EQ(b.cells.size(), (nx - 1) * (nz - 1));
     for (const auto& c : b.cells) {
         double twice_area = 0;  // shoelace: positive for counter-clockwise in the x-z plane
-        for (int k = 0; k < 4; ++k) twice_area += b.x0(c[k]) * b.z0(c[(k + 1) % 4]) - b.x0(c[(k + 1) % 4]) * b.z0(c[k]);
+        for (int k = 0; k < 4; ++k)
+            twice_area += b.x0()(c[k]) * b.z0()(c[(k + 1) % 4]) - b.x0()(c[(k + 1) % 4]) * b.z0()(c[k]);
         EXPECT_NEAR(twice_area, 2 * b.spacing * b.spacing, 1e-15);
     }
 }

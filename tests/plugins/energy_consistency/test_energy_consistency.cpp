@@ -32,7 +32,7 @@ constexpr double relative_tolerance = 1e-8;
 double gradient_mismatch(Effect& e, const StateLayout& layout, Eigen::VectorXd y, double t, double h) {
     const Eigen::VectorXd force = test_support::forces_of_effect(e, y, layout, t);
     double worst = 0;
-    for (Index q = 0; q < 2 * layout.nodes; ++q) {
+    for (Index q = 0; q < layout.dof(); ++q) {  // the positions, laid out as the forces
         const double q0 = y(q);
         y(q) = q0 + h;
         const double plus = y(q), e_plus = e.potential_energy(view_of(y, layout, t));
@@ -87,11 +87,11 @@ TEST(EnergyConsistency, DrivingSpringForceIsMinusTheGradientOfItsEnergy) {
         DrivingSpring spring(p, s.context());
         EXPECT_EQ(spring.potential_energy(view_of(s.y, s.layout, 1e-3)), 0.0) << "stores nothing before its stage";
         Eigen::VectorXd reference = Eigen::VectorXd::Zero(s.layout.size());
-        reference.head(2 * s.layout.nodes) = s.y.head(2 * s.layout.nodes);
+        s.layout.positions(reference) = s.layout.positions(s.y);
         spring.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(reference, s.layout, 0.0));
         // 1e-4 s later the far end has moved 1 um; the driving point has moved by another random u.
         Eigen::VectorXd y = s.y;
-        for (const auto& a : spring.attachment()) y(a.node) += 0.3 * u;
+        for (const auto& a : spring.attachment()) test_support::x_of(y, s.layout, a.node) += 0.3 * u;
         EXPECT_LT(gradient_mismatch(spring, s.layout, y, 1e-4, 1e-3 * u), relative_tolerance) << "height " << height;
         const double stretch = 0.01 * 1e-4 - 0.3 * u;
         EXPECT_NEAR(spring.potential_energy(view_of(y, s.layout, 1e-4)), 0.5 * p.stiffness * stretch * stretch,
@@ -125,7 +125,7 @@ TEST(EnergyConsistency, PlateSpringsForceIsMinusTheGradientOfTheirEnergy) {
     p.velocity = 0.01;
     PlateSprings plate(p, s.context());
     Eigen::VectorXd reference = Eigen::VectorXd::Zero(s.layout.size());
-    reference.head(s.layout.nodes) = s.bulk.body().x0.matrix();
+    s.layout.positions_along(reference, 0) = s.bulk.body().x0().matrix();
     plate.begin_stage(StageInfo{"load", 1, 0.0, 1.0, true}, view_of(reference, s.layout, 0.0));
     // 1e-4 s later the plate has moved 1 um, each block by its own random u.
     EXPECT_LT(gradient_mismatch(plate, s.layout, s.y, 1e-4, 1e-3 * u), relative_tolerance);
@@ -137,12 +137,12 @@ using testing::Rig;
 
 /// dE/dx at block 0's position x, by central differences, and the block's force there.
 std::pair<double, double> junction_gradient_and_force(Rig& r, double x, double h) {
-    const double saved = r.y(0);
-    r.y(0) = x + h;
-    const double plus = r.y(0), e_plus = r.law->potential_energy(r.view());
-    r.y(0) = x - h;
-    const double minus = r.y(0), e_minus = r.law->potential_energy(r.view());
-    r.y(0) = saved;
+    const double saved = test_support::x_of(r.y, r.layout);
+    test_support::x_of(r.y, r.layout) = x + h;
+    const double plus = test_support::x_of(r.y, r.layout), e_plus = r.law->potential_energy(r.view());
+    test_support::x_of(r.y, r.layout) = x - h;
+    const double minus = test_support::x_of(r.y, r.layout), e_minus = r.law->potential_energy(r.view());
+    test_support::x_of(r.y, r.layout) = saved;
     return {(e_plus - e_minus) / (plus - minus), r.stage_force(0, x)};
 }
 
@@ -160,10 +160,10 @@ TEST(EnergyConsistency, PinnedJunctionsForceIsExactlyMinusTheGradientOfTheirEner
         const auto [gradient, force] = junction_gradient_and_force(r, x, h);
         // E is quadratic in x: the difference quotient is exact up to round-off of E (~1e-16 relative).
         EXPECT_NEAR(gradient, -force, 1e-9 * r.p) << x / u;
-        r.y(0) = x;
+        test_support::x_of(r.y, r.layout) = x;
         const double a = 0.375 * u;  // f = k_s (x - anchor), f0 = 0; blocks 1, 2 are unloaded
         EXPECT_NEAR(r.law->potential_energy(r.view()), 0.5 * r.k * (x * x + 2 * (x - a) * (x - a)), 1e-12 * r.p * u);
-        r.y(0) = 0.375 * u;
+        test_support::x_of(r.y, r.layout) = 0.375 * u;
     }
 }
 

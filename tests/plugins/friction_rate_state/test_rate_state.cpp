@@ -17,8 +17,7 @@ namespace {
 /// One interface block at x = 0 with a fixed normal force, and the law built on it.
 struct Slider {
     explicit Slider(RateState::Params params = {}, double normal = 10, double mass = 1, Index aux_before = 0) {
-        body.x0 = Eigen::ArrayXd::Zero(1);
-        body.z0 = Eigen::ArrayXd::Zero(1);
+        body.reference_position = Eigen::ArrayXXd::Zero(1, 2);
         body.mass = Eigen::ArrayXd::Constant(1, mass);
         body.node_sets["interface"] = {0};
         services.quantities.field("normal_force", "interface", 1, "N", "test")[0] = normal;
@@ -28,10 +27,10 @@ struct Slider {
 
     /// The law's x-force and dpsi/dt at velocity v and state psi.
     std::pair<double, double> evaluate(double v, double psi) {
-        const StateLayout layout{1, services.aux.count};
+        const StateLayout layout(1, 2, services.aux.count);
         Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size()), dy = Eigen::VectorXd::Zero(layout.size());
-        y[2] = v;
-        y[4 + law->aux_offset()] = psi;
+        y[layout.velocity_index(0, 0)] = v;
+        layout.aux_variables(y)[law->aux_offset()] = psi;
         ForceView f = forces_of(dy, layout);
         law->add_forces(view_of(y, layout, 0), f);
         return {f.fx[0], f.aux_rate[law->aux_offset()]};
@@ -91,10 +90,10 @@ TEST(RateState, VelocityJacobianIsTheDerivativeOfItsForce) {
     const RateState::Params p;
     const double psi = s.law->steady_state(1e-9), normal = 10;
     const auto jacobian = [&](double v) {
-        const StateLayout layout{1, s.services.aux.count};
+        const StateLayout layout(1, 2, s.services.aux.count);
         Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size());
-        y[2] = v;
-        y[4 + s.law->aux_offset()] = psi;
+        y[layout.velocity_index(0, 0)] = v;
+        layout.aux_variables(y)[s.law->aux_offset()] = psi;
         Eigen::ArrayXd j = Eigen::ArrayXd::Zero(1);
         EXPECT_TRUE(s.law->has_velocity_jacobian());
         s.law->add_velocity_jacobian(view_of(y, layout, 0), j);
@@ -149,11 +148,11 @@ TEST(RateState, WritesOnlyItsOwnAuxSlice) {
     s.services.aux.allocate(after);
     ASSERT_EQ(s.law->aux_offset(), before);
     const Index total = s.services.aux.count;
-    const StateLayout layout{1, total};
+    const StateLayout layout(1, 2, total);
     Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size()), dy = Eigen::VectorXd::Constant(layout.size(), 7.0);
-    y[2] = 1e-3;
+    y[layout.velocity_index(0, 0)] = 1e-3;
     const double psi = s.law->steady_state(1e-5);
-    y[4 + before] = psi;
+    layout.aux_variables(y)[before] = psi;
     ForceView f = forces_of(dy, layout);
     s.law->add_forces(view_of(y, layout, 0), f);
     for (Index k = 0; k < total; ++k) {
@@ -188,15 +187,15 @@ std::vector<double> deviations(double stiffness_over_critical, double t_end) {
     system.begin_stage(StageInfo{"load", 0, 0.0, t_end, true});
     Eigen::VectorXd& y = system.initial_state();
     y.setZero();
-    y[2] = 1.01 * V;
-    y[4 + law->aux_offset()] = law->steady_state(V);
+    test_support::vx_of(y, system.layout()) = 1.01 * V;
+    system.layout().aux_variables(y)[law->aux_offset()] = law->steady_state(V);
     test_support::Rk4 rk4(system);
     const double dt = 2e-4;  // direct-effect damping time m V / (f_N a) = 1.25e-3 s
     const double window = 10;
     std::vector<double> worst(static_cast<std::size_t>(t_end / window), 0.0);
     while (system.time() < t_end - dt / 2) {
         rk4.step(dt);
-        const double d = std::abs(system.y()[2] / V - 1);
+        const double d = std::abs(system.state().vx(0) / V - 1);
         const auto w = std::min(worst.size() - 1, static_cast<std::size_t>(system.time() / window));
         if (d > 0.5) {
             std::fill(worst.begin() + static_cast<std::ptrdiff_t>(w), worst.end(), 0.5);

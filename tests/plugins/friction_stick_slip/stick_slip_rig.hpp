@@ -21,21 +21,21 @@ inline constexpr double exact_dt = 0x1p-16;      // s
 template <class Law>
 struct StickSlipRig {
     explicit StickSlipRig(const typename Law::Params& params, Index blocks = 2) {
-        body.x0 = Eigen::ArrayXd::Zero(blocks);
-        body.z0 = Eigen::ArrayXd::LinSpaced(blocks, 0, 1);
+        body.reference_position =
+            planar_positions(Eigen::ArrayXd::Zero(blocks), Eigen::ArrayXd::LinSpaced(blocks, 0, 1));
         body.mass = Eigen::ArrayXd::Ones(blocks);
         NodeSet interface;
         for (Index i = 0; i < blocks; ++i) interface.push_back(i);
         body.node_sets["interface"] = interface;
         normal = &services.quantities.field("normal_force", "interface", blocks, "N", "test");
-        layout = {blocks, 0};
+        layout = StateLayout(blocks, 2, 0);
         y = Eigen::VectorXd::Zero(layout.size());
         law = std::make_unique<Law>(params, services.context(&body));
     }
 
     StageView view() const { return view_of(y, layout, t); }
-    double x(Index i) const { return y[i]; }
-    double v(Index i) const { return y[2 * layout.nodes + i]; }
+    double x(Index i) const { return y[layout.position_index(i, 0)]; }
+    double v(Index i) const { return y[layout.velocity_index(i, 0)]; }
     const stick_slip::Block& block(Index i) const { return law->block(i); }
     stick_slip::Mode mode(Index i) const { return law->block(i).mode; }
 
@@ -46,8 +46,8 @@ struct StickSlipRig {
     /// One accepted step that brings block i to position xi and velocity vi.
     void move(Index i, double xi, double vi) {
         law->begin_step(view());
-        y[i] = xi;
-        y[2 * layout.nodes + i] = vi;
+        y[layout.position_index(i, 0)] = xi;
+        y[layout.velocity_index(i, 0)] = vi;
         t += exact_dt;
         law->commit(view(), exact_dt);
     }
@@ -67,15 +67,15 @@ struct StickSlipRig {
     /// x-force on block i at a stage (x, v), states frozen.
     double stage_force(Index i, double xi, double vi) {
         const Eigen::VectorXd saved = y;
-        y[i] = xi;
-        y[2 * layout.nodes + i] = vi;
+        y[layout.position_index(i, 0)] = xi;
+        y[layout.velocity_index(i, 0)] = vi;
         const double f = force(i);
         y = saved;
         return f;
     }
     double energy_at(Index i, double xi) {
         const Eigen::VectorXd saved = y;
-        y[i] = xi;
+        y[layout.position_index(i, 0)] = xi;
         const double e = law->potential_energy(view());
         y = saved;
         return e;

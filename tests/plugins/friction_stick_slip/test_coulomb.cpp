@@ -107,7 +107,7 @@ TEST(Coulomb, VelocityJacobianIsTheSlopeOfTheKineticForce) {
     Rig r = pressed();
     const auto jacobian = [&](double v) {
         Eigen::ArrayXd j = Eigen::ArrayXd::Zero(2);
-        r.y[2 * r.layout.nodes] = v;
+        r.y[r.layout.velocity_index(0, 0)] = v;
         r.law->add_velocity_jacobian(r.view(), j);
         EXPECT_EQ(j[1], 0.0);  // block 1 stays stuck
         return j[0];

@@ -34,16 +34,16 @@ inline constexpr double exact_dt = 0x1p-16;
 struct Rig {
     explicit Rig(const ThreeStateJunctions::Params& params, Index blocks = 3, std::uint64_t seed = 1, double x0 = 0)
         : log("three_state_junctions_test") {
-        body.x0 = Eigen::ArrayXd::Constant(blocks, x0);
-        body.z0 = Eigen::ArrayXd::LinSpaced(blocks, 0, 1);
+        body.reference_position =
+            planar_positions(Eigen::ArrayXd::Constant(blocks, x0), Eigen::ArrayXd::LinSpaced(blocks, 0, 1));
         body.mass = Eigen::ArrayXd::Ones(blocks);
         NodeSet interface;
         for (Index i = 0; i < blocks; ++i) interface.push_back(i);
         body.node_sets["interface"] = interface;
         normal = &quantities.field("normal_force", "interface", blocks, "N", "test");
-        layout = {blocks, 0};
+        layout = StateLayout(blocks, 2, 0);
         y = Eigen::VectorXd::Zero(layout.size());
-        y.head(blocks) = body.x0.matrix();
+        layout.positions_along(y, 0) = body.x0().matrix();
         Context ctx{log, seed, &body, &quantities, nullptr, "friction"};
         law = std::make_unique<ThreeStateJunctions>(params, ctx);
         p = law->junction_load();
@@ -51,7 +51,7 @@ struct Rig {
     }
 
     StageView view() const { return view_of(y, layout, t); }
-    double x(Index i) const { return y[i]; }
+    double x(Index i) const { return y[layout.position_index(i, 0)]; }
     const BlockJunctions& block(Index i) const { return law->block(i); }
 
     void stage(bool friction_events) {
@@ -62,13 +62,14 @@ struct Rig {
     /// One accepted step to positions x (one per block) and normal forces P.
     void step(const std::vector<double>& xs, double dt = exact_dt) {
         law->begin_step(view());
-        for (std::size_t i = 0; i < xs.size(); ++i) y[static_cast<Index>(i)] = xs[i];
+        for (std::size_t i = 0; i < xs.size(); ++i) y[layout.position_index(static_cast<Index>(i), 0)] = xs[i];
         t += dt;
         law->commit(view(), dt);
     }
     /// One accepted step that moves block i only.
     void move(Index i, double xi, double dt = exact_dt) {
-        std::vector<double> xs(y.data(), y.data() + layout.nodes);
+        const auto positions = layout.positions_along(y, 0);
+        std::vector<double> xs(positions.begin(), positions.end());
         xs[static_cast<std::size_t>(i)] = xi;
         step(xs, dt);
     }
@@ -86,10 +87,11 @@ struct Rig {
     }
     /// x-force on block i at a stage position, without accepting a step.
     double stage_force(Index i, double xi) {
-        const double saved = y[i];
-        y[i] = xi;
+        double& x = y[layout.position_index(i, 0)];
+        const double saved = x;
+        x = xi;
         const double f = force(i);
-        y[i] = saved;
+        x = saved;
         return f;
     }
 

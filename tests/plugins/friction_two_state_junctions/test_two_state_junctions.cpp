@@ -40,15 +40,14 @@ struct Rig {
                  std::vector<double> normals = {8, 8, 8})
         : log("two_state_junctions_test") {
         const auto n = static_cast<Index>(normals.size());
-        body.x0 = Eigen::ArrayXd::Zero(n);
-        body.z0 = Eigen::ArrayXd::Zero(n);
+        body.reference_position = Eigen::ArrayXXd::Zero(n, 2);
         body.mass = Eigen::ArrayXd::Ones(n);
         NodeSet interface;
         for (Index i = 0; i < n; ++i) interface.push_back(i);
         body.node_sets["interface"] = interface;
         normal = &quantities.field("normal_force", "interface", n, "N", "test");
         for (Index i = 0; i < n; ++i) (*normal)[i] = normals[static_cast<std::size_t>(i)];
-        layout = {n, 0};
+        layout = StateLayout(n, 2, 0);
         y = Eigen::VectorXd::Zero(layout.size());
         law = std::make_unique<TwoStateJunctions>(params, Context{log, seed, &body, &quantities, nullptr, "friction"});
         stage(true);
@@ -56,24 +55,25 @@ struct Rig {
 
     StageView view() const { return view_of(y, layout, t); }
     void stage(bool events) { law->begin_stage(StageInfo{"s", 0, t, 1.0, events}, view()); }
-    void move(Index i, double x) {
+    double& x(Index i) { return y[layout.position_index(i, 0)]; }
+    void move(Index i, double xi) {
         law->begin_step(view());
-        y[i] = x;
+        x(i) = xi;
         t += dt;
         law->commit(view(), dt);
     }
     void hold(int steps) {
-        for (int k = 0; k < steps; ++k) move(0, y[0]);
+        for (int k = 0; k < steps; ++k) move(0, x(0));
     }
     /// x-force on block i at a stage position xi (the accepted state otherwise).
     double force(Index i, double xi) {
         Eigen::VectorXd yy = y, dy = Eigen::VectorXd::Zero(layout.size());
-        yy[i] = xi;
+        yy[layout.position_index(i, 0)] = xi;
         ForceView f = forces_of(dy, layout);
         law->add_forces(view_of(yy, layout, t), f);
         return f.fx[i];
     }
-    double force(Index i) { return force(i, y[i]); }
+    double force(Index i) { return force(i, x(i)); }
 
     spdlog::logger log;
     Body body;
@@ -109,9 +109,9 @@ TEST(TwoStateJunctions, QuasiStaticRegimeStiffensPinnedJunctionsAndForeseesTheBr
     EXPECT_EQ(stiffness[0].row(), 0);
     EXPECT_EQ(stiffness[0].value(), 4 * k);
     r.move(0, 0.25 * x_break);
-    r.y[r.layout.nodes * 2] = v;
+    r.y[r.layout.velocity_index(0, 0)] = v;
     EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + 0.75 * x_break / v, 1e-12 * x_break / v);
-    r.y[r.layout.nodes * 2] = 0;
+    r.y[r.layout.velocity_index(0, 0)] = 0;
     r.move(0, x_break + 0x1p-40);  // all four break
     EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
     stiffness.clear();
@@ -215,11 +215,11 @@ TEST(TwoStateJunctions, AggregateForceIsTheSumOverJunctions) {
     for (int k = 0; k < 4000; ++k) {
         (*r.normal)[1] = 6 + 2 * std::sin(k * 0.01);  // stiffness and thresholds keep changing
         r.law->begin_step(r.view());
-        for (Index i = 0; i < 3; ++i) r.y[i] += (1 + i) * 0x1p-16 * (1.5 + std::sin(k * 0.003 * (i + 1)));
+        for (Index i = 0; i < 3; ++i) r.x(i) += (1 + i) * 0x1p-16 * (1.5 + std::sin(k * 0.003 * (i + 1)));
         r.t += dt;
         r.law->commit(r.view(), dt);
         for (Index i = 0; i < 3; ++i) {
-            const double x = r.y[i] + 1e-7;  // a stage position off the accepted one
+            const double x = r.x(i) + 1e-7;  // a stage position off the accepted one
             double sum = 0;
             for (Index j = 0; j < 50; ++j) sum += r.law->junction_force(i, j, x);
             worst = std::max(worst, std::abs(r.law->block_force(i, x) - sum) / r.law->breaking_force(i));

@@ -85,13 +85,13 @@ TEST(DormandPrince, AdvancesAuxVariablesUnderTheirOwnTolerance) {
     const Body body = one_node(1.0);
     System system(body, 1);
     system.add_effect(std::make_unique<test_support::AuxDecay>());
-    system.initial_state()(4) = 1.0;
+    system.layout().aux_variables(system.initial_state())(0) = 1.0;
     DormandPrince::Params p = tolerance(1.0);  // positions and velocities stay 0
     p.atol_aux = 1e-10;
     p.rtol = 0;
     DormandPrince dp(p, services.context());
     run_until(dp, system, 2.0);
-    EXPECT_NEAR(system.y()(4), std::exp(-2.0), 1e-8);
+    EXPECT_NEAR(system.state().aux(0), std::exp(-2.0), 1e-8);
     EXPECT_GT(dp.accepted_steps(), 10);
 }
 
@@ -158,7 +158,7 @@ TEST(DormandPrince, RejectedAttemptsCommitNothingAndDoNoWork) {
     EXPECT_EQ(system.step_index(), 1);
     // Only the accepted attempt's work counts: the work-energy theorem holds for the one step taken,
     // to its tolerance (the rejected attempts' work would be of order the 2 J stored in the spring).
-    const double v = system.y()(2), tol = 10 * 1e-10 * rig.osc.energy(1.0, 0.0);
+    const double v = system.state().vx(0), tol = 10 * 1e-10 * rig.osc.energy(1.0, 0.0);
     EXPECT_NEAR(system.work().at(0), 0.5 * rig.osc.m * v * v, tol);
     EXPECT_NEAR(system.work().at(0), potential0 - spring->potential_energy(system.state()), tol);
 }
@@ -172,7 +172,7 @@ TEST(DormandPrince, WorkAccountingClosesTheEnergyBalanceOfADampedOscillator) {
         DormandPrince dp(tolerance(tol), rig.services.context());
         const double t_end = 2.5 * period, e0 = osc.energy(1.0, 0.0);
         run_until(dp, system, t_end);
-        const double x = system.y()(0), v = system.y()(2);
+        const double x = system.state().x(0), v = system.state().vx(0);
         const double kinetic_gain = 0.5 * osc.m * v * v, potential_drop = e0 - osc.energy(x, 0.0);
         const double spring_work = system.work().at(0), damper_work = system.work().at(1);
         // The work-energy theorem and the spring's potential, to the tolerance.

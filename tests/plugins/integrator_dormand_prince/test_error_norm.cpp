@@ -12,7 +12,7 @@ namespace {
 
 // Two nodes at x = 0.1 m and 0.2 m (z = 0), one aux variable: y = [x0 x1 | z0 z1 | vx0 vx1 | vz0 vz1 | a].
 struct TwoNodes {
-    StateLayout layout{2, 1};
+    StateLayout layout{2, 2, 1};
     Eigen::VectorXd reference = (Eigen::VectorXd(4) << 0.1, 0.2, 0.0, 0.0).finished();
     ErrorNorm norm{{1e-3, 1e-9, 1e-6, 1e-4}, layout, reference};
     Eigen::VectorXd y0 = (Eigen::VectorXd(9) << 0.1, 0.2, 0, 0, 0, 0, 0, 0, 0).finished();

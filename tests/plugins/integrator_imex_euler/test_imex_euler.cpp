@@ -41,15 +41,15 @@ TEST(ImexEuler, IsBackwardEulerInALocalDashpotAtAnyStiffness) {
     const Body body = test_support::one_node(m);
     System system(body, 0);
     system.add_effect(std::make_unique<LocalDashpot>(c));
-    system.initial_state()(2) = v0;
+    test_support::vx_of(system.initial_state(), system.layout()) = v0;
     ImexEuler imex({h}, services.context());
     double v = v0, x = 0;
     for (int i = 0; i < 5; ++i) {
         imex.step(system, 1.0);
         v /= 1 + h * c / m;
         x += h * v;
-        EXPECT_NEAR(system.y()(2), v, 1e-14 * v0);
-        EXPECT_NEAR(system.y()(0), x, 1e-14 * h * v0);
+        EXPECT_NEAR(system.state().vx(0), v, 1e-14 * v0);
+        EXPECT_NEAR(system.state().x(0), x, 1e-14 * h * v0);
     }
 }
 
@@ -69,7 +69,7 @@ TEST(ImexEuler, WithoutALocalEffectItIsSemiImplicitEulerBitForBit) {
 /// moves at V, starting at velocity v_start with psi at its steady state for `psi_velocity`.
 struct Block {
     Block(double V, double v_start, double psi_velocity) {
-        body.x0 = body.z0 = Eigen::ArrayXd::Zero(1);
+        body.reference_position = Eigen::ArrayXXd::Zero(1, 2);
         body.mass = Eigen::ArrayXd::Constant(1, mass);
         body.node_sets["interface"] = {0};
         services.quantities.field("normal_force", "interface", 1, "N", "test")[0] = normal;
@@ -83,11 +83,11 @@ struct Block {
         system->add_effect(std::move(owned));
         system->begin_stage(StageInfo{"load", 0, 0.0, 1.0, true});
         Eigen::VectorXd& y = system->initial_state();
-        y(2) = v_start;
-        law->initialise_aux(y.tail(services.aux.count).array());
+        test_support::vx_of(y, system->layout()) = v_start;
+        law->initialise_aux(system->layout().aux_variables(y).array());
     }
-    double velocity() const { return system->y()(2); }
-    double psi() const { return system->y()(4); }
+    double velocity() const { return system->state().vx(0); }
+    double psi() const { return system->state().aux(0); }
     /// Friction force / normal force at the accepted state, as the law publishes it.
     double friction_coefficient() {
         system->refresh();

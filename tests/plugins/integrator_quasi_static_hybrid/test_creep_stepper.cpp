@@ -35,9 +35,9 @@ public:
     }
     double next_event_time() const override { return clock_; }
     bool quasi_static_regime(const StageView&) const override { return true; }
-    void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& K) const override {
-        K.emplace_back(0, 0, k);
-        K.emplace_back(1, 1, k);
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& K) const override {
+        K.emplace_back(s.position_index(0, 0), s.position_index(0, 0), k);
+        K.emplace_back(s.position_index(0, 1), s.position_index(0, 1), k);
     }
     double foreseen_event_time(const StageView& s) const override {
         if (broken || s.vx(0) <= 0 || s.x(0) >= x_event_) return infinity;
@@ -101,8 +101,8 @@ TEST(CreepStepper, FollowsTheExactDampedResponseToSecondOrder) {
 TEST(CreepStepper, RefusesAStepThatWouldPassAClockAnObservationOrAForeseenThreshold) {
     Body body = test_support::one_node(m);
     System system(body, 0);
-    system.initial_state()(0) = -c * V / k;  // on the steady response
-    system.initial_state()(2) = V;
+    test_support::x_of(system.initial_state(), system.layout()) = -c * V / k;  // on the steady response
+    test_support::vx_of(system.initial_state(), system.layout()) = V;
     const double h = 1e-3, x_event = V * 4.2e-3 - c * V / k;  // reached at t = 4.2 ms
     system.add_effect(std::make_unique<Node>(2.5e-3, x_event));
     CreepStepper creep({.step = h});
@@ -113,7 +113,7 @@ TEST(CreepStepper, RefusesAStepThatWouldPassAClockAnObservationOrAForeseenThresh
     EXPECT_EQ(system.time(), 1e-3 + (1 - 1e-9) * h) << "nothing accepted";
     // The explicit scheme takes the span to the clock (here: the exact steady state there).
     Eigen::VectorXd y = system.y();
-    y(0) = V * 2.5e-3 - c * V / k;
+    test_support::x_of(y, system.layout()) = V * 2.5e-3 - c * V / k;
     system.accept(2.5e-3, y);
     ASSERT_TRUE(creep.step(system, infinity));  // to 3.5 ms
     EXPECT_FALSE(creep.step(system, 0.5 * h)) << "the next observation is within the step";
@@ -132,9 +132,9 @@ public:
         f.fz(0) -= K * s.z(0);
     }
     bool quasi_static_regime(const StageView&) const override { return true; }
-    void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& stiffness) const override {
-        stiffness.emplace_back(0, 0, K);
-        stiffness.emplace_back(1, 1, K);
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override {
+        stiffness.emplace_back(s.position_index(0, 0), s.position_index(0, 0), K);
+        stiffness.emplace_back(s.position_index(0, 1), s.position_index(0, 1), K);
     }
 };
 
@@ -145,19 +145,20 @@ TEST(CreepStepper, ItsMeanVelocityCancelsTheFlipOfAStiffMode) {
     // flip but for 1/(1 + a) of it.
     Body body = test_support::one_node(m);
     System system(body, 0);
-    system.initial_state()(2) = 1e-3;
+    test_support::vx_of(system.initial_state(), system.layout()) = 1e-3;
     system.add_effect(std::make_unique<Overdamped>());
     const double h = 1e-2, a = h * Overdamped::C / (2 * m);
     CreepStepper creep({.step = h});
     double previous = system.state().vx(0);
     for (int i = 0; i < 10; ++i) {
         ASSERT_TRUE(creep.step(system, infinity));
-        const double v = system.state().vx(0), mean = creep.mean_velocity(2)(0);
+        const double v = system.state().vx(0),
+                     mean = creep.mean_velocity(system.layout())(system.layout().position_index(0, 0));
         EXPECT_LT(v * previous, 0) << "the end velocity flips, step " << i;
         EXPECT_NEAR(v / previous, -(a - 1) / (a + 1), 1e-3) << "and barely shrinks, step " << i;
         EXPECT_NEAR(mean, (previous + v) / 2, 1e-9 * std::abs(v)) << "step " << i;
         EXPECT_LT(std::abs(mean), 1.01 * std::abs(previous) / (1 + a)) << "step " << i;
-        EXPECT_EQ(creep.mean_velocity(2)(1), 0.0);
+        EXPECT_EQ(creep.mean_velocity(system.layout())(system.layout().position_index(0, 1)), 0.0);
         previous = v;
     }
 }

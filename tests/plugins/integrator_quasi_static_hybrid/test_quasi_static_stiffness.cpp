@@ -24,7 +24,7 @@ constexpr double relative_tolerance = 1e-6;
 
 /// Largest |K + dF/dq| over all entries, relative to the largest |K|, with K from add_stiffness().
 double stiffness_mismatch(Effect& e, const StateLayout& layout, Eigen::VectorXd y, double t, double h) {
-    const Index dof = 2 * layout.nodes;
+    const Index dof = layout.dof();
     std::vector<Eigen::Triplet<double>> triplets;
     e.add_stiffness(view_of(y, layout, t), triplets);
     Eigen::SparseMatrix<double> k(dof, dof);
@@ -73,14 +73,14 @@ TEST(QuasiStaticStiffness, BaseContactStiffensOnlyTheNodesInContact) {
     const NodeSet& interface = s.bulk.body().nodes("interface");
     // Half the interface pressed into the base, half lifted off it.
     for (std::size_t k = 0; k < interface.size(); ++k)
-        s.y(s.layout.nodes + interface[k]) = s.bulk.body().z0(interface[k]) + (k % 2 ? 1e-6 : -1e-6);
+        s.y(s.layout.position_index(interface[k], 1)) = s.bulk.body().z0()(interface[k]) + (k % 2 ? 1e-6 : -1e-6);
     EXPECT_LT(stiffness_mismatch(contact, s.layout, s.y, 0, 1e-9), relative_tolerance);
     std::vector<Eigen::Triplet<double>> k;
     contact.add_stiffness(view_of(s.y, s.layout, 0), k);
     EXPECT_EQ(k.size(), (interface.size() + 1) / 2);
     // Moving up at 1 mm/s, the first pressed node (1 um in) leaves the base 1 ms later.
     Eigen::VectorXd y = s.y;
-    y.segment(3 * s.layout.nodes, s.layout.nodes).setConstant(1e-3);
+    s.layout.velocities_along(y, 1).setConstant(1e-3);
     EXPECT_NEAR(contact.foreseen_event_time(view_of(y, s.layout, 0.5)), 0.5 + 1e-3, 1e-12);
 }
 
@@ -135,11 +135,11 @@ TEST(QuasiStaticStiffness, JunctionsStiffenTheirBlockWhileElasticAndForeseeTheir
     // Block 0 moving on at velocity v: its junctions reach mu_s p after (mu_s - 0.25) u / v; the
     // others stand still.
     const double v = 1e-3;
-    r.y(r.layout.nodes * 2) = v;
+    test_support::vx_of(r.y, r.layout) = v;
     EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + (0.7 - 0.25) * u / v, 1e-12 * u / v);
     // Beyond the threshold they break at the commit and slide, held at mu_d p: the law stays in its
     // regime, and the block's stiffness loses them while they are held at their bound.
-    r.y(r.layout.nodes * 2) = 0;
+    test_support::vx_of(r.y, r.layout) = 0;
     r.move(0, 0.71 * u);
     ASSERT_EQ(r.block(0).sliding(), 3);
     EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
@@ -153,11 +153,11 @@ TEST(QuasiStaticStiffness, JunctionsStiffenTheirBlockWhileElasticAndForeseeTheir
     EXPECT_EQ(block_0(), 0.0);
     // Moved back, they unload off their bound and are elastic again (k_s each), the stage law
     // measuring from the last commit.
-    r.y(0) = 0.71 * u - 0.1 * u;
+    test_support::x_of(r.y, r.layout) = 0.71 * u - 0.1 * u;
     EXPECT_EQ(block_0(), 3 * r.k);
     // A sliding junction has no position-dependent event (its end is a clock: next_event_time).
-    r.y(0) = 0.71 * u;
-    r.y(r.layout.nodes * 2) = -v;
+    test_support::x_of(r.y, r.layout) = 0.71 * u;
+    test_support::vx_of(r.y, r.layout) = -v;
     EXPECT_EQ(r.law->foreseen_event_time(r.view()), std::numeric_limits<double>::infinity());
     EXPECT_EQ(r.law->next_event_time(), r.t + 0x1p-12);
 }
@@ -193,9 +193,9 @@ TEST(QuasiStaticStiffness, DislocatedJunctionsForeseeTheirSeparation) {
     const double g = r.block(0).tangential(0);  // s g = g, at cap(phi)
     // Moving back at v, g falls at k_s v: separation (C6) after g / (k_s v).
     const double v = 1e-3;
-    r.y(r.layout.nodes * 2) = -v;
+    test_support::vx_of(r.y, r.layout) = -v;
     EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + g / (r.k * v), 1e-12 * g / (r.k * v));
-    r.y(r.layout.nodes * 2) = v;  // forwards they stay at their cap: nothing foreseen
+    test_support::vx_of(r.y, r.layout) = v;  // forwards they stay at their cap: nothing foreseen
     EXPECT_EQ(r.law->foreseen_event_time(r.view()), std::numeric_limits<double>::infinity());
 }
 

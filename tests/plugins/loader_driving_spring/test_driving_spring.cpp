@@ -24,8 +24,8 @@ struct SpringOnLattice : test_support::BulkAtRest<SpringLattice2d> {
     /// fx on every node at time t and the current positions.
     Eigen::VectorXd fx(double t) {
         const Eigen::VectorXd f = test_support::forces_of_effect(spring, y, layout, t);
-        EXPECT_EQ(f.tail(layout.nodes).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
-        return f.head(layout.nodes);
+        EXPECT_EQ(layout.positions_along(f, 1).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
+        return layout.positions_along(f, 0);
     }
     double scalar(const char* name) const { return services.quantities.find_scalar(name)->value; }
 
@@ -49,7 +49,8 @@ TEST(DrivingSpring, AttachesToTheTrailingEdgeNodeAtHeightH) {
 TEST(DrivingSpring, ForceStartsAtZeroAndGrowsAsKsVtForAFixedNode) {
     SpringOnLattice s;
     const Index node = 2 * nx;
-    s.y(node) += 3e-6;  // the node has moved during settling: that is the displacement origin
+    test_support::x_of(s.y, s.layout, node) +=
+        3e-6;  // the node has moved during settling: that is the displacement origin
     s.begin_stage(0.3);
     EXPECT_EQ(s.fx(0.3).cwiseAbs().maxCoeff(), 0.0);
     const double Ks = 0.8e6, V = 1e-4;
@@ -90,7 +91,7 @@ TEST(DrivingSpring, AReversalPeriodMovesTheFarEndAsATriangleWave) {
     }
     // The force follows the driving point too: F_S = K_S (X - (x_h - x_h0)), negative when the far
     // end has come back behind the driving point.
-    s.y(node) += 8e-7;
+    test_support::x_of(s.y, s.layout, node) += 8e-7;
     const Eigen::VectorXd f = s.fx(0.3 + 0.017);  // X = 3e-7 m on the way back
     EXPECT_NEAR(f(node), Ks * (3e-7 - 8e-7), 1e-9);
     EXPECT_NEAR(s.spring.potential_energy(view_of(s.y, s.layout, 0.3 + 0.017)), 0.5 * Ks * 5e-7 * 5e-7, 1e-18);
@@ -122,7 +123,7 @@ TEST(DrivingSpring, ForceFollowsTheDrivingPointDisplacement) {
     SpringOnLattice s;
     s.begin_stage(0.0);
     const Index node = 2 * nx;
-    s.y(node) += 2e-6;
+    test_support::x_of(s.y, s.layout, node) += 2e-6;
     const Eigen::VectorXd f = s.fx(0.05);  // V t = 5 um
     EXPECT_NEAR(f(node), 0.8e6 * (5e-6 - 2e-6), 1e-9);
     EXPECT_NEAR(s.scalar("driving_displacement"), 2e-6, 1e-17);
@@ -137,8 +138,8 @@ TEST(DrivingSpring, InterpolatedAttachmentSharesDisplacementAndForce) {
     EXPECT_NEAR(a[0].weight, 0.4, 1e-12);
     EXPECT_NEAR(a[1].weight, 0.6, 1e-12);
     s.begin_stage(0.0);
-    s.y(nx) += 1e-6;
-    s.y(2 * nx) += 2e-6;
+    test_support::x_of(s.y, s.layout, nx) += 1e-6;
+    test_support::x_of(s.y, s.layout, 2 * nx) += 2e-6;
     const Eigen::VectorXd f = s.fx(0.1);
     const double xh = 0.4 * 1e-6 + 0.6 * 2e-6, F = 0.8e6 * (1e-5 - xh);
     EXPECT_NEAR(s.scalar("driving_displacement"), xh, 1e-17);
@@ -195,7 +196,7 @@ TEST(DrivingSpring, APatchPullsAsAUniformTractionEachNodeTakingItsSpansShare) {
         EXPECT_NEAR(a[k].weight, expected[k], 1e-15);
     }
     s.begin_stage(0.0);
-    s.y(2 * nx) += 4e-6;  // x_h is the traction-weighted mean of the column
+    test_support::x_of(s.y, s.layout, 2 * nx) += 4e-6;  // x_h is the traction-weighted mean of the column
     const Eigen::VectorXd f = s.fx(0.1);
     const double xh = 0.5 * 4e-6, F = 0.8e6 * (1e-5 - xh);
     EXPECT_NEAR(s.scalar("driving_displacement"), xh, 1e-17);

@@ -14,21 +14,21 @@ struct LoadOnLattice {
     explicit LoadOnLattice(const NormalLoad::Params& p)
         : lattice(SpringLattice2d::Params{}, services.context()), load(p, services.context(&lattice.body())) {}
 
-    /// [fx | fz] of the load at time t, at the reference state.
-    Eigen::VectorXd forces(double t) {
+    /// The load's forces [nnode, 2] (fx, fz) at time t, at the reference state.
+    Eigen::ArrayXXd forces(double t) {
         const Body& b = lattice.body();
-        const StateLayout layout{b.size(), 0};
+        const StateLayout layout(b.size(), b.dimension(), 0);
         Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size()), dy = y;
         ForceView f = forces_of(dy, layout);
         load.add_forces(view_of(y, layout, t), f);
-        return dy.segment(2 * b.size(), 2 * b.size());
+        return f.force;
     }
     /// W_i over the top row, in x order (positive down).
     Eigen::ArrayXd top_loads(double t) {
-        const Eigen::VectorXd F = forces(t);
+        const Eigen::ArrayXXd F = forces(t);
         const NodeSet& top = lattice.body().nodes("top");
         Eigen::ArrayXd w(top.size());
-        for (std::size_t k = 0; k < top.size(); ++k) w(k) = -F(lattice.body().size() + top[k]);
+        for (std::size_t k = 0; k < top.size(); ++k) w(k) = -F(top[k], 1);
         return w;
     }
     double published() const { return services.quantities.find_scalar("normal_load")->value; }
@@ -64,11 +64,11 @@ TEST(NormalLoad, NormalisedSumsToTheTotalWithLinearProfile) {
 
 TEST(NormalLoad, ActsOnlyDownwardOnTheTopRow) {
     LoadOnLattice s(load_with(0.5));
-    const Eigen::VectorXd F = s.forces(0);
+    const Eigen::ArrayXXd F = s.forces(0);
     const Index n = s.lattice.body().size();
-    EXPECT_EQ(F.head(n).cwiseAbs().maxCoeff(), 0.0);
-    EXPECT_NEAR(-F.tail(n).sum(), 400, 1e-12);
-    for (Index i = 0; i < n - 41; ++i) EXPECT_EQ(F(n + i), 0.0);
+    EXPECT_EQ(F.col(0).abs().maxCoeff(), 0.0);
+    EXPECT_NEAR(-F.col(1).sum(), 400, 1e-12);
+    for (Index i = 0; i < n - 41; ++i) EXPECT_EQ(F(i, 1), 0.0);
 }
 
 TEST(NormalLoad, PaperLiteralFormulaKeepsItsBias) {
@@ -86,8 +86,9 @@ TEST(NormalLoad, PaperLiteralFormulaKeepsItsBias) {
 TEST(NormalLoad, RampIsLinearFromTheFirstActiveStage) {
     LoadOnLattice s(load_with(0.3, NormalLoad::Formula::normalised, 2e-3));
     const Eigen::ArrayXd full = s.top_loads(0.7);
-    const Eigen::VectorXd y = Eigen::VectorXd::Zero(4 * s.lattice.body().size());
-    const StageView at_start = view_of(y, {s.lattice.body().size(), 0}, 0.5);
+    const StateLayout layout(s.lattice.body().size(), s.lattice.body().dimension(), 0);
+    const Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size());
+    const StageView at_start = view_of(y, layout, 0.5);
     s.load.begin_stage(StageInfo{"settle", 0, 0.5, 0.01, false}, at_start);
     // t - t_start loses up to ulp(0.5) against the 2 ms ramp: 2 roundings of 1.1e-16 s / 2e-3 s.
     const double fraction_error = 2 * std::numeric_limits<double>::epsilon() * 0.5 / 2e-3;

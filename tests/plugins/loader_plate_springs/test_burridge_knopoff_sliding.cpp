@@ -44,18 +44,19 @@ TEST(BurridgeKnopoffSliding, SteadySlidingLagsThePlateBy_muk_fN_over_kp) {
     system.add_effect(std::make_unique<Coulomb>(friction, ctx));
 
     // At rest on the base under f_N each (penetration f_N / K_b), the plate's origin at x0.
+    const StateLayout& layout = system.layout();
     Eigen::VectorXd y = system.y();
-    y.segment(N, N).setConstant(-f_N / K_b);
+    layout.positions_along(y, 1).setConstant(-f_N / K_b);
     system.begin_stage(StageInfo{"load", 0, 0.0, 1.0, true});
     system.begin_step();
     system.accept(0.0, y);  // the blocks touch the base and stick
     // Knock every block past mu_s f_N so it slips forward at V, then put it where steady sliding has it.
-    y.head(N).array() += 1e-3;
-    y.segment(2 * N, N).setConstant(V);
+    layout.positions_along(y, 0).array() += 1e-3;
+    layout.velocities_along(y, 0).setConstant(V);
     system.begin_step();
     system.accept(0.0, y);
     const double lag = mu_d * f_N / k_p;  // 0.23 um
-    y.head(N) = (body.x0 - lag).matrix();
+    layout.positions_along(y, 0) = (body.x0() - lag).matrix();
     system.begin_step();
     system.accept(0.0, y);
 
@@ -64,7 +65,7 @@ TEST(BurridgeKnopoffSliding, SteadySlidingLagsThePlateBy_muk_fN_over_kp) {
         rk4.step(2e-7);
         if (step % 1000 != 0) continue;
         const StageView s = system.state();
-        const Eigen::ArrayXd u = s.x - body.x0;
+        const Eigen::ArrayXd u = s.x - body.x0();
         ASSERT_LT((u - (V * s.t - lag)).abs().maxCoeff(), 1e-6 * lag) << "t = " << s.t;
         ASSERT_LT((s.vx - V).abs().maxCoeff(), 1e-6 * V) << "t = " << s.t;
     }

@@ -25,8 +25,8 @@ struct PlateOn : test_support::BulkAtRest<Bulk> {
     /// fx on every node at time t and the current positions.
     Eigen::VectorXd fx(double t) {
         const Eigen::VectorXd f = test_support::forces_of_effect(plate, this->y, this->layout, t);
-        EXPECT_EQ(f.tail(this->layout.nodes).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
-        return f.head(this->layout.nodes);
+        EXPECT_EQ(this->layout.positions_along(f, 1).cwiseAbs().maxCoeff(), 0.0);  // horizontal only
+        return this->layout.positions_along(f, 0);
     }
     double scalar(const char* name) const { return this->services.quantities.find_scalar(name)->value; }
 
@@ -44,11 +44,11 @@ TEST(PlateSprings, PullsEveryBlockOfAChainBy_kp_TimesItsLagBehindThePlate) {
     p.stiffness = 2e6;
     p.velocity = 1e-3;
     PlateOn<Chain1d> s(p, chain_of(5));
-    s.y.head(5).array() += 4e-6;  // moved while settling: that is the displacement origin
+    s.layout.positions_along(s.y, 0).array() += 4e-6;  // moved while settling: that is the displacement origin
     s.begin_stage(0.3);
     EXPECT_EQ(s.fx(0.3).cwiseAbs().maxCoeff(), 0.0);
     const Eigen::ArrayXd lag = (Eigen::ArrayXd(5) << 0.0, 1e-6, -2e-6, 3e-6, 0.5e-6).finished();
-    s.y.head(5).array() += lag;
+    s.layout.positions_along(s.y, 0).array() += lag;
     const double elapsed = 0.01, plate = 1e-3 * elapsed;  // 10 um
     const Eigen::VectorXd f = s.fx(0.3 + elapsed);
     for (Index j = 0; j < 5; ++j) EXPECT_NEAR(f(j), 2e6 * (plate - lag(j)), 1e-9) << j;

@@ -12,18 +12,20 @@ namespace {
 struct ContactOnLattice {
     explicit ContactOnLattice(const RigidBaseContact::Params& p = {}, const SpringLattice2d::Params& bulk = {})
         : lattice(bulk, services.context()),
-          layout{lattice.body().size(), 0},
+          layout(lattice.body().size(), lattice.body().dimension(), 0),
           contact(p, services.context(&lattice.body())) {
         y = Eigen::VectorXd::Zero(layout.size());
-        y.head(layout.nodes) = lattice.body().x0.matrix();
-        y.segment(layout.nodes, layout.nodes) = lattice.body().z0.matrix();
+        layout.positions(y) = lattice.body().reference_position.reshaped().matrix();
     }
+    /// The contact's forces, laid out as the positions.
     Eigen::VectorXd forces() {
         Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
         ForceView f = forces_of(dy, layout);
         contact.add_forces(view_of(y, layout, 0.0), f);
-        return dy.segment(2 * layout.nodes, 2 * layout.nodes);
+        return layout.velocities(dy);
     }
+    /// Node i's height in y (or its vertical force in forces()).
+    double& z(Eigen::VectorXd& v, Index i) const { return v(layout.position_index(i, 1)); }
     const Quantities::Field& normal_force() const { return *services.quantities.find_field("normal_force"); }
 
     test_support::Services services;
@@ -58,18 +60,18 @@ TEST(RigidBaseContact, KeepsItsStiffnessPerUnitAreaOnAnotherLattice) {
 
 TEST(RigidBaseContact, PushesPenetratingNodesUpAndLeavesSeparatedOnesFree) {
     ContactOnLattice s;
-    const Index n = s.layout.nodes, pressed = 7, lifted = 8, row_above = 41 + 7;
+    const Index pressed = 7, lifted = 8, row_above = 41 + 7;
     const double Kb = 0.5 * 1.125e7;
-    s.y(n + pressed) -= 1.7e-6;
-    s.y(n + lifted) += 1e-6;
-    s.y(n + row_above) -= 1e-6;  // not in the node set
-    s.y(pressed) += 1e-3;        // sliding sideways changes nothing
-    const Eigen::VectorXd F = s.forces();
-    EXPECT_DOUBLE_EQ(F(n + pressed), Kb * 1.7e-6);
-    EXPECT_EQ(F(n + lifted), 0.0);
-    EXPECT_EQ(F(n + row_above), 0.0);
-    EXPECT_EQ(F.head(n).cwiseAbs().maxCoeff(), 0.0);  // no friction, no damping
-    EXPECT_DOUBLE_EQ(F.tail(n).sum(), Kb * 1.7e-6);
+    s.z(s.y, pressed) -= 1.7e-6;
+    s.z(s.y, lifted) += 1e-6;
+    s.z(s.y, row_above) -= 1e-6;                         // not in the node set
+    test_support::x_of(s.y, s.layout, pressed) += 1e-3;  // sliding sideways changes nothing
+    Eigen::VectorXd F = s.forces();
+    EXPECT_DOUBLE_EQ(s.z(F, pressed), Kb * 1.7e-6);
+    EXPECT_EQ(s.z(F, lifted), 0.0);
+    EXPECT_EQ(s.z(F, row_above), 0.0);
+    EXPECT_EQ(s.layout.positions_along(F, 0).cwiseAbs().maxCoeff(), 0.0);  // no friction, no damping
+    EXPECT_DOUBLE_EQ(s.layout.positions_along(F, 1).sum(), Kb * 1.7e-6);
 }
 
 TEST(RigidBaseContact, PublishesNormalForceOverTheInterface) {
@@ -78,8 +80,7 @@ TEST(RigidBaseContact, PublishesNormalForceOverTheInterface) {
     EXPECT_EQ(P.node_set, "interface");
     EXPECT_EQ(P.unit, "N");
     ASSERT_EQ(P.values.size(), 41);
-    const Index n = s.layout.nodes;
-    s.y(n + 3) -= 2e-6;
+    s.z(s.y, 3) -= 2e-6;
     s.forces();
     EXPECT_DOUBLE_EQ(P.values(3), 0.5 * 1.125e7 * 2e-6);
     EXPECT_EQ(P.values.sum(), P.values(3));
@@ -87,12 +88,11 @@ TEST(RigidBaseContact, PublishesNormalForceOverTheInterface) {
 
 TEST(RigidBaseContact, CommitRecomputesFromTheEndState) {
     ContactOnLattice s;
-    const Index n = s.layout.nodes;
-    s.y(n + 3) -= 2e-6;
+    s.z(s.y, 3) -= 2e-6;
     s.forces();  // a stage state
     Eigen::VectorXd end = s.y;
-    end(n + 3) = 0.5e-6;  // lifted off by the end of the step
-    end(n + 5) = -1e-6;
+    s.z(end, 3) = 0.5e-6;  // lifted off by the end of the step
+    s.z(end, 5) = -1e-6;
     s.contact.commit(view_of(end, s.layout, 2e-7), 2e-7);
     const Quantities::Field& P = s.normal_force();
     EXPECT_EQ(P.values(3), 0.0);
@@ -102,8 +102,7 @@ TEST(RigidBaseContact, CommitRecomputesFromTheEndState) {
 TEST(RigidBaseContact, NeedsTheBulkBondStiffness) {
     test_support::Services services;
     Body chain;
-    chain.x0 = Eigen::ArrayXd::LinSpaced(3, 0, 0.02);
-    chain.z0 = Eigen::ArrayXd::Zero(3);
+    chain.reference_position = planar_positions(Eigen::ArrayXd::LinSpaced(3, 0, 0.02), Eigen::ArrayXd::Zero(3));
     chain.mass = Eigen::ArrayXd::Constant(3, 1e-3);
     chain.node_sets["interface"] = {0, 1, 2};
     EXPECT_THROW(RigidBaseContact({}, services.context(&chain)), InputError);

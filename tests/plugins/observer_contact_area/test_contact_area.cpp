@@ -23,14 +23,13 @@ constexpr double ls = 2.5e-3, K = 1.125e7;
 /// Node ix + nx iz; interface = row 0. Straight bonds only (enough for the interface row).
 Body lattice() {
     Body b;
-    b.x0.resize(nx * nz);
-    b.z0.resize(nx * nz);
+    b.reference_position.resize(nx * nz, 2);
     b.mass = Eigen::ArrayXd::Ones(nx * nz);
     b.length = (nx - 1) * ls, b.height = (nz - 1) * ls, b.width = 5e-3, b.spacing = ls, b.bond_stiffness = K;
     for (Index iz = 0; iz < nz; ++iz)
         for (Index ix = 0; ix < nx; ++ix) {
             const Index i = ix + nx * iz;
-            b.x0(i) = ix * ls, b.z0(i) = iz * ls;
+            b.reference_position(i, 0) = ix * ls, b.reference_position(i, 1) = iz * ls;
             b.node_sets["all"].push_back(i);
             if (iz == 0) b.node_sets["interface"].push_back(i);
             if (ix + 1 < nx) b.bonds.push_back({i, i + 1});
@@ -126,20 +125,21 @@ TEST_F(ContactAreaTest, NormalisedPinnedCountFractionsSlipAndBondForces) {
     publish();
     ContactArea o = make();
     o.begin(view());
-    const Index N = nx * nz;
+    const StateLayout& l = system_->layout();
     Eigen::VectorXd y = system_->y();  // the reference positions, at rest
+    const auto x = [&](Index i) -> double& { return y(l.position_index(i, 0)); };
 
     stage_ = {"settle", 0, 0.0, 1.0, false};
     observe_at(o, 1e-5, 3, 2, 0, y);  // before any all-pinned observation: no reference yet
     stage_ = {"load", 1, 0.0, 1.0, true};
-    y(1) += 1e-6;                      // block 1 slipped 1 µm: loading starts here
+    x(1) += 1e-6;                      // block 1 slipped 1 µm: loading starts here
     observe_at(o, 2e-5, 10, 0, 0, y);  // all pinned: N_p(1,0) = 10
     // Detachment and fast slip; block 1 moves, its right neighbour is pulled by δ and lifted by h.
     const double delta = 2e-6, h = 1e-6;
-    y(1) += 3e-6;
-    y(2) += 3e-6 + delta;
-    y(N + 2) += h;
-    y(2 * N + 1) = 0.25;  // vx
+    x(1) += 3e-6;
+    x(2) += 3e-6 + delta;
+    y(l.position_index(2, 1)) += h;
+    y(l.velocity_index(1, 0)) = 0.25;  // vx
     observe_at(o, 3e-5, 4, 6, 0, y);
     observe_at(o, 4e-5, 1, 2, 7, y);
     observe_at(o, 5e-5, 12, 0, 0, y);  // rejuvenated: a new reference

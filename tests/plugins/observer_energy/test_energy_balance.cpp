@@ -56,7 +56,7 @@ struct HandBuilt {
     static const Body& body() {
         static const Body one_node = [] {
             Body b;
-            b.x0 = b.z0 = Eigen::ArrayXd::Zero(1);
+            b.reference_position = Eigen::ArrayXXd::Zero(1, 2);
             b.mass = Eigen::ArrayXd::Constant(1, m);
             return b;
         }();
@@ -68,18 +68,18 @@ struct HandBuilt {
     /// Sets (x, vx) as the accepted state.
     void set(double x, double v) {
         Eigen::VectorXd& y = system.initial_state();
-        y(0) = x;
-        y(2) = v;
+        y(system.layout().position_index(0, 0)) = x;
+        y(system.layout().velocity_index(0, 0)) = v;
     }
     /// One step from the current state: forces (and powers) at (x, v) with weight w, then (x1, v1).
     void step(double x, double v, double w, double x1, double v1) {
         Eigen::VectorXd y = system.y(), dy(y.size());
-        y(0) = x;
-        y(2) = v;
+        y(system.layout().position_index(0, 0)) = x;
+        y(system.layout().velocity_index(0, 0)) = v;
         system.begin_step();
         derivative(system, system.time(), y, dy, Evaluation::weighted(w));
-        y(0) = x1;
-        y(2) = v1;
+        y(system.layout().position_index(0, 0)) = x1;
+        y(system.layout().velocity_index(0, 0)) = v1;
         system.accept(system.time() + 0.5, y);
     }
 

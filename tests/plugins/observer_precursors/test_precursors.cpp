@@ -23,8 +23,7 @@ constexpr double ls = 2.5e-3, dt = 1e-5;
 /// A row of n interface blocks, l_s apart.
 Body chain() {
     Body b;
-    b.x0 = Eigen::ArrayXd::LinSpaced(n, 0, (n - 1) * ls);
-    b.z0 = Eigen::ArrayXd::Zero(n);
+    b.reference_position = planar_positions(Eigen::ArrayXd::LinSpaced(n, 0, (n - 1) * ls), Eigen::ArrayXd::Zero(n));
     b.mass = Eigen::ArrayXd::Ones(n);
     b.length = (n - 1) * ls, b.height = 0, b.width = 5e-3, b.spacing = ls, b.bond_stiffness = 1e7;
     for (Index i = 0; i < n; ++i) {

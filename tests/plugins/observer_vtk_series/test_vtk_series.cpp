@@ -42,14 +42,13 @@ constexpr Index nx = 5, nz = 3;
 Body lattice(bool with_quads) {
     Body b;
     const double l = 0.1;
-    b.x0.resize(nx * nz);
-    b.z0.resize(nx * nz);
+    b.reference_position.resize(nx * nz, 2);
     b.mass = Eigen::ArrayXd::Constant(nx * nz, 2.0);
     b.length = (nx - 1) * l, b.height = (nz - 1) * l, b.width = 0.01, b.spacing = l;
     for (Index iz = 0; iz < nz; ++iz)
         for (Index ix = 0; ix < nx; ++ix) {
             const Index n = ix + nx * iz;
-            b.x0(n) = ix * l, b.z0(n) = iz * l;
+            b.reference_position(n, 0) = ix * l, b.reference_position(n, 1) = iz * l;
             b.node_sets["all"].push_back(n);
             if (iz == 0) b.node_sets["interface"].push_back(n);
             if (iz == nz - 1) b.node_sets["top"].push_back(n);
@@ -68,7 +67,7 @@ class TestEffect final : public Effect {
 public:
     static constexpr double k = 8, w = 0.5;
     TestEffect(const Body& body, Quantities& q)
-        : x0_(body.x0),
+        : x0_(body.x0()),
           normal_(q.field("normal_force", "interface", nx, "N", "test contact force")),
           driving_(q.scalar("driving_force", "N", "test scalar")) {}
     std::string describe() const override { return "test effect"; }
@@ -149,13 +148,13 @@ protected:
     /// Moves the system to snapshot k (a different time, displacement, velocity and junction counts
     /// each), observes it, and records what the files must then hold.
     void observe(VtkSeries& observer, int k) {
-        const Index n = body_.size();
+        const StateLayout& l = system_->layout();
         Eigen::VectorXd y = system_->y();
-        for (Index i = 0; i < n; ++i) {
-            y(i) = body_.x0(i) + 1e-3 * (k + 1) * (i + 1);
-            y(n + i) = body_.z0(i) - 2e-4 * k * i;
-            y(2 * n + i) = 0.5 * k - 0.01 * i;
-            y(3 * n + i) = -0.25 * i;
+        for (Index i = 0; i < body_.size(); ++i) {
+            y(l.position_index(i, 0)) = body_.x0()(i) + 1e-3 * (k + 1) * (i + 1);
+            y(l.position_index(i, 1)) = body_.z0()(i) - 2e-4 * k * i;
+            y(l.velocity_index(i, 0)) = 0.5 * k - 0.01 * i;
+            y(l.velocity_index(i, 1)) = -0.25 * i;
         }
         const double t = 0.25 * k;
         if (k == 0)
@@ -178,6 +177,7 @@ protected:
 
     Expected expect(int k, double t, const Eigen::VectorXd& y) const {
         const Index n = body_.size();
+        const StageView s = view_of(y, system_->layout(), t);
         Expected e;
         e.file = fmt::format("lattice/lattice_{:06d}.vtu", k);
         e.time = t;
@@ -188,11 +188,10 @@ protected:
         auto& role = e.arrays["role"] = {1, {}};
         auto& normal = e.arrays["normal_force"] = {1, {}};
         for (Index i = 0; i < n; ++i) {
-            const double x = y(i), z = y(n + i), u = x - body_.x0(i);
-            e.points.insert(e.points.end(), {body_.x0(i), body_.z0(i), 0});  // reference positions
-            (void)x;
-            displacement.second.insert(displacement.second.end(), {u, z - body_.z0(i), 0});
-            velocity.second.insert(velocity.second.end(), {y(2 * n + i), y(3 * n + i), 0});
+            const double u = s.x(i) - body_.x0()(i);
+            e.points.insert(e.points.end(), {body_.x0()(i), body_.z0()(i), 0});  // reference positions
+            displacement.second.insert(displacement.second.end(), {u, s.z(i) - body_.z0()(i), 0});
+            velocity.second.insert(velocity.second.end(), {s.vx(i), s.vz(i), 0});
             force.second.insert(force.second.end(), {-TestEffect::k * u, -TestEffect::w, 0});
             const Index ix = i % nx, iz = i / nx;
             role.second.push_back((iz == nz - 1 ? 1 : 0) | (iz == 0 ? 2 : 0) | (ix == 0 ? 4 : 0) |

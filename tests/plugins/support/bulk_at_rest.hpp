@@ -9,10 +9,9 @@ namespace frictionlab::test_support {
 template <class Bulk>
 struct BulkAtRest {
     explicit BulkAtRest(const typename Bulk::Params& p = {})
-        : bulk(p, services.context()), layout{bulk.body().size(), 0} {
+        : bulk(p, services.context()), layout(bulk.body().size(), bulk.body().dimension(), 0) {
         y = Eigen::VectorXd::Zero(layout.size());
-        y.head(layout.nodes) = bulk.body().x0.matrix();
-        y.segment(layout.nodes, layout.nodes) = bulk.body().z0.matrix();
+        layout.positions(y) = bulk.body().reference_position.reshaped().matrix();
     }
     Context context() { return services.context(&bulk.body()); }
 
@@ -22,12 +21,12 @@ struct BulkAtRest {
     Eigen::VectorXd y;
 };
 
-/// [fx | fz] that one effect alone adds at (t, y).
+/// The forces one effect alone adds at (t, y), laid out as the positions ([fx | fz] in 2D).
 inline Eigen::VectorXd forces_of_effect(Effect& e, const Eigen::VectorXd& y, const StateLayout& layout, double t) {
     Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
     ForceView f = forces_of(dy, layout);
     e.add_forces(view_of(y, layout, t), f);
-    return dy.segment(2 * layout.nodes, 2 * layout.nodes);
+    return layout.velocities(dy);
 }
 
 }  // namespace frictionlab::test_support

@@ -71,8 +71,7 @@ private:
 
 inline Body one_node(double mass) {
     Body b;
-    b.x0 = Eigen::ArrayXd::Zero(1);
-    b.z0 = Eigen::ArrayXd::Zero(1);
+    b.reference_position = Eigen::ArrayXXd::Zero(1, 2);
     b.mass = Eigen::ArrayXd::Constant(1, mass);
     return b;
 }
@@ -95,7 +94,7 @@ struct Oscillator {
         if (probe) *probe = spring.get();
         system.add_effect(std::move(spring));
         if (c > 0) system.add_effect(std::make_unique<Dashpot>(c));
-        system.initial_state()(0) = 1.0;
+        system.layout().positions_along(system.initial_state(), 0)(0) = 1.0;
         return system;
     }
     /// Exact (x, v) at time t (underdamped).
@@ -116,7 +115,7 @@ struct OscillatorRig {
     /// Phase-space distance from the exact state, velocity scaled by omega.
     double phase_space_error() const {
         const auto [x, v] = osc.exact(system.time());
-        return std::hypot(system.y()(0) - x, (system.y()(2) - v) / osc.omega());  // y = [x | z | vx | vz]
+        return std::hypot(system.state().x(0) - x, (system.state().vx(0) - v) / osc.omega());
     }
     Services services;
     Oscillator osc;
@@ -146,7 +145,7 @@ WorkBalance work_balance(double dt, double t_end) {
     const double potential0 = rig.spring->potential_energy(rig.system.state());
     Integrator integrator({dt}, rig.services.context());
     run_until(integrator, rig.system, t_end);
-    const double v = rig.system.y()(2);
+    const double v = rig.system.state().vx(0);
     return {rig.system.work().at(0), 0.5 * rig.osc.m * v * v,
             potential0 - rig.spring->potential_energy(rig.system.state())};
 }
@@ -158,10 +157,10 @@ double aux_error(double dt, double t_end) {
     const Body body = one_node(1.0);
     System system(body, 1);
     system.add_effect(std::make_unique<AuxDecay>());
-    system.initial_state()(4) = 1.0;  // y = [x | z | vx | vz | psi]
+    system.layout().aux_variables(system.initial_state())(0) = 1.0;
     Integrator integrator({dt}, services.context());
     run_until(integrator, system, t_end);
-    return std::abs(system.y()(4) - std::exp(-t_end));
+    return std::abs(system.state().aux(0) - std::exp(-t_end));
 }
 
 /// Largest relative energy error |E - E0|/E0 of the undamped oscillator at omega h, over the first
@@ -182,7 +181,7 @@ EnergyEnvelope energy_envelope(double omega_h, double periods) {
     EnergyEnvelope envelope{0, 0};
     for (long long i = 0; i < steps; ++i) {
         integrator.step(system, h);
-        const double error = std::abs(osc.energy(system.y()(0), system.y()(2)) - e0) / e0;
+        const double error = std::abs(osc.energy(system.state().x(0), system.state().vx(0)) - e0) / e0;
         if (i < tenth) envelope.first = std::max(envelope.first, error);
         if (i >= steps - tenth) envelope.last = std::max(envelope.last, error);
     }
@@ -202,7 +201,7 @@ double max_radius(double omega_h, int steps) {
     double radius = 1;
     for (int i = 0; i < steps; ++i) {
         integrator.step(system, h);
-        radius = std::max(radius, std::hypot(system.y()(0), system.y()(2) / osc.omega()));
+        radius = std::max(radius, std::hypot(system.state().x(0), system.state().vx(0) / osc.omega()));
     }
     return radius;
 }

@@ -21,6 +21,14 @@ struct Services {
     Context context(const Body* body = nullptr) { return Context{*log, 0, body, &quantities, &aux, "test"}; }
 };
 
+/// Node i's position and velocity along x in a state vector laid out as `layout` says.
+inline double& x_of(Eigen::VectorXd& y, const StateLayout& layout, Index node = 0) {
+    return y(layout.position_index(node, 0));
+}
+inline double& vx_of(Eigen::VectorXd& y, const StateLayout& layout, Index node = 0) {
+    return y(layout.velocity_index(node, 0));
+}
+
 class Rk4 {
 public:
     explicit Rk4(System& system)

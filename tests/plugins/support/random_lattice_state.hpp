@@ -15,7 +15,7 @@ struct RandomState : BulkAtRest<Bulk> {
     RandomState(const typename Bulk::Params& p, double u, unsigned seed) : BulkAtRest<Bulk>(p) {
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> d(-u, u);
-        for (Index q = 0; q < 2 * this->layout.nodes; ++q) this->y(q) += d(rng);
+        for (double& q : this->layout.positions(this->y)) q += d(rng);
     }
 };
 

@@ -240,6 +240,29 @@ public:
     }
     bool drives() const { return drives_loading_; }
 
+    /// The spatial dimensions of the bodies the type works on, 2 and/or 3 (Body::dimension()); with
+    /// `limit`, why not in the others, in the language of the physics. A scene whose body has
+    /// another dimension is refused by the scene check, at the type, with the limit. A type that
+    /// declares nothing works in 2D only: it was written when every body was planar. A bulk model
+    /// declares the dimensions of the bodies it builds; with several, body_dimension() says which
+    /// one its parameters choose.
+    ParamSpec& dimensions(std::vector<int> dims, std::string limit = {}) {
+        dimensions_ = std::move(dims);
+        dimension_limit_ = std::move(limit);
+        return *this;
+    }
+    ParamSpec& body_dimension(std::function<int(const P&)> of) {
+        body_dimension_ = std::move(of);
+        return *this;
+    }
+    const std::vector<int>& spatial_dimensions() const { return dimensions_; }
+    const std::string& dimension_limit() const { return dimension_limit_; }
+    /// The dimension of the body a bulk model of these values builds, type-erased for the registry.
+    std::function<int(const ParamValues&)> erased_body_dimension() const {
+        if (!body_dimension_) return [d = dimensions_.front()](const ParamValues&) { return d; };
+        return [this_copy = *this](const ParamValues& v) { return this_copy.body_dimension_(this_copy.build(v)); };
+    }
+
     const std::string& summary() const { return summary_; }
     const std::vector<ParamInfo>& params() const { return infos_; }
 
@@ -300,6 +323,9 @@ private:
     std::vector<TypedRule> rules_;
     std::function<std::vector<OutputName>(const P&)> outputs_;
     bool drives_loading_ = false;
+    std::vector<int> dimensions_{2};
+    std::string dimension_limit_;
+    std::function<int(const P&)> body_dimension_;
 };
 
 }  // namespace frictionlab

@@ -36,7 +36,7 @@ public:
     /// the sum of the parts' up to rounding. Empty (the default): the effect is its own single part.
     virtual std::vector<Effect*> parts() { return {}; }
 
-    /// Adds the virial of the forces this effect carries between nodes to each cell of the body
+    /// Adds the virial of the forces this effect carries between nodes to each cell of a planar body
     /// (Body::cells): for every bond, F (x) Delta, F its tension force on the first node and Delta
     /// the bond vector, shared equally by the cells the bond bounds; rows are cells, columns xx,
     /// zz, xz (N m). Over a cell's volume it is the cell's stress. Default: none (forces on nodes
@@ -68,7 +68,8 @@ public:
     virtual void initialise_aux(Eigen::Ref<Eigen::ArrayXd> /*aux*/) const {}
 
     /// Whether this effect's velocity dependence is local and given by add_velocity_jacobian(): its
-    /// x-force on node i depends on the velocities through vx_i only, and its z-force not at all. An
+    /// force on node i along x (the sliding direction) depends on the velocities through vx_i only,
+    /// and its forces along the other axes not at all. An
     /// integrator may then treat that dependence implicitly (a rate-and-state law is far too stiff in
     /// v for an explicit step near v = 0, theory.md D.2.4), and the stable-step estimate leaves it out.
     virtual bool has_velocity_jacobian() const { return false; }
@@ -90,8 +91,9 @@ public:
     /// before foreseen_event_time(s) or next_event_time(). E.g. a friction law with every junction
     /// pinned, a compression-only contact with its contact set known.
     virtual bool quasi_static_regime(const StageView&) const { return false; }
-    /// Adds the stiffness K = -dF/dq of this effect at s (N/m) as triplets (row, column, value),
-    /// q = [x (N) | z (N)]: the Jacobian of its forces with respect to the positions, velocities held.
+    /// Adds the stiffness K = -dF/dq of this effect at s (N/m) as triplets (row, column, value), q the
+    /// positions as the state lays them out (node i along axis a: StageView::position_index(i, a)):
+    /// the Jacobian of its forces with respect to the positions, velocities held.
     /// Duplicate entries are summed. Called only while quasi_static_regime(s).
     virtual void add_stiffness(const StageView&, std::vector<Eigen::Triplet<double>>& /*stiffness*/) const {}
     /// The earliest time after s.t at which a position-dependent transition occurs if every node

@@ -24,6 +24,7 @@ protected:
     static ParamSpec<Params> fixed_step_spec(std::string summary) {
         ParamSpec<Params> s(std::move(summary));
         s.add("dt", &Params::dt, "Time step.").unit("s").greater_than(0);
+        s.dimensions({2, 3});  // it steps the state as laid out, whatever the body's dimension
         return s;
     }
     double dt_;

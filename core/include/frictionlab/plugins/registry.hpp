@@ -24,10 +24,18 @@ struct TypeInfo {
     std::string summary;  // one paragraph: the physics and its reference
     std::vector<ParamInfo> params;
     std::vector<ParamRule> rules;
-    OutputNames outputs;          // the files it writes, if it declared them (ParamSpec::writes)
-    std::string library;          // the plugin file that provides it ("" for types added by code)
-    bool drives_loading = false;  // loaders: loading starts with the first stage it acts in
+    OutputNames outputs;             // the files it writes, if it declared them (ParamSpec::writes)
+    std::string library;             // the plugin file that provides it ("" for types added by code)
+    bool drives_loading = false;     // loaders: loading starts with the first stage it acts in
+    std::vector<int> dimensions{2};  // spatial dimensions of the bodies it works on (ParamSpec::dimensions)
+    std::string dimension_limit;     // why not in others
+    /// Bulk models: the dimension of the body it builds from these values.
+    std::function<int(const ParamValues&)> body_dimension;
     std::function<std::unique_ptr<Component>(const ParamValues&, const Context&)> create;
+
+    bool works_in(int dimension) const;
+    /// "2D and 3D", or "2D only (<limit>)": what `frictionlab doc` shows and a refusal says.
+    std::string dimensions_text() const;
 };
 
 template <class T>
@@ -71,6 +79,9 @@ public:
         info.rules = spec.erased_rules();
         info.outputs = spec.erased_outputs();
         info.drives_loading = spec.drives();
+        info.dimensions = spec.spatial_dimensions();
+        info.dimension_limit = spec.dimension_limit();
+        info.body_dimension = spec.erased_body_dimension();
         info.create = [spec](const ParamValues& values, const Context& ctx) -> std::unique_ptr<Component> {
             return std::make_unique<T>(spec.build(values), ctx);
         };
@@ -83,13 +94,17 @@ public:
     /// The types of one kind, sorted by name.
     std::vector<const TypeInfo*> types(Kind kind) const;
 
-    /// Makes a component of kind K; the type must exist (scene validation has checked it).
+    /// Makes a component of kind K; the type must exist (scene validation has checked it) and work
+    /// in the dimension of the context's body (idem).
     template <class K>
     std::unique_ptr<K> create(std::string_view type, const ParamValues& values, const Context& ctx) const {
         const TypeInfo* info = find(kind_of<K>(), type);
         if (!info) throw InputError("no " + std::string(to_string(kind_of<K>())) + " type '" + std::string(type) + "'");
+        if (ctx.body) check_dimension(*info, ctx.body->dimension());
         return std::unique_ptr<K>(static_cast<K*>(info->create(values, ctx).release()));
     }
+    /// Throws InputError if the type does not work on a body of `dimension` axes.
+    static void check_dimension(const TypeInfo& info, int dimension);
 
     /// Loads one plugin library and registers its types. Throws InputError naming the file and the
     /// reason (unloadable, no entry symbol, ABI mismatch with the first differing field, duplicate

@@ -71,18 +71,18 @@ public:
     Eigen::VectorXd& initial_state() { return y_; }
 
     /// The evaluation entry point: adds the rest of dy/dt after the velocities, before the division
-    /// by the masses, to f: [F | aux rates], the forces in N, layout().size() - 2N values, as every
+    /// by the masses, to f: [F | aux rates], the forces in N, layout().force_size() values, as every
     /// effect adds its own at (t, y). Pure in (t, y) given the frozen discrete state. Integrators that
     /// divide by the masses within their own pass over the rates call it directly (RK4's fused
     /// stages); derivative() below composes the whole dy/dt on it.
     void add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, const Evaluation& how = {});
     /// 1/m of every node: derivative(), and integrators that divide by the masses themselves (RK4).
     const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
-    /// The x-forces and the diagonal d(fx)/d(vx) (both [nodes]) of the active effects whose velocity
-    /// dependence is local (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats
-    /// that dependence implicitly solves with (IMEX). False, and both zero, when no effect has one.
-    /// Effects read the quantities others published in the last evaluation (a friction law reads
-    /// the base contact's normal force), so call it at the positions of that evaluation.
+    /// The x-forces and the diagonal d(fx)/d(vx) (both [nnode]; x the sliding direction) of the active effects whose
+    /// velocity dependence is local (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats that
+    /// dependence implicitly solves with (IMEX). False, and both zero, when no effect has one. Effects read the
+    /// quantities others published in the last evaluation (a friction law reads the base contact's normal force), so
+    /// call it at the positions of that evaluation.
     bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx);
     /// Whether an active part (index into pipeline()) has a local velocity Jacobian: the stable-step
     /// estimate, for integrators implicit in it.
@@ -120,9 +120,9 @@ public:
     double next_event_time() const;
 
     /// Quasi-static solving (Effect::quasi_static_regime), for the quasi-static stepper: whether
-    /// every active effect is in its quasi-static regime at s; the stiffness K = -dF/dq ([x | z],
-    /// 2N x 2N) of the active effects at s, assembled into `stiffness` (its pattern kept when
-    /// unchanged); and the earliest event they foresee if the nodes move on at the velocities of s.
+    /// every active effect is in its quasi-static regime at s; the stiffness K = -dF/dq (q the
+    /// positions as laid out in y, dof x dof) of the active effects at s, assembled into `stiffness` (its pattern kept
+    /// when unchanged); and the earliest event they foresee if the nodes move on at the velocities of s.
     bool quasi_static_regime(const StageView& s) const;
     void assemble_stiffness(const StageView& s, Eigen::SparseMatrix<double>& stiffness);
     double foreseen_event_time(const StageView& s) const;
@@ -142,8 +142,8 @@ public:
     /// describe it (observers call this; its cost is proportional to their cadence). Nothing to do
     /// when they already do: refreshed since the last step, or interpolated on a straight path.
     void refresh();
-    /// Net force on every node at the last refresh(): [fx (N) | fz (N)].
-    const Eigen::VectorXd& net_force() const { return net_force_; }
+    /// Net force on every node at the last refresh(), [nnode, ndim] (N).
+    const Eigen::ArrayXXd& net_force() const { return net_force_; }
     /// describe() of every part active in the current stage, in evaluation order.
     std::vector<std::string> pipeline() const;
     /// Visits every part of the pipeline (active or not; a composite effect's parts one by one), e.g.
@@ -186,7 +186,7 @@ private:
         bool open = false;
         double start_time = 0, end_time = 0;
         Quantities::Values start, end;
-        Eigen::VectorXd start_force, end_force;  // net_force_ at the ends
+        Eigen::ArrayXXd start_force, end_force;  // net_force_ at the ends
         template <class Archive>
         void serialize(Archive& ar) {
             ar(open, start_time, end_time, start, end, start_force, end_force);
@@ -206,9 +206,10 @@ private:
     std::vector<std::string> labels_;        // per part
     std::vector<const Slot*> active_;        // the current stage's pipeline, evaluation order
     std::vector<std::size_t> active_parts_;  // indices into parts_ of the active slots' parts
-    Eigen::VectorXd y_, scratch_, net_force_;
+    Eigen::VectorXd y_, scratch_;
+    Eigen::ArrayXXd net_force_;
     std::vector<double> work_, pending_work_;       // per part; pending = this step's, until accepted
-    Eigen::VectorXd effect_force_;                  // one part's [fx | fz | aux rate], accounting only
+    Eigen::VectorXd effect_force_;                  // one part's forces and aux rates laid out as dy, accounting only
     Eigen::VectorXd local_scratch_;                 // forces of the effects local in velocity
     std::vector<Eigen::Triplet<double>> triplets_;  // stiffness assembly scratch
     Eigen::VectorXd path_state_;                    // straight-path work scratch
