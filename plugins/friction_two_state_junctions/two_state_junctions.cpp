@@ -11,6 +11,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/random.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -74,6 +75,8 @@ TwoStateJunctions::TwoStateJunctions(const Params& params, const Context& ctx)
     normal_force_ = &q.needed_field("normal_force", set, n, name_);
     friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from its junctions, -sum_j f_j.");
     counts_ = JunctionCounts::publish(q, set, n);
+    characteristic_slip_ = &rupture_scales::publish_characteristic_slip(q, std::numeric_limits<double>::quiet_NaN());
+    rupture_scales::publish_kinetic_coefficient(q, mu_d_);
     const auto size = static_cast<std::size_t>(n_s_);
     blocks_.resize(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
@@ -154,8 +157,12 @@ double TwoStateJunctions::potential_energy(const StageView& s) const {
     return energy;
 }
 
-double TwoStateJunctions::mean_normal_force() const {
-    return normal_force_->size() > 0 ? normal_force_->max(0.0).mean() : 0.0;
+double TwoStateJunctions::follow_mean_normal_force() {
+    const double mean = normal_force_->size() > 0 ? normal_force_->max(0.0).mean() : 0.0;
+    // At the mean normal force an unloaded junction breaks after mu_s f_N / (N_s k_bar) of slip.
+    *characteristic_slip_ =
+        mean > 0 ? mu_s_ * mean / (static_cast<double>(n_s_) * k_bar_) : std::numeric_limits<double>::quiet_NaN();
+    return mean;
 }
 
 void TwoStateJunctions::follow_normal_force(Index i, double x, double mean) {
@@ -171,12 +178,12 @@ void TwoStateJunctions::follow_normal_force(Index i, double x, double mean) {
 
 void TwoStateJunctions::begin_stage(const StageInfo& stage, const StageView& s) {
     events_ = stage.friction_events;
-    const double mean = mean_normal_force();
+    const double mean = follow_mean_normal_force();
     for (std::size_t k = 0; k < nodes_.size(); ++k) follow_normal_force(static_cast<Index>(k), s.x[nodes_[k]], mean);
 }
 
 void TwoStateJunctions::commit(const StageView& end, double /*dt*/) {
-    const double mean = mean_normal_force();
+    const double mean = follow_mean_normal_force();
     next_event_ = infinity;
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const auto i = static_cast<Index>(k);

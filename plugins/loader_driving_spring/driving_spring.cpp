@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -116,6 +117,7 @@ DrivingSpring::DrivingSpring(const Params& p, const Context& ctx)
       driver_(ctx.quantities->scalar("driver_position", "m",
                                      "Displacement X(t) of the spring's far end since loading began.")) {
     x_h0_ = driving_point_x(ctx.body->x0);
+    rupture_scales::publish_drive_velocity(*ctx.quantities, params_.velocity);
 }
 
 template <class Positions>

@@ -54,6 +54,9 @@ struct ParamInfo {
     std::vector<std::string> choices;      // allowed strings
     bool names_stage = false;              // a string that must name a stage of the scene ("" names none)
     std::vector<std::string> former_keys;  // names the key had before: a scene using one is told this key
+    /// A number that may also be `auto`, stored as NaN: the component derives it from the scene and
+    /// reports what it chose (Context::resolved), as `check` prints it.
+    bool may_be_auto = false;
 };
 
 /// A file or folder a component writes at the top of the run's output directory, and the key whose
@@ -157,6 +160,12 @@ public:
         /// renamed key may be a sibling (mu_k is as close to mu_s as to mu_d); this names the new one.
         Field& formerly(std::string old_key) {
             info().former_keys.push_back(std::move(old_key));
+            return *this;
+        }
+        /// A number that may be written `auto` (stored as NaN, the member's default when it is NaN):
+        /// the component derives the value from the scene and records its choice.
+        Field& or_auto() {
+            info().may_be_auto = true;
             return *this;
         }
         /// The key must be given in the scene; the member initialiser is then only an example value.

@@ -34,6 +34,10 @@ struct Body {
     /// reference_spacing), m; 0: none. Boundary effects the model gives per node (the base contact)
     /// scale from it to stay the same per unit area on another lattice.
     double reference_spacing = 0;
+    /// The slowest long-wave speed of the bulk (a lattice's c_S, a chain's one speed), m/s; 0:
+    /// unknown. L / wave_speed is the time the body takes to ring: observers that must look past its
+    /// vibrations (the rupture detector's slip rate) average over it.
+    double wave_speed = 0;
     std::map<std::string, NodeSet, std::less<>> node_sets;
     std::vector<std::array<Index, 2>> bonds;  // springs, for pictures and bond-force output
     std::vector<std::array<Index, 4>> cells;  // quads, counter-clockwise; empty for a chain
