@@ -110,7 +110,7 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFil
     }
     if (std::filesystem::exists(rupture.summary))
         out.global_static_coefficient =
-            summary_number(YAML::LoadFile(rupture.summary.string()), "global_static_coefficient");
+            summary_number(YAML::LoadFile(rupture.summary.string()), "global_slip_force_ratio");
 
     const History slip = History::read(dir / "interface_slip.csv");
     if (out.any_event && !slip.time.empty()) {

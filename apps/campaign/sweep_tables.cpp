@@ -66,7 +66,7 @@ CaseEvents read_events(const CampaignRun& c) {
     }
     try {
         if (std::filesystem::exists(files->summary)) {
-            const YAML::Node n = YAML::LoadFile(files->summary.string())["global_static_coefficient"];
+            const YAML::Node n = YAML::LoadFile(files->summary.string())["global_slip_force_ratio"];
             if (n && n.IsScalar() && n.Scalar() != "null") out.global_static_coefficient = n.as<double>();
         }
     } catch (const YAML::Exception&) {

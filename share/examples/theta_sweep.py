@@ -34,8 +34,8 @@ def precursor_count(run):
     with open(os.path.join(run.directory, "precursors_summary.yaml")) as f:
         summary = yaml.safe_load(f)
     if summary["global_slip_seen"]:
-        return summary["precursors_before_first_global_slip"]
-    return summary["events"]
+        return summary["precursor_count"]
+    return summary["event_count"]
 
 
 def main(argv):

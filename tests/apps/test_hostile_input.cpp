@@ -179,12 +179,13 @@ TEST_F(HostileInput, AnObserverReadingWhatNoEffectPublishesIsRefusedAtTheObserve
     expect_refused((dir_ / "precursors.yaml").string(),
                    "precursors.yaml:32:5: error: observers[1]: precursors reads the fields 'junctions_dislocated', "
                    "'junctions_pinned', 'junctions_sliding' over node set 'interface', which no effect of this scene "
-                   "publishes: set criterion: slip");
-    // By its default criterion, auto, it chooses slip here, and check says so.
+                   "publishes: set criterion: slip_rate");
+    // By its default criterion, auto, it chooses slip_rate here, and check says so.
     std::ofstream(dir_ / "auto_precursors.yaml") << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n";
     const auto chosen = frictionlab("check auto_precursors.yaml", dir_);
     EXPECT_EQ(chosen.code, 0) << chosen.output;
-    const std::string said = "observers[1].criterion: auto is slip (no effect of this scene publishes junction counts)";
+    const std::string said =
+        "observers[1].criterion: auto is slip_rate (the friction law publishes no contact measure)";
     EXPECT_NE(chosen.output.find(said), std::string::npos) << chosen.output;
 }
 

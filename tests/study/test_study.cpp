@@ -116,10 +116,17 @@ TEST(Study, TinyStudyThroughTheCommand) {
     for (const auto& e : errors) EXPECT_EQ(table.row("reference").at(e), "0") << e;
     // The quantities that vary continuously with the step converge towards the reference (the
     // time of the first precursor is resolved to observe_every, and equal here).
-    for (const char* e : {"err_settled_normal_force", "err_settled_friction_force", "err_first_precursor_force",
-                          "err_global_static_coefficient", "err_event_slip"}) {
+    for (const char* e :
+         {"err_settled_normal_force", "err_settled_friction_force", "err_first_precursor_force", "err_event_slip"}) {
         EXPECT_LT(table.value("rk4_fine", e), table.value("rk4_coarse", e)) << e;
         EXPECT_GT(table.value("rk4_coarse", e), 0) << e;
+    }
+    // The global slip starts when its first block's contact breaks, which at this drive (20 mm/s)
+    // moves by a few observations with the step, either way (measured: 8 us later at 0.2 us, 2 us
+    // earlier at 0.4 us, against 0.1 us): small, not ordered by the step.
+    for (const char* case_name : {"rk4_fine", "rk4_coarse"}) {
+        EXPECT_GT(table.value(case_name, "err_global_static_coefficient"), 0) << case_name;
+        EXPECT_LT(table.value(case_name, "err_global_static_coefficient"), 2e-3) << case_name;
     }
     // Junction lifetimes are drawn by key, not in stepping order: runs at different steps draw the
     // same ones, so the step's error is far below that of drawing others (another seed).
@@ -184,7 +191,8 @@ TEST(Study, EnsemblesOverSeedsAreJudgedAndAFailingCaseIsRunAgainOnOtherSeeds) {
     // The 300 N slider slips globally at another F_S/F_N: fails, on both ensembles.
     EXPECT_EQ(value("lighter", "1", "global_slip_force_ratio", "verdict"), "fail");
     EXPECT_EQ(value("lighter", "2", "global_slip_force_ratio", "verdict"), "fail");
-    EXPECT_LT(std::stod(value("lighter", "1", "global_slip_force_ratio", "difference_ci_high")), 0);
+    // Higher: at the same drive its F_S/F_N rises 4/3 as fast (0.42-0.43 against 0.386-0.390).
+    EXPECT_GT(std::stod(value("lighter", "1", "global_slip_force_ratio", "difference_ci_low")), 0);
     EXPECT_EQ(rows_of("reference", "2").size(), 10u) << "the reference again, on the retest's seeds";
     for (const char* seed : {"seed_4", "seed_5", "seed_6"}) {
         EXPECT_TRUE(fs::exists(dir / "out" / "cases" / "lighter" / seed / "precursors.csv")) << seed;
