@@ -98,7 +98,7 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     auto r = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
     ASSERT_EQ(r.code, 0) << r.output;
     const std::string meta = read_text(dir_ / "tiny_out" / "run.yaml");
-    for (const char* key : {"status: completed", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
+    for (const char* key : {"status: done", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
         EXPECT_NE(meta.find(key), std::string::npos) << key << "\n" << meta;
     EXPECT_FALSE(fs::exists(dir_ / "tiny_out" / "run.json")) << "run.yaml is the one record";
     const std::string curve = read_text(dir_ / "tiny_out" / "loading_curve.csv");

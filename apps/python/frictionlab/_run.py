@@ -138,7 +138,8 @@ class Run:
 
     @property
     def status(self) -> str:
-        """"completed", "failed" or "running"."""
+        """"done", "failed", "interrupted" or "running": run.yaml's `status`, the word a sweep's
+        sweep.csv uses for its runs too."""
         return self.metadata.get("status", "")
 
     @property
