@@ -300,17 +300,22 @@ std::string Precursors::summary_text(const RuptureSummary& s, const ContactChang
                                      bool run_ended) {
     std::string out;
     auto line = [&](std::string_view key, const std::string& value) { out += fmt::format("{}: {}\n", key, value); };
-    out += "# Rupture events (theory.md B.19, B.20). Numbers in SI units; null: not (yet) observed.\n";
+    out +=
+        "# Rupture events (theory.md B.19, B.20). Numbers in SI units; null: not (yet) observed. A time counts from "
+        "the run's start, a time _since_loading from when loading started.\n";
     line("run_ended", run_ended ? "true" : "false");
-    line("events", std::to_string(s.events));
+    line("event_count", std::to_string(s.events));
     line("global_slip_seen", s.global_seen ? "true" : "false");
-    line("precursors_before_first_global_slip", std::to_string(s.precursors_before_global));
-    line("first_global_slip_time", yaml_number(s.global_time));
-    line("first_global_slip_driving_force", yaml_number(s.global_driving_force));
-    line("first_global_slip_normal_load", yaml_number(s.global_normal_load));
-    line("global_static_coefficient", yaml_number(s.global_seen ? s.global_static_coefficient() : nan));
+    // Before the first global slip: a count only once there is one.
+    line("precursor_count", s.global_seen ? std::to_string(s.precursors_before_global) : "null");
+    line("global_slip_time", yaml_number(s.global_time));
+    line("global_slip_time_since_loading", yaml_number(s.global_time - info.loading_start));
+    line("global_slip_driving_force", yaml_number(s.global_driving_force));
+    line("global_slip_normal_load", yaml_number(s.global_normal_load));
+    line("global_slip_force_ratio", yaml_number(s.global_seen ? s.global_driving_force / s.global_normal_load : nan));
     line("peak_driving_force", yaml_number(s.peak_driving_force));
     line("peak_driving_force_time", yaml_number(s.peak_time));
+    line("peak_driving_force_time_since_loading", yaml_number(s.peak_time - info.loading_start));
     line("lift_offs", std::to_string(contact.lift_offs()));
     line("re_contacts", std::to_string(contact.re_contacts()));
     line("blocks_out_of_contact", std::to_string(contact.out_of_contact()));

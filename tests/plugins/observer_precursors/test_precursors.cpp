@@ -202,7 +202,7 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
     EXPECT_TRUE(before_end.whole);
     ASSERT_EQ(before_end.rows.size(), 1u);
     EXPECT_EQ(column(before_end, 0, "finished"), 1);
-    EXPECT_NE(read_text(dir_ / "precursors_summary.yaml").find("events: 1\n"), std::string::npos);
+    EXPECT_NE(read_text(dir_ / "precursors_summary.yaml").find("event_count: 1\n"), std::string::npos);
 
     observer.end(view());
     CsvFile events = read_csv(dir_ / "precursors.csv");
@@ -229,8 +229,9 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
 
     const std::string summary = read_text(dir_ / "precursors_summary.yaml");
     for (const char* expected :
-         {"run_ended: true\n", "events: 2\n", "global_slip_seen: false\n", "precursors_before_first_global_slip: 2\n",
-          "global_static_coefficient: null\n",
+         {"run_ended: true\n", "event_count: 2\n", "global_slip_seen: false\n",
+          "precursor_count: null\n",  // counted before the first global slip: none came
+          "global_slip_time: null\n", "global_slip_time_since_loading: null\n", "global_slip_force_ratio: null\n",
           "run:\n  framework: frictionlab\n  version: 9.8.7-test\n  scene_file: scene.yaml\n  scene_hash: feedface\n"
           "  seed: 42\n  plugins: observer_precursors 0.1.0\n"})
         EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
@@ -254,17 +255,20 @@ TEST_F(PrecursorsTest, AnEndedEventIsWrittenOnceItsNucleationWindowHasPassed) {
     EXPECT_EQ(column(events, 0, "global"), 0);
 }
 
-TEST_F(PrecursorsTest, AGlobalSlipGivesTheStaticCoefficient) {
+TEST_F(PrecursorsTest, AGlobalSlipGivesTheStaticCoefficientOnBothClocks) {
     publish_junctions();
+    info_.loading_start = 0.5 * dt;
     Precursors observer = make();
     observer.begin(view());
     observe_at(observer, dt, {});
     observe_at(observer, 2 * dt, {0, 1, 2, 3, 4, 5});
     observer.end(view());
     const std::string summary = read_text(dir_ / "precursors_summary.yaml");
-    EXPECT_NE(summary.find("global_slip_seen: true\n"), std::string::npos) << summary;
-    EXPECT_NE(summary.find(fmt::format("global_static_coefficient: {:.10g}\n", 80 * 2 * dt / 400)), std::string::npos)
-        << summary;
+    for (const std::string& expected : {std::string("global_slip_seen: true\n"), std::string("precursor_count: 0\n"),
+                                        fmt::format("global_slip_force_ratio: {:.10g}\n", 80 * 2 * dt / 400),
+                                        fmt::format("global_slip_time: {:.10g}\n", 2 * dt),
+                                        fmt::format("global_slip_time_since_loading: {:.10g}\n", 2 * dt - 0.5 * dt)})
+        EXPECT_NE(summary.find(expected), std::string::npos) << expected << summary;
 }
 
 TEST_F(PrecursorsTest, OnlyTheNamedStageIsObserved) {
