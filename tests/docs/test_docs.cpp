@@ -162,9 +162,10 @@ TEST_F(Docs, EveryDocumentedSceneAndStudyIsValid) {
             EXPECT_EQ(r.code, 0) << where << "\n" << r.output;
         } else if (node["scene"]) {
             ++files;
-            // A study's base scene is in configs/study, a sweep's in configs/li2020.
+            // A study's base scene is in configs/study, a sweep's in configs/li2020 or configs/.
             auto base = source / "configs/study" / node["scene"].as<std::string>();
             if (!fs::exists(base)) base = source / "configs/li2020" / node["scene"].as<std::string>();
+            if (!fs::exists(base)) base = source / "configs" / node["scene"].as<std::string>();
             ASSERT_TRUE(fs::exists(base)) << where << ": the base scene " << base;
             fs::copy_file(base, dir_ / base.filename(), fs::copy_options::overwrite_existing);
             std::ofstream(dir_ / "campaign.yaml") << f.text;
