@@ -403,15 +403,36 @@ TEST(Sweep, CheckNamesTheCaseAComponentRefuses) {
         << result.output;
     EXPECT_EQ(result.output.find("case junctions"), std::string::npos) << result.output;
 
-    // Over seeds the same refusal holds for every seed of the case: said once, naming them all.
+    // Over seeds the same refusal holds for every seed of the case: said once, naming the case.
     std::ofstream(dir / "laws.yaml", std::ios::app) << "seeds: [1, 2, 3]\n";
     const auto seeded = frictionlab("check laws.yaml", dir);
     EXPECT_EQ(seeded.code, 2) << seeded.output;
-    const std::string once =
-        "error: integrator: 3 cases: rate_and_state_seed-1 to rate_and_state_seed-3: rate_state is too stiff";
+    const std::string once = "error: integrator: case rate_and_state: rate_state is too stiff";
     const auto first = seeded.output.find(once);
     ASSERT_NE(first, std::string::npos) << seeded.output;
     EXPECT_EQ(seeded.output.find("rate_state is too stiff", first + once.size()), std::string::npos) << seeded.output;
+}
+
+TEST(Sweep, CheckSaysEachMistakeOnceNamingTheCasesItHoldsFor) {
+    // Two mistakes, each in a listed case that the grid makes two cases of, over two seeds: eight
+    // runs, two errors.
+    const fs::path dir = frictionlab::testing::work_directory();
+    std::ofstream(dir / "mistakes.yaml") << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
+                                         << "grid:\n  loaders[2].velocity: [0.08, 0.12]\n"
+                                         << "cases:\n  - name: a\n    set: [\"friction.mu_k=0.3\"]\n"
+                                         << "  - name: b\n    set: [\"stages[1].duration=-1\"]\n"
+                                         << "seeds: [1, 2]\n";
+    const auto result = frictionlab("check mistakes.yaml", dir);
+    EXPECT_EQ(result.code, 2) << result.output;
+    EXPECT_NE(result.output.find("mistakes.yaml:6:21: error: friction.mu_k: cases a_velocity-0.08 and a_velocity-0.12: "
+                                 "unknown key 'mu_k'; did you mean 'mu_d'?"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("mistakes.yaml:8:31: error: stages[1].duration: cases b_velocity-0.08 and "
+                                 "b_velocity-0.12: must be > 0, got -1"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("\n2 errors in mistakes.yaml"), std::string::npos) << result.output;
 }
 
 TEST(Sweep, BadValuesAreReportedWithTheirPlaceInTheSweepFile) {
