@@ -288,8 +288,9 @@ TEST_F(Docs, TheKineticCoefficientHasOneName) {
     for (const auto& page : pages) {
         const std::string text = read_text(page);
         EXPECT_EQ(text.find("μ_k"), std::string::npos) << page.filename() << ": write μ_d (mu_d), as every law does";
-        if (page.filename() != "scene-format.md")  // where the did-you-mean is explained
+        if (page.filename() != "scene-format.md") {  // where the did-you-mean is explained
             EXPECT_EQ(text.find("mu_k"), std::string::npos) << page.filename();
+        }
     }
 }
 
