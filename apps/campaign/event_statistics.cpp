@@ -12,14 +12,14 @@ namespace frictionlab {
 const std::vector<EventStatistic>& event_statistics() {
     static const std::vector<EventStatistic> list{
         {"precursor_count", "1", "precursors before the first global slip (NaN without a global slip)"},
-        {"first_precursor_time", "s", "start of the first precursor, since loading began"},
+        {"first_precursor_time_since_loading", "s", "start of the first precursor, since loading started"},
         {"first_precursor_force_ratio", "1", "F_S/F_N at the start of the first precursor"},
         {"precursor_1_length", "1", "l/L of the first precursor"},
         {"precursor_2_length", "1", "l/L of the second precursor"},
         {"precursor_3_length", "1", "l/L of the third precursor"},
         {"global_slip_force_ratio", "1",
          "F_S/F_N at the start of the first global slip: the global static coefficient"},
-        {"global_slip_time", "s", "start of the first global slip, since loading began"},
+        {"global_slip_time_since_loading", "s", "start of the first global slip, since loading started"},
         {"stick_slip_period", "s", "mean time between the starts of successive global slips"},
         {"mean_drop", "1",
          "mean fall of F_S/F_N through a global slip: its highest less its lowest after that, before the next event"},
@@ -75,7 +75,7 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
                                         [&](auto e) { return start[e] > start[globals.front()]; }),
                          precursors.end());
     if (!precursors.empty()) {
-        s["first_precursor_time"] = start[precursors[0]] - load_start;
+        s["first_precursor_time_since_loading"] = start[precursors[0]] - load_start;
         s["first_precursor_force_ratio"] = ratio[precursors[0]];
     }
     const char* lengths[] = {"precursor_1_length", "precursor_2_length", "precursor_3_length"};
@@ -83,7 +83,7 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
     if (globals.empty()) return s;
     s["precursor_count"] = static_cast<double>(precursors.size());
     s["global_slip_force_ratio"] = ratio[globals[0]];
-    s["global_slip_time"] = start[globals[0]] - load_start;
+    s["global_slip_time_since_loading"] = start[globals[0]] - load_start;
     if (globals.size() >= 2)
         s["stick_slip_period"] = (start[globals.back()] - start[globals.front()]) / double(globals.size() - 1);
     if (!std::filesystem::exists(loading_curve)) return s;

@@ -23,7 +23,8 @@ ParamSpec<RateState::Params> RateState::spec() {
         .greater_than(0);
     s.add("d_c", &Params::d_c, "Characteristic slip distance D_c over which psi evolves to its new steady state.")
         .unit("m")
-        .greater_than(0);
+        .greater_than(0)
+        .also_known_as("critical_slip");
     s.add("f0", &Params::f0, "Reference friction coefficient f0: the steady-state mu at v = v0.")
         .unit("1")
         .greater_than(0);

@@ -25,7 +25,7 @@ ParamSpec<Params> CoulombStrength::spec() {
     s.add("mu_d", &Params::mu_d, "Kinetic (dynamic) coefficient: a slipping block feels mu_d f_N against its velocity.")
         .unit("1")
         .at_least(0)
-        .formerly("mu_k");
+        .also_known_as("mu_k");
     s.rule("mu_d", order_rule);
     return s;
 }

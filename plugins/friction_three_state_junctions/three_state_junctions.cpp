@@ -76,7 +76,8 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
         .greater_than(0);
     s.add("mu_d", &Params::mu_d, "Sliding coefficient of one micro-contact: a sliding junction carries mu_d p.")
         .unit("1")
-        .at_least(0);
+        .at_least(0)
+        .also_known_as("mu_k");
     s.add("sliding_time_mean", &Params::sliding_time_mean, "Mean t_s of the sliding-state duration (Gaussian, t > 0).")
         .unit("s")
         .greater_than(0);

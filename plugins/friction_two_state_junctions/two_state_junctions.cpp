@@ -40,7 +40,8 @@ ParamSpec<Params> TwoStateJunctions::spec() {
         .greater_than(0);
     s.add("mu_d", &Params::mu_d, "Dynamic coefficient: a slipping junction carries mu_d f_N / N_s.")
         .unit("1")
-        .at_least(0);
+        .at_least(0)
+        .also_known_as("mu_k");
     s.add("junction_stiffness", &Params::junction_stiffness,
           "Stiffness k_bar of one pinned junction on a block at the mean normal force; k_i = k_bar sqrt(f_N,i/<f_N>).")
         .unit("N/m")

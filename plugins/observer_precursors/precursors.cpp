@@ -51,9 +51,42 @@ const std::vector<std::string> event_columns{"event",
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay", "resolution"};
 const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
 const ColumnTypes event_types{{"event", "nucleation_block", "ruptured_blocks", "out_of_contact"},
-                              {"finished", "global"}};
-const ColumnTypes front_types{{"event", "block"}, {}};
-const ColumnTypes contact_types{{"block"}, {"in_contact"}};
+                              {"finished", "global"},
+                              {{"event", "1"},
+                               {"finished", "1"},
+                               {"t_start", "s"},
+                               {"t_end", "s"},
+                               {"duration", "s"},
+                               {"driving_force", "N"},
+                               {"normal_load", "N"},
+                               {"force_ratio", "1"},
+                               {"nucleation_block", "1"},
+                               {"nucleation_x", "m"},
+                               {"extent", "m"},
+                               {"extent_over_length", "1"},
+                               {"min_ruptured_x", "m"},
+                               {"max_ruptured_x", "m"},
+                               {"ruptured_blocks", "1"},
+                               {"global", "1"},
+                               {"front_speed", "m/s"},
+                               {"crossing_speed", "m/s"},
+                               {"max_slip", "m"},
+                               {"out_of_contact", "1"},
+                               {"front_speed_error", "m/s"},
+                               {"crossing_speed_error", "m/s"},
+                               {"slip_extent", "m"},
+                               {"tip_slip", "m"}}};
+const ColumnTypes front_types{{"event", "block"},
+                              {},
+                              {{"event", "1"},
+                               {"block", "1"},
+                               {"x", "m"},
+                               {"distance", "m"},
+                               {"time", "s"},
+                               {"delay", "s"},
+                               {"resolution", "s"}}};
+const ColumnTypes contact_types{
+    {"block"}, {"in_contact"}, {{"time", "s"}, {"block", "1"}, {"x", "m"}, {"in_contact", "1"}}};
 
 std::vector<OutputName> outputs(const Precursors::Params& p) {
     auto out = table_outputs("events_file", p.events_file, p.format);

@@ -169,7 +169,7 @@ void report_unknown(const YAML::Node& key, const std::string& path, const Sectio
     const std::string name = key.Scalar();
     std::string guess;
     for (const auto& p : keys.params)
-        if (std::find(p.former_keys.begin(), p.former_keys.end(), name) != p.former_keys.end()) guess = p.key;
+        if (std::find(p.also_known_as.begin(), p.also_known_as.end(), name) != p.also_known_as.end()) guess = p.key;
     if (guess.empty()) guess = did_you_mean(name, known);
     if (!guess.empty()) {
         reporter.error(key, join_path(path, name),

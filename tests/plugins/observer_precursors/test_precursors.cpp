@@ -286,8 +286,10 @@ TEST_F(PrecursorsTest, WritesFinishedEventsAsTheyEndAndAnOpenOneAsUnfinished) {
 
     const std::string summary = read_text(dir_ / "precursors_summary.yaml");
     for (const char* expected :
-         {"run_ended: true\n", "event_count: 2\n", "global_slip_seen: false\n", "precursor_count: null\n",
-          "global_slip_force_ratio: null\n", "verdict: agree\n",
+         {"run_ended: true\n", "event_count: 2\n", "global_slip_seen: false\n",
+          "precursor_count: null\n",  // counted before the first global slip: none came
+          "global_slip_time: null\n", "global_slip_time_since_loading: null\n", "global_slip_force_ratio: null\n",
+          "verdict: agree\n",
           "run:\n  framework: frictionlab\n  version: 9.8.7-test\n  scene_file: scene.yaml\n  scene_hash: feedface\n"
           "  seed: 42\n  plugins: observer_precursors 0.1.0\n"})
         EXPECT_NE(summary.find(expected), std::string::npos) << expected << "\n" << summary;
@@ -315,6 +317,7 @@ TEST_F(PrecursorsTest, AnEndedEventIsWrittenOnceItsNucleationWindowHasPassed) {
 // the same run without the fall has a global slip with no drop.
 TEST_F(PrecursorsTest, AGlobalSlipWithItsDropAgrees) {
     publish_junctions();
+    info_.loading_start = 0.5 * dt;
     Precursors observer = make();
     observer.begin(view());
     observe_at(observer, dt, {}, {}, 160);
@@ -343,6 +346,22 @@ TEST_F(PrecursorsTest, AGlobalSlipWithoutADropDisagrees) {
     EXPECT_NE(summary.find("global slip event 0 (F_S/F_N 0.4 at t = 2e-05 s) with no drop of F_S/F_N"),
               std::string::npos)
         << summary;
+}
+
+TEST_F(PrecursorsTest, AGlobalSlipGivesTheStaticCoefficientOnBothClocks) {
+    publish_junctions();
+    info_.loading_start = 0.5 * dt;
+    Precursors observer = make();
+    observer.begin(view());
+    observe_at(observer, dt, {});
+    observe_at(observer, 2 * dt, {0, 1, 2, 3, 4, 5});
+    observer.end(view());
+    const std::string summary = read_text(dir_ / "precursors_summary.yaml");
+    for (const std::string& expected : {std::string("global_slip_seen: true\n"), std::string("precursor_count: 0\n"),
+                                        fmt::format("global_slip_force_ratio: {:.10g}\n", 80 * 2 * dt / 400),
+                                        fmt::format("global_slip_time: {:.10g}\n", 2 * dt),
+                                        fmt::format("global_slip_time_since_loading: {:.10g}\n", 2 * dt - 0.5 * dt)})
+        EXPECT_NE(summary.find(expected), std::string::npos) << expected << summary;
 }
 
 TEST_F(PrecursorsTest, OnlyTheNamedStageIsObserved) {
