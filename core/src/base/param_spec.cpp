@@ -68,8 +68,12 @@ std::string choice_violation(const ParamInfo& p, const std::string& s) {
 }  // namespace
 
 std::string violated_constraint(const ParamInfo& info, const ParamValue& value) {
-    if (auto* d = std::get_if<double>(&value))
-        return info.may_be_auto && std::isnan(*d) ? "" : numeric_violation(info, *d);
+    if (auto* d = std::get_if<double>(&value)) {
+        if (!info.may_be_auto) return numeric_violation(info, *d);
+        if (std::isnan(*d)) return "";  // auto: the component's to choose
+        const auto m = numeric_violation(info, *d);
+        return m.empty() ? m : m + ", or auto";
+    }
     if (auto* i = std::get_if<std::int64_t>(&value)) {
         if (const auto& range = info.integer_range; range && (*i < range->first || *i > range->second))
             return fmt::format("must be between {} and {} (the range of its integer type), got {}", range->first,

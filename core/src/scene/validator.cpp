@@ -1,6 +1,8 @@
 #include "scene/validator.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <regex>
 
@@ -312,6 +314,7 @@ private:
         for (const auto& c : components) {
             check_cadence(c, total);
             if (!c.info || !c.section.valid) continue;
+            for (const auto& p : c.info->params) check_within_stage(c, p, stages, total);
             for (const auto& p : c.info->params) {
                 if (!p.names_stage) continue;
                 const auto* name = std::get_if<std::string>(&c.spec.values.at(p.key));
@@ -327,6 +330,26 @@ private:
                                             suggestion(*name, stage_names_, "stages")));
             }
         }
+    }
+
+    /// A time declared within_stage(): no longer than the (shortest) stage its stage key names, or than
+    /// the run while that key names none. A time left `auto` is the component's to choose.
+    void check_within_stage(const ComponentRead& c, const ParamInfo& p, const std::vector<StageSpec>& stages,
+                            double total) {
+        if (p.within_stage_of.empty()) return;
+        const auto* value = std::get_if<double>(&c.spec.values.at(p.key));
+        const auto* stage = std::get_if<std::string>(&c.spec.values.at(p.within_stage_of));
+        if (!value || std::isnan(*value) || !stage) return;
+        double longest = stage->empty() ? total : std::numeric_limits<double>::infinity();
+        for (const auto& s : stages)
+            if (s.name == *stage) longest = std::min(longest, s.duration);
+        if (!(*value > longest) || std::isinf(longest)) return;
+        const auto given = c.section.given.find(p.key);
+        reporter_.error(
+            given == c.section.given.end() ? c.spec.where : reporter_.where(given->second.value),
+            join_path(c.spec.path, p.key),
+            fmt::format("{:.6g} s is longer than {} ({:.6g} s): give at most {:.6g} s, or auto", *value,
+                        stage->empty() ? std::string("the whole run") : "stage " + quote(*stage), longest, longest));
     }
 
     /// Two outputs of one run with the same name would overwrite each other (a file and a folder of

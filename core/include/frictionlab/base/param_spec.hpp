@@ -51,8 +51,11 @@ struct ParamInfo {
     /// An integer member narrower than the scene's 64 bits: the values it can hold. A value outside
     /// would wrap around when stored (nx = 4294967307 would build 11 columns).
     std::optional<std::pair<std::int64_t, std::int64_t>> integer_range;
-    std::vector<std::string> choices;        // allowed strings
-    bool names_stage = false;                // a string that must name a stage of the scene ("" names none)
+    std::vector<std::string> choices;  // allowed strings
+    bool names_stage = false;          // a string that must name a stage of the scene ("" names none)
+    /// A time that must not exceed the stage the key of this name names (its shortest stage of that
+    /// name; "" names none: the whole run), e.g. how long an observer waits within the stage it observes.
+    std::string within_stage_of;
     std::vector<std::string> also_known_as;  // other names for it (a former name, another symbol): did-you-mean only
     /// A number that may also be `auto`, stored as NaN: the component derives it from the scene and
     /// reports what it chose (Context::resolved), as `check` prints it.
@@ -154,6 +157,11 @@ public:
         /// The value names a stage of the scene (or is empty); the scene check refuses any other.
         Field& names_a_stage() {
             info().names_stage = true;
+            return *this;
+        }
+        /// A time no longer than the stage that key `stage_key` names (the whole run while it names none).
+        Field& within_stage(std::string stage_key) {
+            info().within_stage_of = std::move(stage_key);
             return *this;
         }
         /// Another name the quantity is known by: a name the key had before, or the symbol other
