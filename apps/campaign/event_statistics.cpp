@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <yaml-cpp/yaml.h>
+
 #include "frictionlab/output/csv_columns.hpp"
 #include "frictionlab/simulation/run_record.hpp"
 
@@ -58,6 +60,7 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
                                       double load_start) {
     EventStatistics s;
     if (!std::filesystem::exists(rupture.events)) return s;
+    s.events_agree = recorded_events_agree(rupture.summary);
     CsvColumns events = read_csv_columns(rupture.events);
     const auto& start = events["t_start"];
     const auto& global = events["global"];
@@ -103,6 +106,19 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
     }
     if (drops > 0) s["mean_drop"] = sum / drops;
     return s;
+}
+
+std::optional<bool> recorded_events_agree(const std::filesystem::path& summary) {
+    try {
+        if (!std::filesystem::exists(summary)) return std::nullopt;
+        const YAML::Node verdict = YAML::LoadFile(summary.string())["event_check"]["verdict"];
+        if (!verdict || !verdict.IsScalar()) return std::nullopt;
+        if (verdict.Scalar() == "agree") return true;
+        if (verdict.Scalar() == "disagree") return false;
+        return std::nullopt;  // not_checked
+    } catch (const YAML::Exception&) {
+        return std::nullopt;  // a summary that cannot be read says nothing of the check
+    }
 }
 
 double recorded_loading_start(const std::filesystem::path& directory) {

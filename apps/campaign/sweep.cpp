@@ -90,6 +90,7 @@ public:
             detail::report_missing(root, "grid", "a mapping of key paths to lists of values (or `cases:` or `seeds:`)",
                                    "", reporter_);
         sweep.cases = grid_cases(listed, grid);
+        sweep.leave_out_disagreeing = value_or(top, "leave_out_disagreeing", sweep.leave_out_disagreeing);
     }
 
 private:

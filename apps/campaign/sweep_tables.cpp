@@ -25,6 +25,11 @@ const char* const note = "each run's run.yaml in cases/<run>/ records its resolv
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.10g}", v); }
 
+/// A run's own verdict on its events, as a table cell: true, false, or nan without one.
+std::string agree_cell(const std::optional<EventStatistics>& s) {
+    return s && s->events_agree ? (*s->events_agree ? "true" : "false") : "nan";
+}
+
 /// The run's value of each column, as the sweep file writes it; empty where it has none.
 std::string value_cells(const CampaignValues& values, const std::vector<CampaignColumn>& columns) {
     std::string text;
@@ -77,11 +82,11 @@ RunTables run_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs, con
             events = read_csv_columns(files->events);
         const std::size_t count = events["t_start"].size();
         const auto statistic = [&](const char* name) { return number(statistics[i] ? statistics[i]->at(name) : nan); };
-        out.runs +=
-            fmt::format("{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", cells, r.status, csv_cell(r.reason), r.scene_hash,
-                        r.status == "done" && files ? std::to_string(count) : "nan", statistic("precursor_count"),
-                        statistic("first_precursor_force_ratio"), statistic("global_slip_force_ratio"), r.summary.steps,
-                        r.summary.wall_seconds, r.summary.cpu_seconds);
+        out.runs += fmt::format("{},{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", cells, r.status, csv_cell(r.reason),
+                                r.scene_hash, r.status == "done" && files ? std::to_string(count) : "nan",
+                                statistic("precursor_count"), statistic("first_precursor_force_ratio"),
+                                statistic("global_slip_force_ratio"), agree_cell(statistics[i]), r.summary.steps,
+                                r.summary.wall_seconds, r.summary.cpu_seconds);
         auto column = [&](const char* name, std::size_t k) {
             const auto it = events.find(name);
             return it == events.end() || k >= it->second.size() ? nan : it->second[k];
@@ -105,21 +110,27 @@ std::string run_statistics_rows(const Sweep& sweep, const std::vector<CampaignRu
         text += run_cells(sweep, runs[i], varied);
         for (std::size_t k = 0; k < event_statistics().size(); ++k)
             text += fmt::format(",{}", number(statistics[i] ? statistics[i]->values[k] : nan));
-        text += "\n";
+        text += "," + agree_cell(statistics[i]) + "\n";
     }
     return text;
 }
 
 /// sweep_statistics.csv's rows: for each case (a point of the grid), each event statistic over the
-/// seeds of its runs that finished.
+/// seeds of its runs that finished, and how many of them disagree with their own check of their
+/// events (left out of the statistics with leave_out_disagreeing).
 std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs,
                             const std::vector<std::optional<EventStatistics>>& statistics,
                             const std::vector<CampaignColumn>& varied) {
     std::vector<std::vector<EventStatistics>> ensembles(sweep.cases.size());
+    std::vector<int> disagreeing(sweep.cases.size(), 0);
     std::vector<const CampaignValues*> case_values(sweep.cases.size());  // a run's: listed cases' are its scene's
     for (std::size_t i = 0; i < runs.size(); ++i) {
-        if (statistics[i]) ensembles.at(runs[i].case_index).push_back(*statistics[i]);
-        case_values.at(runs[i].case_index) = &runs[i].values;
+        const std::size_t c = runs[i].case_index;
+        case_values.at(c) = &runs[i].values;
+        if (!statistics[i]) continue;
+        const bool disagrees = statistics[i]->events_agree == false;
+        disagreeing.at(c) += disagrees;
+        if (!(disagrees && sweep.leave_out_disagreeing)) ensembles.at(c).push_back(*statistics[i]);
     }
     const auto& list = event_statistics();
     std::string text;
@@ -129,9 +140,9 @@ std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& 
             csv_cell(sweep_case_name(point)) + value_cells(case_values[c] ? *case_values[c] : point.values, varied);
         for (std::size_t k = 0; k < list.size(); ++k) {
             const EnsembleSummary e = summarize(column(ensembles[c], k));
-            text +=
-                fmt::format("{},{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,
-                            number(e.mean), number(e.sd), number(e.ci_low), number(e.ci_high), csv_cell(e.interval));
+            text += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,
+                                number(e.mean), number(e.sd), number(e.ci_low), number(e.ci_high), csv_cell(e.interval),
+                                disagreeing[c]);
         }
     }
     return text;
@@ -158,6 +169,7 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
                                    {"precursor_count", "1"},
                                    {"first_precursor_force_ratio", "1"},
                                    {"global_slip_force_ratio", "1"},
+                                   {"events_agree", ""},
                                    {"steps", "1"},
                                    {"wall_seconds", "s"},
                                    {"cpu_seconds", "s"}});
@@ -176,6 +188,7 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
     write_campaign_table(sweep, "sweep", output / "events.csv", events_columns, rows.events, note, &split);
     std::vector<CampaignColumn> run_statistics_columns = leading;
     for (const auto& s : event_statistics()) run_statistics_columns.push_back({s.name, s.unit});
+    run_statistics_columns.push_back({"events_agree", ""});
     write_campaign_table(sweep, "sweep", output / "run_statistics.csv", run_statistics_columns,
                          run_statistics_rows(sweep, runs, statistics, varied),
                          "per run, each event statistic (share/docs/accuracy-standard.md); nan where the run has "
@@ -187,13 +200,16 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
     std::vector<CampaignColumn> statistics_columns{{"case", ""}};
     statistics_columns.insert(statistics_columns.end(), varied.begin(), varied.end());
     for (auto c : statistic_summary_columns()) statistics_columns.push_back(std::move(c));
+    statistics_columns.push_back({"disagreeing", "1"});
     write_campaign_table(
         sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
         statistics_rows(sweep, runs, statistics, varied),
         fmt::format("per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "
                     "finished: n that reach it, missing that do not, their mean, sample sd and the 95 % percentile "
-                    "bootstrap interval of the mean ({} keyed resamples; none below {} values: `interval` says so)",
-                    bootstrap_resamples, interval_minimum_values),
+                    "bootstrap interval of the mean ({} keyed resamples; none below {} values: `interval` says so); "
+                    "disagreeing: runs whose events disagree with their own check ({})",
+                    bootstrap_resamples, interval_minimum_values,
+                    sweep.leave_out_disagreeing ? "left out of the statistics" : "counted in the statistics"),
         &split);
 }
 

@@ -86,6 +86,7 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
     const auto rows = sweep_rows(dir / "j1" / "sweep.csv");
     ASSERT_EQ(rows.size(), case_names.size());
     std::size_t all_events = 0;
+    std::map<std::string, int> disagreeing;  // per case, its runs whose events disagree with their check
     for (const auto& name : case_names) {
         SCOPED_TRACE(name);
         const fs::path case_dir = dir / "j1" / "cases" / name;
@@ -111,6 +112,10 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             else
                 EXPECT_NEAR(std::stod(row.at(key)), std::stod(stated), 1e-9 * std::abs(std::stod(stated))) << key;
         }
+        // The run's own check of its events (theory.md §5a), as its summary gives it.
+        const std::string verdict = summary["event_check"]["verdict"].Scalar();
+        EXPECT_EQ(row.at("events_agree"), verdict == "agree" ? "true" : "false") << verdict;
+        disagreeing[name.substr(0, 13)] += verdict == "disagree";
         // -j 2 computes every case bit for bit as -j 1.
         EXPECT_EQ(data_lines(case_dir / "ruptures.csv"), data_lines(dir / "j2" / "cases" / name / "ruptures.csv"));
     }
@@ -185,6 +190,8 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             EXPECT_EQ(row->at("ci_low"), "nan");
             EXPECT_EQ(row->at("ci_high"), "nan");
             EXPECT_EQ(row->at("interval"), "too few seeds");
+            // Counted in (the sweep does not leave them out), and said how many.
+            EXPECT_EQ(row->at("disagreeing"), std::to_string(disagreeing["velocity-" + velocity]));
         }
         EXPECT_EQ(by_hand.size(), 3u);
     }
@@ -436,6 +443,34 @@ TEST(Sweep, CheckSaysEachMistakeOnceNamingTheCasesItHoldsFor) {
               std::string::npos)
         << result.output;
     EXPECT_NE(result.output.find("\n2 errors in mistakes.yaml"), std::string::npos) << result.output;
+}
+
+TEST(Sweep, RunsWhoseEventsDisagreeWithTheirCheckAreCountedAndCanBeLeftOut) {
+    // A check no run passes (a global slip must start within 1e-9 of its drop's peak) against the
+    // usual one: each run's verdict is in sweep.csv, and the statistics leave the disagreeing out.
+    const fs::path dir = frictionlab::testing::work_directory();
+    std::ofstream(dir / "strict.yaml")
+        << "scene: " SWEEP_FILES "/tiny_scene.yaml\nleave_out_disagreeing: true\n"
+        << "cases:\n  - name: strict\n    set: [\"observers[0].match_tolerance=1.0e-9\"]\n"
+        << "  - name: usual\n    set: [\"observers[0].match_tolerance=0.05\"]\n"
+        << "seeds: [1, 2]\n";
+    const auto swept = frictionlab("sweep -q strict.yaml -o out -j 2", dir);
+    ASSERT_EQ(swept.code, 0) << swept.output;
+    std::map<std::string, int> disagreeing;
+    for (const auto& [run, row] : sweep_rows(dir / "out" / "sweep.csv")) {
+        if (run.starts_with("strict")) EXPECT_EQ(row.at("events_agree"), "false") << run;
+        disagreeing[row.at("case")] += row.at("events_agree") == "false";
+    }
+    EXPECT_EQ(disagreeing["strict"], 2);
+    for (const Row& row : table_rows(dir / "out" / "sweep_statistics.csv")) {
+        if (row.at("statistic") != "global_slip_force_ratio") continue;
+        SCOPED_TRACE(row.at("case"));
+        const int left_out = disagreeing[row.at("case")];
+        EXPECT_EQ(row.at("disagreeing"), std::to_string(left_out));
+        EXPECT_EQ(std::stoi(row.at("n")) + std::stoi(row.at("missing")), 2 - left_out) << "the rest, counted";
+    }
+    EXPECT_NE(read_text(dir / "out" / "sweep_statistics.csv.meta.yaml").find("left out of the statistics"),
+              std::string::npos);
 }
 
 TEST(Sweep, ACaseCanRemoveAListItemToSwapTheLaw) {
