@@ -6,30 +6,31 @@
 
 namespace frictionlab {
 
-EventCheck check_events(const std::vector<LoadingDrop>& drops, const std::vector<CheckedEvent>& events,
+EventCheck check_events(const std::vector<LoadingDrop>& falls, const std::vector<CheckedEvent>& events,
                         const EventCheckOptions& o) {
     EventCheck c;
-    c.drop_event.assign(drops.size(), -1);
+    c.drop_event.assign(falls.size(), -1);
     std::vector<char> in_a_window(events.size(), 0);
     double previous_trough = -std::numeric_limits<double>::infinity();
-    for (std::size_t d = 0; d < drops.size(); ++d) {
-        const LoadingDrop& drop = drops[d];
+    for (std::size_t d = 0; d < falls.size(); ++d) {
+        const LoadingDrop& fall = falls[d];
         std::vector<std::size_t> globals;
         for (std::size_t k = 0; k < events.size(); ++k)
-            if (events[k].global && events[k].t_start > previous_trough && events[k].t_start <= drop.trough_time)
+            if (events[k].global && events[k].t_start > previous_trough && events[k].t_start <= fall.trough_time)
                 globals.push_back(k), in_a_window[k] = 1;
-        previous_trough = drop.trough_time;
+        previous_trough = fall.trough_time;
+        if (globals.size() == 1) c.drop_event[d] = events[globals[0]].index;
+        if (!fall.major) continue;  // a small fall may be a global slip, and need not
         const std::string what = fmt::format("drop {} of F_S/F_N (from {:.4g} at t = {:.6g} s to {:.4g})", d,
-                                             drop.peak_ratio, drop.peak_time, drop.trough_ratio);
+                                             fall.peak_ratio, fall.peak_time, fall.trough_ratio);
         if (globals.size() != 1) {
             c.problems.push_back(fmt::format("{} has {} global slips", what, globals.size()));
             continue;
         }
         const CheckedEvent& e = events[globals[0]];
-        c.drop_event[d] = e.index;
-        if (!e.finished && drop.ended)
+        if (!e.finished && fall.ended)
             c.problems.push_back(fmt::format("{}: its global slip (event {}) never ended", what, e.index));
-        if (std::abs(e.force_ratio - drop.peak_ratio) > o.match_tolerance * drop.peak_ratio)
+        if (std::abs(e.force_ratio - fall.peak_ratio) > o.match_tolerance * fall.peak_ratio)
             c.problems.push_back(
                 fmt::format("{}: its global slip (event {}) starts at F_S/F_N {:.4g}, more than {:g} "
                             "% from the peak",

@@ -34,21 +34,21 @@ struct EventCheckOptions {
 };
 
 struct EventCheck {
-    std::vector<int> drop_event;        // per drop: the index of its global slip, -1 if none
+    std::vector<int> drop_event;        // per fall: the index of its one global slip, -1 if none or several
     std::vector<std::string> problems;  // each disagreement, in words
     bool agree() const { return problems.empty(); }
 };
 
-/// The rules, each a disagreement when broken:
-/// - every drop of F_S/F_N is matched by exactly one global slip starting after the previous drop's
-///   lowest point and no later than its own; it has ended unless the drop is still under way, and
-///   starts within match_tolerance of the drop's peak F_S/F_N (relative);
-/// - every global slip that has ended lies in the window of a drop;
+/// The rules, each a disagreement when broken (`falls` as LoadingDrops gives them):
+/// - every drop of F_S/F_N (a major fall) is matched by exactly one global slip starting after the
+///   previous fall's lowest point and no later than its own; it has ended unless the drop is still
+///   under way, and starts within match_tolerance of the drop's peak F_S/F_N (relative);
+/// - every global slip that has ended lies in the window of a fall, a drop or a smaller one;
 /// - no global slip starts below kinetic_fraction of the law's kinetic coefficient;
 /// - a precursor that has ended reaches, within one block, as far as its slip: no more than one block
 ///   beyond its farthest ruptured block slipped fast by more than its contact takes elastically
 ///   (slip_extent), and its farthest ruptured block, or the one before, slipped by min_slip.
-EventCheck check_events(const std::vector<LoadingDrop>& drops, const std::vector<CheckedEvent>& events,
+EventCheck check_events(const std::vector<LoadingDrop>& falls, const std::vector<CheckedEvent>& events,
                         const EventCheckOptions& options);
 
 }  // namespace frictionlab

@@ -6,12 +6,14 @@ namespace frictionlab {
 
 void LoadingDrops::observe(double t, double ratio) {
     if (std::isnan(ratio)) return;
+    const double beyond_ringing = threshold_ / 3;
     if (falling_) {
-        LoadingDrop& d = drops_.back();
+        LoadingDrop& d = falls_.back();
         if (ratio < d.trough_ratio) {
             d.trough_time = t, d.trough_ratio = ratio;
-        } else if (ratio - d.trough_ratio >= threshold_ / 3) {
-            // Risen again beyond the ringing of the slip: the drop is over, the next peak starts here.
+            d.major = d.peak_ratio - ratio >= threshold_;
+        } else if (ratio - d.trough_ratio >= beyond_ringing) {
+            // Risen again beyond the ringing of the slip: the fall is over, the next peak starts here.
             d.ended = true;
             falling_ = false;
             peak_time_ = t, peak_ratio_ = ratio;
@@ -20,8 +22,8 @@ void LoadingDrops::observe(double t, double ratio) {
     }
     if (ratio > peak_ratio_) {
         peak_time_ = t, peak_ratio_ = ratio;
-    } else if (peak_ratio_ - ratio >= threshold_) {
-        drops_.push_back({peak_time_, peak_ratio_, t, ratio, false});
+    } else if (peak_ratio_ - ratio >= beyond_ringing) {
+        falls_.push_back({peak_time_, peak_ratio_, t, ratio, false, peak_ratio_ - ratio >= threshold_});
         falling_ = true;
     }
 }

@@ -132,13 +132,15 @@ ParamSpec<Precursors::Params> Precursors::spec() {
           "slider, over which its vibrations average out.")
         .unit("s")
         .greater_than(0)
-        .or_auto();
+        .or_auto()
+        .within_stage("stage");
     s.add("quiet_time", &Params::quiet_time,
           "A block rupturing within one block of an event's rupturing block at most this long after it joins that "
           "event; an event ends once none of its blocks has ruptured for this long; auto: twice rate_window.")
         .unit("s")
         .greater_than(0)
-        .or_auto();
+        .or_auto()
+        .within_stage("stage");
     s.add("min_slip", &Params::min_slip,
           "An event none of whose blocks slipped this much is not reported (vibration or a junction's flicker); "
           "auto: a tenth of the friction law's characteristic slip (its published characteristic_slip).")
@@ -167,13 +169,17 @@ ParamSpec<Precursors::Params> Precursors::spec() {
         .at_least(0);
     s.add("drop_threshold", &Params::drop_threshold,
           "The check of the events: a fall of F_S/F_N by at least this much is a drop of the loading curve, "
-          "which exactly one global slip must match.")
+          "which exactly one global slip must match; a fall by a third of it goes beyond a slip's ringing, and a "
+          "global slip may lie in it.")
         .unit("1")
         .greater_than(0);
     s.add("match_tolerance", &Params::match_tolerance,
           "The check of the events: a global slip must start within this fraction of its drop's peak F_S/F_N.")
         .unit("1")
         .greater_than(0);
+    s.add("check", &Params::check,
+          "Check the events against the loading curve's drops and the slip field (theory.md §5a); false skips "
+          "the check (verdict: not_checked), for a run that measures what it costs.");
     s.add("events_file", &Params::events_file,
           "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
@@ -366,7 +372,7 @@ void Precursors::observe(const RunView& view) {
     const double f_s = driving_force_ ? *driving_force_ : nan;
     const double f_n = normal_load_ ? *normal_load_ : nan;
     detector_->observe(view.state.t, {rupturing_, contact_, fast_, slip_, broke_at_, intact_at_}, f_s, f_n);
-    drops_.observe(view.state.t, f_s / f_n);
+    if (params_.check) drops_.observe(view.state.t, f_s / f_n);
     report_ended(view);
 }
 
@@ -397,7 +403,7 @@ void Precursors::end(const RunView& view) {
     report_ended(view);
     write_summary(view, true);
     const EventCheck c = check();
-    if (c.agree()) return;
+    if (!params_.check || c.agree()) return;
     std::string problems;
     for (const auto& p : c.problems) problems += "\n  " + p;
     view.log.warn(
@@ -444,12 +450,13 @@ void Precursors::write(const RuptureEvent& e) {
 }
 
 EventCheck Precursors::check() const {
+    if (!params_.check) return {};
     EventCheckOptions o;
     o.match_tolerance = params_.match_tolerance;
     o.kinetic_coefficient = kinetic_coefficient_;
     o.spacing = detector_->interface().spacing;
     o.min_slip = detector_->options().min_slip;
-    return check_events(drops_.drops(), checked_, o);
+    return check_events(drops_.falls(), checked_, o);
 }
 
 std::string Precursors::summary_text(const RunView& view, const EventCheck& c, bool run_ended) const {
@@ -489,20 +496,22 @@ std::string Precursors::summary_text(const RunView& view, const EventCheck& c, b
         yaml_number(o.global_span), yaml_number(o.nucleation_load), yaml_number(params_.drop_threshold),
         yaml_number(params_.match_tolerance));
     out +=
-        "# The events checked (theory.md §5a): global slips against the drops of F_S/F_N, precursors\n"
-        "# against the slip field. verdict: agree, or disagree with the problems listed.\n";
+        "# The events checked (theory.md §5a): global slips against the falls of F_S/F_N (drop: by at least\n"
+        "# drop_threshold, which a global slip must match), precursors against the slip field.\n"
+        "# verdict: agree, or disagree with the problems listed.\n";
     out += "event_check:\n";
-    out += fmt::format("  verdict: {}\n", c.agree() ? "agree" : "disagree");
-    const auto& drops = drops_.drops();
-    out += "  drops:";
-    if (drops.empty()) out += " []";
+    out += fmt::format("  verdict: {}\n", !params_.check ? "not_checked" : c.agree() ? "agree" : "disagree");
+    const auto& falls = drops_.falls();
+    out += "  falls:";
+    if (falls.empty()) out += " []";
     out += "\n";
-    for (std::size_t d = 0; d < drops.size(); ++d)
+    for (std::size_t d = 0; d < falls.size(); ++d)
         out += fmt::format(
-            "    - {{peak_time_since_loading: {}, peak_force_ratio: {}, trough_force_ratio: {}, ended: {}, "
+            "    - {{peak_time_since_loading: {}, peak_force_ratio: {}, trough_force_ratio: {}, drop: {}, ended: {}, "
             "global_slip_event: {}}}\n",
-            yaml_number(drops[d].peak_time - t0), yaml_number(drops[d].peak_ratio), yaml_number(drops[d].trough_ratio),
-            drops[d].ended ? "true" : "false", c.drop_event[d] >= 0 ? std::to_string(c.drop_event[d]) : "null");
+            yaml_number(falls[d].peak_time - t0), yaml_number(falls[d].peak_ratio), yaml_number(falls[d].trough_ratio),
+            falls[d].major ? "true" : "false", falls[d].ended ? "true" : "false",
+            c.drop_event[d] >= 0 ? std::to_string(c.drop_event[d]) : "null");
     out += "  problems:";
     if (c.problems.empty()) out += " []";
     out += "\n";

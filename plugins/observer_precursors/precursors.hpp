@@ -80,6 +80,7 @@ public:
         double nucleation_load = 0.01;
         double drop_threshold = 0.03;
         double match_tolerance = 0.05;
+        bool check = true;
         std::string stage = "load";
         std::string events_file = "precursors.csv";
         std::string fronts_file = "precursor_fronts.csv";

@@ -9,7 +9,12 @@ namespace {
 constexpr double ls = 2.5e-3;
 
 LoadingDrop drop(double peak_time, double peak, double trough_time, bool ended = true) {
-    return {peak_time, peak, trough_time, peak - 0.07, ended};
+    return {peak_time, peak, trough_time, peak - 0.07, ended, true};
+}
+
+/// A fall of F_S/F_N by less than the drop threshold.
+LoadingDrop small_fall(double peak_time, double peak, double trough_time) {
+    return {peak_time, peak, trough_time, peak - 0.02, true, false};
 }
 
 CheckedEvent global(int index, double t, double ratio, bool finished = true) {
@@ -66,6 +71,18 @@ TEST(EventCheck, AGlobalSlipWithoutADrop) {
     EXPECT_NE(c.problems[0].find("with no drop"), std::string::npos);
     // Still open at the end of the run: its drop may be yet to come.
     EXPECT_TRUE(check_events({}, {global(0, 0.5, 0.39, false)}, options()).agree());
+}
+
+// A global slip that released less load than a drop (three_state_junctions at the headline's drive,
+// seed 2: 0.376 to 0.349 before the drop from 0.430): it has its fall, and the drop after it its own.
+TEST(EventCheck, AGlobalSlipWithASmallFallAndADropAfterIt) {
+    const std::vector<LoadingDrop> falls{small_fall(0.5, 0.376, 0.5004), drop(1.0, 0.43, 1.001)};
+    const EventCheck c = check_events(falls, {global(0, 0.4999, 0.376), global(1, 0.9995, 0.429)}, options());
+    EXPECT_TRUE(c.agree()) << (c.problems.empty() ? "" : c.problems[0]);
+    EXPECT_EQ(c.drop_event, (std::vector<int>{0, 1}));
+    // A small fall need not be a global slip; a drop must.
+    EXPECT_TRUE(check_events(falls, {global(1, 0.9995, 0.429)}, options()).agree());
+    EXPECT_FALSE(check_events(falls, {global(0, 0.4999, 0.376)}, options()).agree());
 }
 
 TEST(EventCheck, AGlobalSlipThatNeverEnded) {

@@ -81,6 +81,19 @@ TEST(PrecursorsScene, TheFirstPrecursorsOfAFastLoadedSlider) {
     std::stringstream s;
     s << summary.rdbuf();
     EXPECT_NE(s.str().find("run_ended: true"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("  verdict: agree\n"), std::string::npos) << s.str();
+
+    // The check only reads the events: without it they are the same, row for row, and the summary
+    // says they went unchecked.
+    const auto unchecked = frictionlab::testing::frictionlab(
+        "run -q '" PRECURSOR_SCENES "/fast_loading.yaml' --set observers[1].check=false -o unchecked", dir);
+    ASSERT_EQ(unchecked.code, 0) << unchecked.output;
+    EXPECT_EQ(frictionlab::testing::read_text(dir / "unchecked" / "precursors.csv"),
+              frictionlab::testing::read_text(out / "precursors.csv"));
+    const std::string unchecked_summary =
+        frictionlab::testing::read_text(dir / "unchecked" / "precursors_summary.yaml");
+    EXPECT_NE(unchecked_summary.find("  verdict: not_checked\n  falls: []\n  problems: []\n"), std::string::npos)
+        << unchecked_summary;
 }
 
 }  // namespace
