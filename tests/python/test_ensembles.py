@@ -1,5 +1,5 @@
-"""frictionlab.ensembles against values worked out by hand, and share/scripts/li2020-claims and
-share/scripts/lattice-convergence on campaign tables built by hand."""
+"""frictionlab.ensembles against values worked out by hand, and python3 -m frictionlab.li2020_claims
+and -m frictionlab.lattice_convergence on campaign tables built by hand."""
 import os
 import subprocess
 import sys
@@ -9,8 +9,6 @@ import pandas as pd
 import pytest
 
 from frictionlab import ensembles
-
-SOURCE = os.environ.get("FRICTIONLAB_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
 def test_difference_is_the_difference_of_the_means_with_a_reproducible_bootstrap_interval():
@@ -115,6 +113,13 @@ def write(path, text):
         f.write(text)
 
 
+def analysis(module, *arguments, cwd):
+    """python3 -m frictionlab.MODULE ARGUMENTS in `cwd`, finding the package as this test does (ctest
+    puts build/python on PYTHONPATH)."""
+    return subprocess.run([sys.executable, "-m", f"frictionlab.{module}", *arguments], cwd=cwd, capture_output=True,
+                          text=True)
+
+
 STATISTICS = ("precursor_count,first_precursor_time_since_loading,first_precursor_force_ratio,precursor_1_length,"
               "precursor_2_length,precursor_3_length,global_slip_force_ratio,global_slip_time_since_loading,"
               "stick_slip_period,mean_drop")
@@ -153,10 +158,7 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
           + "\n".join(events) + "\n")
     write(tmp_path / "fig7/run_statistics.csv", f"{keys},{STATISTICS}\n" + "\n".join(runs) + "\n")
     write(tmp_path / "doc.md", "before\n<!-- li2020-claims -->\nold\n<!-- /li2020-claims -->\nafter\n")
-    build = os.path.dirname(os.path.dirname(ensembles.__file__))  # build/python
-    out = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/li2020-claims"), "fig7", "fig8",
-                          "--write", "doc.md"], cwd=tmp_path, capture_output=True, text=True,
-                         env={**os.environ, "PYTHONPATH": build})
+    out = analysis("li2020_claims", "fig7", "fig8", "--write", "doc.md", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
     text = out.stdout
     assert "10 seeds" not in text and "5 seeds a point (Fig. 8) and 5 a configuration (Fig. 7)" in text
@@ -170,8 +172,7 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
     # Four seeds a point are too few for an interval: the claims say so instead of giving one.
     write(tmp_path / "fig8/run_statistics.csv", f"case,loaders[1].theta,seed,run,{STATISTICS}\n"
           + "\n".join(r for r in rows if "_seed-5," not in r) + "\n")
-    few = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/li2020-claims"), "fig7", "fig8"],
-                         cwd=tmp_path, capture_output=True, text=True, env={**os.environ, "PYTHONPATH": build})
+    few = analysis("li2020_claims", "fig7", "fig8", cwd=tmp_path)
     assert few.returncode == 0, few.stderr
     assert "slope +4.00 (too few seeds)" in few.stdout and "4 seeds a point (Fig. 8)" in few.stdout
 
@@ -198,10 +199,7 @@ def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tm
     write(tmp_path / "conv/sweep.csv", "case,seed,run,status\n" + "".join(
         f"x,0,{n},{'not run' if n.endswith('seed-6') else 'done'}\n" for n in names))
     write(tmp_path / "doc.md", "<!-- lattice-convergence -->\nold\n<!-- /lattice-convergence -->\n")
-    build = os.path.dirname(os.path.dirname(ensembles.__file__))  # build/python
-    out = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/lattice-convergence"), "conv",
-                          "--figure", "f.png", "--write", "doc.md"], cwd=tmp_path, capture_output=True, text=True,
-                         env={**os.environ, "PYTHONPATH": build, "MPLBACKEND": "Agg"})
+    out = analysis("lattice_convergence", "conv", "--figure", "f.png", "--write", "doc.md", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
     lines = {line.split(" | ")[0].lstrip("| "): line for line in out.stdout.splitlines() if line.startswith("| ")}
     assert lines["quantity"] == "| quantity | 5 × 2 | 9 × 3 | 5 × 2 − 9 × 3 |"
@@ -212,9 +210,7 @@ def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tm
     assert (tmp_path / "f.png").stat().st_size > 0
     assert (tmp_path / "doc.md").read_text() == f"<!-- lattice-convergence -->\n{out.stdout}<!-- /lattice-convergence -->\n"
     # Grouped by case (a sweep over something else on one lattice), each compared with the last case.
-    by_case = subprocess.run([sys.executable, os.path.join(SOURCE, "share/scripts/lattice-convergence"), "conv",
-                              "--by", "case"], cwd=tmp_path, capture_output=True, text=True,
-                             env={**os.environ, "PYTHONPATH": build, "MPLBACKEND": "Agg"})
+    by_case = analysis("lattice_convergence", "conv", "--by", "case", cwd=tmp_path)
     assert by_case.returncode == 0, by_case.stderr
     assert "| quantity | lattice-5x2 | lattice-9x3 | lattice-5x2 − lattice-9x3 |" in by_case.stdout
     assert "**+0.020 [" in by_case.stdout

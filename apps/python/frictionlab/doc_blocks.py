@@ -1,6 +1,6 @@
 """Generated blocks of Markdown documents: the text between <!-- NAME --> and <!-- /NAME --> is
-what a script measured, and the script replaces it (share/scripts/li2020-claims,
-share/scripts/lattice-convergence)."""
+what a script measured, and the script replaces it (frictionlab.li2020_claims,
+frictionlab.lattice_convergence)."""
 import re
 
 

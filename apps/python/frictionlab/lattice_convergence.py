@@ -1,10 +1,10 @@
-#!/usr/bin/python3
 """The lattice size as a resolution: what a sweep over lattice sizes (one case per lattice, several
 seeds each) gives at each, with 95 % bootstrap intervals (frictionlab.ensembles), as a Markdown table
 and a figure.
 
     build/bin/frictionlab sweep configs/li2020/lattice_convergence.yaml -o out/convergence -j 2
-    share/scripts/lattice-convergence out/convergence [--figure F.png] [--write share/docs/lattice-resolution.md]
+    PYTHONPATH=build/python /usr/bin/python3 -m frictionlab.lattice_convergence out/convergence [--figure F.png]
+        [--write share/docs/lattice-resolution.md]
 
 The quantities: the settled normal-force profile (Fig. 5; from interface_history's row at the start
 of loading), the first precursor's F_S/F_N and l/L, the precursor count before the first global
@@ -13,8 +13,7 @@ the first global slip's crossing speed). Each lattice is compared with the fines
 their root-mean-square difference to the finest's mean profile. With --by case the runs are
 grouped by their case instead (a sweep that varies something else on one lattice,
 configs/li2020/junction_noise.yaml), each compared with the last case. With --write, the table
-replaces what stands between the <!-- BLOCK --> markers (--block, default lattice-convergence). Run
-from the repository root after building (it imports build/python)."""
+replaces what stands between the <!-- BLOCK --> markers (--block, default lattice-convergence)."""
 import argparse
 import os
 import sys
@@ -23,8 +22,7 @@ import numpy as np
 import pandas as pd
 import yaml
 
-sys.path.insert(0, os.path.join(os.getcwd(), "build", "python"))
-from frictionlab import doc_blocks, ensembles  # noqa: E402
+from . import doc_blocks, ensembles
 
 # (column of the per-run table, label, format)
 QUANTITIES = [
@@ -179,15 +177,16 @@ def figure(runs, profiles, path, title):
     fig.savefig(path, dpi=110)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python3 -m frictionlab.lattice_convergence",
+                                     description=__doc__.splitlines()[0])
     parser.add_argument("directory", help="output directory of the sweep over lattice sizes")
     parser.add_argument("--figure", help="where to write the figure (PNG)")
     parser.add_argument("--write", nargs="*", default=[], help="files whose <!-- BLOCK --> block to replace")
     parser.add_argument("--block", default="lattice-convergence", help="name of the block --write replaces")
     parser.add_argument("--by", choices=["lattice", "case"], default="lattice",
                         help="group the runs by lattice (compared with the finest) or by case (with the last)")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     runs, profiles = per_run(args.directory, args.by)
     text = table(runs)
     print(text, end="")

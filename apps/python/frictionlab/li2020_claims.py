@@ -1,13 +1,12 @@
-#!/usr/bin/python3
 """The claims of Li et al. 2020 about Figs. 7 and 8, each as an effect measured over the seeds of
 the shipped campaigns with its 95 % bootstrap interval (frictionlab.ensembles), as Markdown.
 
     build/bin/frictionlab sweep configs/li2020/fig7_precursor_scaling.yaml -o out/fig7 -j 2
     build/bin/frictionlab sweep configs/li2020/fig8_nonuniform_loading.yaml -o out/fig8 -j 2
-    share/scripts/li2020-claims out/fig7 out/fig8 [--write README.md]
+    PYTHONPATH=build/python /usr/bin/python3 -m frictionlab.li2020_claims out/fig7 out/fig8 [--write README.md]
 
 With --write, the list replaces what stands between the <!-- li2020-claims --> markers of each
-file named. Run from the repository root after building (it imports build/python)."""
+file named."""
 import argparse
 import os
 import sys
@@ -16,8 +15,7 @@ import numpy as np
 import pandas as pd
 import yaml
 
-sys.path.insert(0, os.path.join(os.getcwd(), "build", "python"))
-from frictionlab import doc_blocks, ensembles  # noqa: E402
+from . import doc_blocks, ensembles
 
 THETA = "loaders[1].theta"
 FORCE, HEIGHT = "loaders[1].total_force", "loaders[2].height"
@@ -147,12 +145,13 @@ def fig7_claims(directory):
     return lines, seeds
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python3 -m frictionlab.li2020_claims",
+                                     description=__doc__.splitlines()[0])
     parser.add_argument("fig7", help="output directory of the Fig. 7 sweep")
     parser.add_argument("fig8", help="output directory of the Fig. 8 sweep")
     parser.add_argument("--write", nargs="*", default=[], help="files whose <!-- li2020-claims --> block to replace")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     fig8, seeds8 = fig8_claims(args.fig8)
     fig7, seeds7 = fig7_claims(args.fig7)
     text = (f"Measured over {seeds8} seeds a point (Fig. 8) and {seeds7} a configuration (Fig. 7); each "
@@ -163,6 +162,7 @@ def main():
             doc_blocks.replace_block(doc, "li2020-claims", text)
         except ValueError as e:
             sys.exit(str(e))
+
 
 if __name__ == "__main__":
     main()
