@@ -40,7 +40,7 @@ EventCheck check_events(const std::vector<LoadingDrop>& falls, const std::vector
         const CheckedEvent& e = events[k];
         if (e.global && e.finished && !in_a_window[k])
             c.problems.push_back(
-                fmt::format("global slip event {} (F_S/F_N {:.4g} at t = {:.6g} s) with no drop of "
+                fmt::format("global slip event {} (F_S/F_N {:.4g} at t = {:.6g} s) with no fall of "
                             "F_S/F_N",
                             e.index, e.force_ratio, e.t_start));
         if (e.global && e.force_ratio < o.kinetic_fraction * o.kinetic_coefficient)

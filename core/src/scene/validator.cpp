@@ -343,7 +343,8 @@ private:
         double longest = stage->empty() ? total : std::numeric_limits<double>::infinity();
         for (const auto& s : stages)
             if (s.name == *stage) longest = std::min(longest, s.duration);
-        if (!(*value > longest) || std::isinf(longest)) return;
+        // A stage without a valid duration has its own error.
+        if (!(longest > 0) || std::isinf(longest) || !(*value > longest)) return;
         const auto given = c.section.given.find(p.key);
         reporter_.error(
             given == c.section.given.end() ? c.spec.where : reporter_.where(given->second.value),
