@@ -53,11 +53,6 @@ EventCheck check_events(const std::vector<LoadingDrop>& falls, const std::vector
             c.problems.push_back(
                 fmt::format("precursor event {} reaches {:.4g} m, but the interface slipped to {:.4g} m", e.index,
                             e.extent, e.slip_extent));
-        if (e.tip_slip < o.min_slip)
-            c.problems.push_back(
-                fmt::format("precursor event {} reaches {:.4g} m, where the interface slipped only "
-                            "{:.3g} m (less than min_slip {:.3g} m)",
-                            e.index, e.extent, e.tip_slip, o.min_slip));
     }
     return c;
 }

@@ -16,12 +16,12 @@ namespace frictionlab {
 struct CheckedEvent {
     int index = 0;
     bool global = false, finished = false;
-    double t_start = 0, force_ratio = 0;               // s, 1
-    double extent = 0, slip_extent = 0, tip_slip = 0;  // m (see RuptureEvent)
+    double t_start = 0, force_ratio = 0;  // s, 1
+    double extent = 0, slip_extent = 0;   // m (see RuptureEvent)
 
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(index, global, finished, t_start, force_ratio, extent, slip_extent, tip_slip);
+        ar(index, global, finished, t_start, force_ratio, extent, slip_extent);
     }
 };
 
@@ -30,7 +30,6 @@ struct EventCheckOptions {
     double kinetic_coefficient = std::numeric_limits<double>::quiet_NaN();  // the law's; NaN: not checked
     double kinetic_fraction = 0.5;  // a global slip starting below this fraction of it is suspect
     double spacing = 0;             // l_s, m: a precursor's extent may differ from its slip's by one block
-    double min_slip = 0;            // m: the least slip of a rupture
 };
 
 struct EventCheck {
@@ -46,8 +45,8 @@ struct EventCheck {
 /// - every global slip that has ended lies in the window of a fall, a drop or a smaller one;
 /// - no global slip starts below kinetic_fraction of the law's kinetic coefficient;
 /// - a precursor that has ended reaches, within one block, as far as its slip: no more than one block
-///   beyond its farthest ruptured block slipped fast by more than its contact takes elastically
-///   (slip_extent), and its farthest ruptured block, or the one before, slipped by min_slip.
+///   beyond the farthest block of its extent slipped fast by more than its contact takes elastically
+///   (slip_extent). (That the blocks of its extent slipped min_slip is the extent's definition.)
 EventCheck check_events(const std::vector<LoadingDrop>& falls, const std::vector<CheckedEvent>& events,
                         const EventCheckOptions& options);
 

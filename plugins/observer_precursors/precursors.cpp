@@ -46,8 +46,7 @@ const std::vector<std::string> event_columns{"event",
                                              "out_of_contact",
                                              "front_speed_error",
                                              "crossing_speed_error",
-                                             "slip_extent",
-                                             "tip_slip"};
+                                             "slip_extent"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay", "resolution"};
 const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
 const ColumnTypes event_types{{"event", "nucleation_block", "ruptured_blocks", "out_of_contact"},
@@ -74,8 +73,7 @@ const ColumnTypes event_types{{"event", "nucleation_block", "ruptured_blocks", "
                                {"out_of_contact", "1"},
                                {"front_speed_error", "m/s"},
                                {"crossing_speed_error", "m/s"},
-                               {"slip_extent", "m"},
-                               {"tip_slip", "m"}}};
+                               {"slip_extent", "m"}}};
 const ColumnTypes front_types{{"event", "block"},
                               {},
                               {{"event", "1"},
@@ -380,8 +378,7 @@ void Precursors::report_ended(const RunView& view) {
     bool any = false;
     while (auto e = detector_->next_reported()) {
         write(*e);
-        checked_.push_back(
-            {e->index, e->global, e->finished, e->t_start, e->force_ratio(), e->extent, e->slip_extent, e->tip_slip});
+        checked_.push_back({e->index, e->global, e->finished, e->t_start, e->force_ratio(), e->extent, e->slip_extent});
         any = true;
     }
     if (any) write_summary(view, false);
@@ -436,13 +433,12 @@ void Precursors::write(const RuptureEvent& e) {
                  double(e.out_of_contact),
                  e.front_speed_error,
                  e.crossing_speed_error,
-                 e.slip_extent,
-                 e.tip_slip});
+                 e.slip_extent});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
+        if (!e.in_extent(i) && static_cast<int>(i) != e.nucleation) continue;
         const double t = e.first_rupture[i];
-        if (std::isnan(t)) continue;
         const double xi = x(static_cast<Index>(i));
         fronts_->row(
             {double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start, t - e.sampled_before[i]});
@@ -455,7 +451,6 @@ EventCheck Precursors::check() const {
     o.match_tolerance = params_.match_tolerance;
     o.kinetic_coefficient = kinetic_coefficient_;
     o.spacing = detector_->interface().spacing;
-    o.min_slip = detector_->options().min_slip;
     return check_events(drops_.falls(), checked_, o);
 }
 

@@ -199,12 +199,17 @@ void RuptureEventDetector::close() {
 void RuptureEventDetector::finish(Open& o, bool finished) {
     RuptureEvent e = std::move(o.event);
     e.finished = finished;
-    if (e.max_slip < options_.min_slip) {
+    const Eigen::ArrayXd slip = sampled_slip_ - o.base_slip;
+    e.block_slip.assign(slip.begin(), slip.end());
+    e.min_slip = options_.min_slip;
+    bool significant = false;
+    for (std::size_t k = 0; k < e.block_slip.size(); ++k) significant = significant || e.in_extent(k);
+    if (!significant) {
         summary_.too_small += 1;
         return;
     }
     measure(e);
-    measure_slip(e, o.id, o.fast_slip, sampled_slip_ - o.base_slip);
+    measure_slip(e, o.id, o.fast_slip);
     // Ended events that were this one's nucleation join it: its start becomes theirs.
     bool merged = false;
     for (std::size_t k = 0; k < ended_.size();) {
@@ -217,6 +222,7 @@ void RuptureEventDetector::finish(Open& o, bool finished) {
             if (!std::isnan(n.first_rupture[i]) && !(n.first_rupture[i] >= e.first_rupture[i]))
                 e.first_rupture[i] = n.first_rupture[i], e.sampled_before[i] = n.sampled_before[i];
             e.in_contact[i] |= n.in_contact[i];
+            e.block_slip[i] = std::max(e.block_slip[i], n.block_slip[i]);
         }
         e.t_start = n.t_start, e.driving_force = n.driving_force, e.normal_load = n.normal_load;
         e.nucleation = n.nucleation;
@@ -284,12 +290,11 @@ double RuptureEventDetector::span(const Flagged& flagged) const {
            std::max(0.0, first - 0.5 * interface_.spacing);
 }
 
-void RuptureEventDetector::measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip,
-                                        const Eigen::ArrayXd& slip) const {
+void RuptureEventDetector::measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip) const {
     const Eigen::ArrayXd& x = interface_.x;
     Index tip = 0;
     for (Index i = 0; i < x.size(); ++i)
-        if (!std::isnan(e.first_rupture[static_cast<std::size_t>(i)])) tip = i;
+        if (e.in_extent(static_cast<std::size_t>(i))) tip = i;
     // Without the law's scale, half the event's largest fast slip stands for "more than elastic".
     const double slipped =
         std::isnan(options_.characteristic_slip) ? 0.5 * fast_slip.maxCoeff() : options_.characteristic_slip;
@@ -301,7 +306,6 @@ void RuptureEventDetector::measure_slip(RuptureEvent& e, int id, const Eigen::Ar
     Index last = tip;
     while (last + 1 < x.size() && fast_slip(last + 1) > slipped && !others(last + 1)) ++last;
     e.slip_extent = std::min(interface_.length, x(last) + 0.5 * interface_.spacing);
-    e.tip_slip = std::max(slip(tip), tip > 0 ? slip(tip - 1) : 0.0);
 }
 
 void RuptureEventDetector::measure(RuptureEvent& e) const {
@@ -313,9 +317,8 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.ruptured_blocks = 0;
     double farthest = 0, delay = nan;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
-        const double t = e.first_rupture[i];
-        if (std::isnan(t)) continue;
-        const double xi = x(static_cast<Index>(i));
+        if (!e.in_extent(i)) continue;
+        const double t = e.first_rupture[i], xi = x(static_cast<Index>(i));
         e.ruptured_blocks += 1;
         e.min_x = std::min(e.min_x, xi);
         e.max_x = std::max(e.max_x, xi);
@@ -323,10 +326,10 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
         if (distance > farthest || (distance == farthest && distance > 0 && t - e.t_start < delay))
             farthest = distance, delay = t - e.t_start;
     }
-    const auto ruptured = [&](std::size_t i) { return !std::isnan(e.first_rupture[i]); };
+    const auto in_extent = [&](std::size_t i) { return e.in_extent(i); };
     const auto in_contact = [&](std::size_t i) { return e.in_contact[i] != 0; };
     e.out_of_contact = static_cast<int>(std::count(e.in_contact.begin(), e.in_contact.end(), 0));
-    e.global = e.ruptured_blocks > 0 && span(ruptured) >= options_.global_span * span(in_contact) * (1 - 1e-12);
+    e.global = e.ruptured_blocks > 0 && span(in_extent) >= options_.global_span * span(in_contact) * (1 - 1e-12);
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
     // A first rupture within (sampled_before, first_rupture], uniformly: its variance.
@@ -338,7 +341,7 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.front_speed_error = nan;
     if (!std::isnan(e.front_speed))
         for (std::size_t i = 0; i < e.first_rupture.size(); ++i)
-            if (std::abs(x(static_cast<Index>(i)) - x_nucleation) == farthest &&
+            if (e.in_extent(i) && std::abs(x(static_cast<Index>(i)) - x_nucleation) == farthest &&
                 e.first_rupture[i] - e.t_start == delay)
                 e.front_speed_error =
                     e.front_speed * std::sqrt(variance(i) + variance(static_cast<std::size_t>(e.nucleation))) / delay;
@@ -348,7 +351,7 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     const auto far_half = [&](auto visit) {
         for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
             const double d = std::abs(x(static_cast<Index>(i)) - x_nucleation), t = e.first_rupture[i];
-            if (!std::isnan(t) && d >= 0.5 * farthest) visit(i, d, t);
+            if (e.in_extent(i) && d >= 0.5 * farthest) visit(i, d, t);
         }
     };
     double n = 0, d_mean = 0, t_mean = 0, quantisation = 0;

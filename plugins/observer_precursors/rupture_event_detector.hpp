@@ -30,12 +30,15 @@ struct RuptureEvent {
     /// Per block: 1 if it was in contact at some observation of the event (B.19b).
     std::vector<char> in_contact;
     double max_slip = 0;  // m, the largest slip of any of its blocks since the event started
+    /// Per block: its slip since the event started, at the event's end, m (filled when it ends).
+    std::vector<double> block_slip;
 
-    // Measures, filled when the event is closed (RuptureEventDetector::measure).
+    // Measures, filled when the event is closed (RuptureEventDetector::measure), over the blocks that
+    // ruptured in it and slipped min_slip by its end (in_extent).
     int ruptured_blocks = 0;
-    bool global = false;            // the ruptured blocks span at least global_span of L (B.19a)
+    bool global = false;            // its extent's blocks span at least global_span of L (B.19a)
     double nucleation_x = 0;        // m, from the trailing edge
-    double min_x = 0, max_x = 0;    // m, nearest and farthest ruptured block from the trailing edge
+    double min_x = 0, max_x = 0;    // m, nearest and farthest block of its extent from the trailing edge
     double extent = 0;              // l = min(L, max_x + l_s/2), m
     double extent_over_length = 0;  // l/L
     double front_speed = 0;         // m/s, see RuptureEventDetector; NaN if unresolved
@@ -44,17 +47,25 @@ struct RuptureEvent {
     int out_of_contact = 0;  // blocks out of contact at every observation of the event (B.19b)
     /// What the slip field says of the extent. A block's fast slip is its slip while the event ruptures
     /// (up to its last rupturing observation) and the block slips faster than the quiet speed. slip_extent: as `extent`
-    /// measures it (farthest block + l_s/2, m), the ruptured blocks and those beyond the farthest, one after another,
-    /// whose fast slip is more than the law's characteristic slip (more than their contact takes elastically), up to a
-    /// block that ruptured in another event meanwhile; tip_slip: the larger slip, since the event started, of the
-    /// farthest ruptured block and the one before it, m.
-    double slip_extent = 0, tip_slip = 0;
+    /// measures it (farthest block + l_s/2, m), the blocks of the extent and those beyond the farthest, one after
+    /// another, whose fast slip is more than the law's characteristic slip (more than their contact takes
+    /// elastically), up to a block that ruptured in another event meanwhile.
+    double slip_extent = 0;
+    double min_slip = 0;  // m, the detector's when the event ended (in_extent)
 
     template <class Archive>
     void serialize(Archive& ar) {
         ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, sampled_before,
-           in_contact, max_slip, ruptured_blocks, global, nucleation_x, min_x, max_x, extent, extent_over_length,
-           front_speed, crossing_speed, front_speed_error, crossing_speed_error, out_of_contact, slip_extent, tip_slip);
+           in_contact, max_slip, block_slip, ruptured_blocks, global, nucleation_x, min_x, max_x, extent,
+           extent_over_length, front_speed, crossing_speed, front_speed_error, crossing_speed_error, out_of_contact,
+           slip_extent, min_slip);
+    }
+
+    /// Whether block k is part of the event's extent: its contact broke in the event and it slipped
+    /// min_slip by the event's end. An arrested front breaks contacts ahead of the slip that the
+    /// blocks there take elastically (theory.md §5a); those are not where the interface slipped.
+    bool in_extent(std::size_t k) const {
+        return !std::isnan(first_rupture[k]) && (k >= block_slip.size() || block_slip[k] >= min_slip);
     }
 
     double duration() const { return t_end - t_start; }
@@ -74,7 +85,7 @@ struct InterfaceObservation {
 /// How RuptureEventDetector joins and judges rupturing blocks (theory.md §5a).
 struct RuptureEventOptions {
     double quiet_time = 2e-4;  // s: how long apart two rupturing neighbours still belong to one event
-    double global_span = 1.0;  // fraction of L the ruptured blocks must span to be global
+    double global_span = 1.0;  // fraction of L an event's extent must span to be global
     double min_slip = 0;       // m: an event none of whose blocks slipped this much is not reported
     double characteristic_slip = std::numeric_limits<double>::quiet_NaN();  // m, the law's: more is slip
     double nucleation_load = 0;  // of F_N: how far F_S may rise from a rupture's nucleation to the rupture
@@ -91,7 +102,7 @@ struct RuptureSummary {
     double global_time = std::nan("");           // its start, s
     double peak_driving_force = std::nan("");    // largest F_S observed, N
     double peak_time = std::nan("");             // when, s
-    int too_small = 0;                           // events left out: no block slipped min_slip
+    int too_small = 0;                           // events left out: no ruptured block slipped min_slip
 
     template <class Archive>
     void serialize(Archive& ar) {
@@ -112,9 +123,10 @@ struct RuptureSummary {
 /// overlap in time; they are reported in order of start once every event started earlier has ended.
 ///
 /// - Contact (B.19b): a block out of contact (lifted off, without junctions) never ruptures.
-/// - Significance: an event none of whose blocks slipped `min_slip` since it started (measured when
-///   it ends) is vibration or a junction's flicker, not a rupture: it is counted (too_small), not
-///   reported.
+/// - Significance and extent: a block is part of an event's extent once its contact broke in it and
+///   it slipped `min_slip` since the event started (measured when the event ends). An event without
+///   such a block is vibration or a junction's flicker, not a rupture: it is counted (too_small), not
+///   reported. The event starts with its first block's rupture, whether or not that block slipped.
 /// - Nucleation: a rupture often starts with its nucleation block alone, which slips and re-pins, and
 ///   a few ms later the rupture runs from there (theory.md §5a). An event that is not global is the
 ///   nucleation of a larger one (more ruptured blocks) that nucleates within one block of where it
@@ -123,7 +135,7 @@ struct RuptureSummary {
 ///   not time, so that the window means the same at every drive, and bounds how far the merge moves
 ///   the start's F_S/F_N. An ended event is therefore held until F_S has risen that far (or the
 ///   history ends); 0 holds nothing.
-/// - Global (B.19a): the ruptured blocks span, from the trailing edge of the first to the leading
+/// - Global (B.19a): the blocks of its extent span, from the trailing edge of the first to the leading
 ///   edge of the last (each block covering l_s), at least `global_span` of the span of the blocks
 ///   in contact during the event (L while every block is).
 /// - When a block ruptures: when its contact broke (the front's arrival, the experiments' drop of
@@ -132,10 +144,10 @@ struct RuptureSummary {
 ///   interpolated between observations.
 /// - Nucleation block: the block that ruptured first (ties: the one that slipped most since the
 ///   observation before, then the one nearest the trailing edge).
-/// - Extent: l = min(L, x_max + l_s/2), x_max the farthest block from the trailing edge ruptured
-///   during the event. Block 1 need not rupture (B.19: for θ > 0 precursors nucleate at blocks 2-3).
+/// - Extent: l = min(L, x_max + l_s/2), x_max the farthest block of the event's extent from the
+///   trailing edge. Block 1 need not rupture (B.19: for θ > 0 precursors nucleate at blocks 2-3).
 /// - Slip of a block: its displacement now minus at the observation before the event started.
-/// - Front speed: the distance from the nucleation block to the farthest block ruptured in the event,
+/// - Front speed: the distance from the nucleation block to the farthest block of the extent,
 ///   divided by the delay between the event's start and that block's first rupture (of several at
 ///   the same distance, the earliest). A mean speed; NaN when only the nucleation block ruptured or
 ///   the front crossed within one observation.
@@ -228,9 +240,8 @@ private:
     /// The span, each block covering l_s clipped to [0, L], from the first to the last block flagged.
     template <class Flagged>
     double span(const Flagged& flagged) const;
-    /// What the event's fast slip and its slip since it started say of its extent
-    /// (RuptureEvent::slip_extent, tip_slip).
-    void measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip, const Eigen::ArrayXd& slip) const;
+    /// What the event's fast slip says of its extent (RuptureEvent::slip_extent).
+    void measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip) const;
     void measure(RuptureEvent& e) const;
     void count(const RuptureEvent& e);
     /// Whether `held` (ended) is the nucleation of `later` (ended or open), by the rule above.

@@ -265,8 +265,34 @@ TEST(RuptureEventDetector, TheSlipFieldSaysHowFarTheInterfaceSlipped) {
     ASSERT_TRUE(e);
     EXPECT_EQ(e->extent, x(9) + ls / 2);
     EXPECT_NEAR(e->slip_extent, x(11) + ls / 2, 1e-15) << "past the tip, more than the characteristic 1 um";
-    EXPECT_NEAR(e->tip_slip, 4e-6, 1e-12);
     EXPECT_NEAR(e->max_slip, 4e-6, 1e-12);
+}
+
+// An arrested front breaks contacts ahead of its slip: blocks 10-12 rupture but slip 0.05 um, less
+// than min_slip (0.1 um), as an elastic tail does. The event's extent, span, ruptured blocks and front
+// stop at block 9, the last that slipped; had the tail reached the leading edge, the event would
+// still not be global.
+TEST(RuptureEventDetector, ABlockJoinsTheExtentOnceItSlippedMinSlip) {
+    auto d = detector();
+    const auto events = History(front(0, 9, 1e-3) + front(10, 12, 1e-3 + 10 * dt, 1e-4, 0.05e-6)).run(d, 0, 3e-3);
+    ASSERT_EQ(events.size(), 1u);
+    const RuptureEvent& e = events[0];
+    EXPECT_EQ(e.ruptured_blocks, 10);
+    EXPECT_DOUBLE_EQ(e.extent, x(9) + ls / 2);
+    EXPECT_DOUBLE_EQ(e.max_x, x(9));
+    EXPECT_NEAR(e.front_speed, x(9) / (9 * dt), 1e-6 * x(9) / (9 * dt)) << "to block 9, not to block 12";
+    EXPECT_FALSE(std::isnan(e.first_rupture[12])) << "block 12's contact broke in it all the same";
+
+    auto g = detector();
+    const auto tail = History(front(0, 30, 1e-3) + front(31, 40, 1e-3 + 31 * dt, 1e-4, 0.05e-6)).run(g, 0, 3e-3);
+    ASSERT_EQ(tail.size(), 1u);
+    EXPECT_FALSE(tail[0].global) << "31 blocks slipped: 0.07875 m of 0.1 m";
+    EXPECT_DOUBLE_EQ(tail[0].extent, x(30) + ls / 2);
+
+    // Where no ruptured block slipped min_slip there is no event.
+    auto none = detector();
+    EXPECT_TRUE(History(front(10, 12, 1e-3, 1e-4, 0.05e-6)).run(none, 0, 3e-3).empty());
+    EXPECT_EQ(none.summary().too_small, 1);
 }
 
 TEST(RuptureEventDetector, FinerObservationsRefineFrontTimesAndStartNothing) {
