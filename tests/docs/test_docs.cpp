@@ -109,6 +109,7 @@ std::string as_checked(std::string args) {
     if (args.rfind("run ", 0) == 0) return "check " + args.substr(4);
     if (args.rfind("study ", 0) == 0) return "study --check " + args.substr(6);
     if (args.rfind("sweep ", 0) == 0) return "sweep --check " + args.substr(6);
+    if (args.rfind("reproduce ", 0) == 0) return args + " --check --configs " + (source / "configs").string();
     return args;
 }
 

@@ -1,6 +1,7 @@
 """frictionlab.ensembles against values worked out by hand, and python3 -m frictionlab.li2020_claims
 and -m frictionlab.lattice_convergence on campaign tables built by hand."""
 import os
+import re
 import subprocess
 import sys
 
@@ -120,6 +121,13 @@ def analysis(module, *arguments, cwd):
                           text=True)
 
 
+def in_a_tree(folder):
+    """Makes `folder` a source tree, as the documents a script writes its blocks into live in one."""
+    for sub in ("core", "plugins"):
+        (folder / sub).mkdir(exist_ok=True)
+    write(folder / "CMakeLists.txt", "project(x)\n")
+
+
 STATISTICS = ("precursor_count,first_precursor_time_since_loading,first_precursor_force_ratio,precursor_1_length,"
               "precursor_2_length,precursor_3_length,global_slip_force_ratio,global_slip_time_since_loading,"
               "stick_slip_period,mean_drop")
@@ -157,6 +165,7 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
     write(tmp_path / "fig7/events.csv", f"{keys},event,t_start,force_ratio,extent_over_length,kind\n"
           + "\n".join(events) + "\n")
     write(tmp_path / "fig7/run_statistics.csv", f"{keys},{STATISTICS}\n" + "\n".join(runs) + "\n")
+    in_a_tree(tmp_path)
     write(tmp_path / "doc.md", "before\n<!-- li2020-claims -->\nold\n<!-- /li2020-claims -->\nafter\n")
     out = analysis("li2020_claims", "fig7", "fig8", "--write", "doc.md", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
@@ -168,7 +177,8 @@ def test_the_claims_script_reads_the_campaigns_tables(tmp_path):
     assert "matched F_S/F_N is 0.050;" in text and "seeds it is 0.000 to 0.000" in text
     assert "F_S/F_N -0.050 [-0.050, -0.050]" in text and "+1.0 [+1.0, +1.0]" in text
     assert "longest one's l/L +0.20" in text  # 0.3 + 0.2 against 0.3
-    assert (tmp_path / "doc.md").read_text() == f"before\n<!-- li2020-claims -->\n{text}<!-- /li2020-claims -->\nafter\n"
+    assert re.fullmatch(f"before\n<!-- li2020-claims fingerprint=[0-9a-f]{{12}} commit=unknown -->\n{re.escape(text)}"
+                        "<!-- /li2020-claims -->\nafter\n", (tmp_path / "doc.md").read_text())
     # Four seeds a point are too few for an interval: the claims say so instead of giving one.
     write(tmp_path / "fig8/run_statistics.csv", f"case,loaders[1].theta,seed,run,{STATISTICS}\n"
           + "\n".join(r for r in rows if "_seed-5," not in r) + "\n")
@@ -198,6 +208,7 @@ def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tm
     names = [r.split(",")[2] for r in runs]
     write(tmp_path / "conv/sweep.csv", "case,seed,run,status\n" + "".join(
         f"x,0,{n},{'not run' if n.endswith('seed-6') else 'done'}\n" for n in names))
+    in_a_tree(tmp_path)
     write(tmp_path / "doc.md", "<!-- lattice-convergence -->\nold\n<!-- /lattice-convergence -->\n")
     out = analysis("lattice_convergence", "conv", "--figure", "f.png", "--write", "doc.md", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
@@ -208,7 +219,8 @@ def test_the_lattice_convergence_script_compares_each_lattice_with_the_finest(tm
     assert "| 0.380 [0.379, 0.381] |" in lines["first global slip, F_S/F_N"]
     assert lines["first precursor, F_S/F_N"].endswith("| +0.000 [+0.000, +0.000] |")  # not resolved: no bold
     assert (tmp_path / "f.png").stat().st_size > 0
-    assert (tmp_path / "doc.md").read_text() == f"<!-- lattice-convergence -->\n{out.stdout}<!-- /lattice-convergence -->\n"
+    assert re.fullmatch(f"<!-- lattice-convergence fingerprint=[0-9a-f]{{12}} commit=unknown seeds=0 -->\n"
+                        f"{re.escape(out.stdout)}<!-- /lattice-convergence -->\n", (tmp_path / "doc.md").read_text())
     # Grouped by case (a sweep over something else on one lattice), each compared with the last case.
     by_case = analysis("lattice_convergence", "conv", "--by", "case", cwd=tmp_path)
     assert by_case.returncode == 0, by_case.stderr

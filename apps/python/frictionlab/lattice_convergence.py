@@ -195,9 +195,10 @@ def main(argv=None):
         title = (f"The same slider at {groups} lattice resolutions" if args.by == "lattice"
                  else f"{groups} cases of one sweep")
         figure(runs, profiles, args.figure, title)
+    hashes, seeds = doc_blocks.runs_of(args.directory)
     for doc in args.write:
         try:
-            doc_blocks.replace_block(doc, args.block, text)
+            doc_blocks.replace_block(doc, args.block, text, hashes, seeds)
         except ValueError as e:
             sys.exit(str(e))
 
