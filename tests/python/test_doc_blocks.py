@@ -2,6 +2,7 @@
 README and share/docs was made from the code and scenes of this tree; and the stamp and the
 fingerprint behave as documented on a tree made here."""
 import glob
+import hashlib
 import os
 
 import pytest
@@ -39,9 +40,10 @@ def test_a_block_is_stamped_with_what_made_it_and_a_line_stays_a_line(tree):
     doc_blocks.replace_block(readme, "li2020-claims", "- new\n", ["a1", "b2", "a1"], doc_blocks.seed_range(range(1, 11)))
     text = open(readme).read()
     fingerprint = doc_blocks.fingerprint(str(tree), "crossing-speeds")
-    assert (f"Speeds: <!-- crossing-speeds fingerprint={fingerprint} commit=unknown scenes=5c76dfd99d10f6aa "
+    assert (f"Speeds: <!-- crossing-speeds fingerprint={fingerprint} commit=unknown scene=5c76dfd99d10f6aa "
             f"seeds=1 -->578 ± 32 m/s<!-- /crossing-speeds -->.") in text
-    assert "scenes=a1,b2 seeds=1-10 -->\n- new\n<!-- /li2020-claims -->" in text
+    digest = hashlib.sha256(b"a1,b2").hexdigest()[:12]
+    assert f"scenes=2:{digest} seeds=1-10 -->\n- new\n<!-- /li2020-claims -->" in text
     assert doc_blocks.stale(str(tree), [readme]) == []
     # Regenerated again, the block is replaced, not nested.
     doc_blocks.replace_block(readme, "li2020-claims", "- newer\n")

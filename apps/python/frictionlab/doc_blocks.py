@@ -134,8 +134,9 @@ def runs_of(*directories: str):
 def stamp(root: str, name: str, scene_hashes: Iterable[str] = (), seeds: str = "") -> str:
     parts = [f"fingerprint={fingerprint(root, name)}", f"commit={commit(root, name)}"]
     hashes = sorted({h for h in scene_hashes if h})
-    if hashes:
-        parts.append("scenes=" + ",".join(hashes))
+    if hashes:  # one run's scene hash, or a digest of many (each seed's scene has its own)
+        parts.append(f"scene={hashes[0]}" if len(hashes) == 1 else
+                     f"scenes={len(hashes)}:{hashlib.sha256(','.join(hashes).encode()).hexdigest()[:12]}")
     if seeds:
         parts.append(f"seeds={seeds}")
     return " ".join(parts)

@@ -138,10 +138,13 @@ def fig6(o: Outcome, figures: str) -> Tuple[List[Statement], List[str], str]:
     stats = pd.read_csv(os.path.join(o.directory, "run_statistics.csv"))
     rates = [loading_rate(r) for r in runs]
     rate = ensembles.mean(rates)
+    within = abs(rate.estimate - 1) <= LINEAR_LOADING_MARGIN
     rows = [Statement("Fig. 6", "Before any slip, F_S grows linearly at K_S V", f"F_S's rate / (K_S V) "
                       f"{fmt(rate, 4)} over {len(rates)} seeds",
-                      "reproduced within a stated margin" if abs(rate.estimate - 1) <= LINEAR_LOADING_MARGIN
-                      else "differs", f"{100 * LINEAR_LOADING_MARGIN:g} %")]
+                      "reproduced within a stated margin" if within else "differs",
+                      f"{100 * LINEAR_LOADING_MARGIN:g} %" if within else
+                      f"{100 * (rate.estimate - 1):+.0f} %, beyond the {100 * LINEAR_LOADING_MARGIN:g} % allowed: the "
+                      "slider's own compliance at the driving point is in series with the spring")]
     count = ensembles.mean(stats["precursor_count"])
     rows.append(Statement("Fig. 6", "Several precursors (partial slips) come before the first global slip",
                           f"{fmt(count, 2)} precursors a run; fewest {stats['precursor_count'].min():g}",

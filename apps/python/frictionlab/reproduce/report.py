@@ -79,7 +79,7 @@ def write_block(root: str, document: str, name: str, statements: List[Statement]
                 outcomes: Dict[str, Outcome]) -> str:
     """The statements' table as the generated block `name` of `document` (below `root`), stamped
     with the runs' scene hashes and seeds; returns the document's path."""
-    runs = [o.runs for o in outcomes.values() if o.runs is not None]
+    runs = [o.runs[["scene_hash", "seed"]] for o in outcomes.values() if o.runs is not None]
     table = pd.concat(runs) if runs else pd.DataFrame(columns=["scene_hash", "seed"])
     path = os.path.join(root, document)
     doc_blocks.replace_block(path, name, statements_table(statements), table["scene_hash"].dropna().astype(str),
