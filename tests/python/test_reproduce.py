@@ -85,3 +85,13 @@ def test_a_failed_run_is_named_in_the_report(tmp_path):
         {"step": "fig6", "run": "base_seed-2", "status": "failed"}]
     with pytest.raises(ValueError, match="verdict 'maybe'"):
         report.Statement("Fig. 6", "a claim", "a value", "maybe")
+
+
+def test_figures_whose_runs_all_failed_are_said_not_measured(tmp_path):
+    from frictionlab.reproduce import li2020
+    from frictionlab.reproduce.steps import Outcome
+    outcomes = {s.name: Outcome(s, str(tmp_path / "runs" / s.name), None, 1) for s in li2020.steps(quick=True)}
+    statements, figures, _ = li2020.measure(outcomes, str(tmp_path))
+    not_measured = {s.figure for s in statements if s.verdict == "not measured"}
+    assert {"Fig. 6", "Figs. 7, 8"} <= not_measured and figures == []
+    assert all(s.verdict in report.VERDICTS for s in statements)

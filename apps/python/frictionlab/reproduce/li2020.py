@@ -187,30 +187,43 @@ def plot(o: Outcome, figures: str, prefix: str) -> List[str]:
     return out
 
 
-def measure(outcomes: Dict[str, Outcome], out: str) -> Tuple[List[Statement], List[str], str]:
-    """Every statement of Figs. 5-9, the figures (paths) and notes, from the steps' runs."""
-    figures = os.path.join(out, "figures")
-    os.makedirs(figures, exist_ok=True)
-    statements, paths, notes = [], [], ""
-    s, p = fig5(outcomes["fig5"], figures)
-    statements += s
-    paths += p
-    s, p, n = fig6(outcomes["fig6"], figures)
-    statements += s
-    paths += p
-    notes += n
+def figs7_8(outcomes: Dict[str, Outcome], figures: str) -> Tuple[List[Statement], List[str], str]:
     fig7, seeds7 = li2020_claims.fig7_claims(outcomes["fig7"].directory)
     fig8, seeds8 = li2020_claims.fig8_claims(outcomes["fig8"].directory)
-    statements += [c.statement for c in fig7 + fig8]
-    paths += plot(outcomes["fig7"], figures, "fig7") + plot(outcomes["fig8"], figures, "fig8")
-    notes += (f"\nFigs. 7 and 8: {seeds7} seeds a configuration, {seeds8} a θ; the effects as "
-              "`python3 -m frictionlab.li2020_claims` states them for the README.\n")
-    runs9 = outcomes["fig9"].run_directories()
-    statements += slip_phases.statements(runs9)
-    if runs9:
-        target = os.path.join(figures, "fig9_phases_and_collapse.png")
-        slip_phases.figure(runs9[0], target)
-        paths.append(target)
+    paths = plot(outcomes["fig7"], figures, "fig7") + plot(outcomes["fig8"], figures, "fig8")
+    return [c.statement for c in fig7 + fig8], paths, (
+        f"\nFigs. 7 and 8: {seeds7} seeds a configuration, {seeds8} a θ; the effects as "
+        "`python3 -m frictionlab.li2020_claims` states them for the README.\n")
+
+
+def fig9(o: Outcome, figures: str) -> Tuple[List[Statement], List[str], str]:
+    runs = o.run_directories()
+    paths = []
+    if runs:
+        paths.append(os.path.join(figures, "fig9_phases_and_collapse.png"))
+        slip_phases.figure(runs[0], paths[0])
+    return slip_phases.statements(runs), paths, ""
+
+
+def measure(outcomes: Dict[str, Outcome], out: str) -> Tuple[List[Statement], List[str], str]:
+    """Every statement of Figs. 5-9, the figures (paths) and notes, from the steps' runs. A figure
+    whose runs cannot be measured (its runs failed) gets a row saying so, and the others go on."""
+    figures = os.path.join(out, "figures")
+    os.makedirs(figures, exist_ok=True)
+    parts = (("Fig. 5", lambda: fig5(outcomes["fig5"], figures) + ("",)),
+             ("Fig. 6", lambda: fig6(outcomes["fig6"], figures)),
+             ("Figs. 7, 8", lambda: figs7_8(outcomes, figures)),
+             ("Fig. 9", lambda: fig9(outcomes["fig9"], figures)))
+    statements, paths, notes = [], [], ""
+    for name, part in parts:
+        try:
+            s, p, n = part()
+        except Exception as error:  # noqa: BLE001 - a report names what it could not measure
+            s, p, n = [Statement(name, "(every statement of the figure)", f"could not be measured: {error!r}",
+                                 "not measured", "see Failed runs")], [], ""
+        statements += s
+        paths += p
+        notes += n
     return statements, [os.path.relpath(p, out) for p in paths], notes
 
 
