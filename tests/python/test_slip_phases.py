@@ -179,8 +179,7 @@ def test_a_real_run_shows_the_four_phases_in_every_block_and_statements_in_form(
     said = slip_phases.statements([quick_run])
     assert len(said) == 10
     for s in said:
-        assert set(s) == {"statement", "measured", "verdict", "margin"}
-        assert s.figure == "Fig. 9" and s.claim and s.measured
+        assert s.figure.startswith("Fig. 9") and s.claim and s.measured
         assert s.verdict in ("reproduced", "reproduced within a stated margin", "differs")
         assert bool(s.margin) == (s.verdict != "reproduced")
     in_order = [s for s in said if "four phases in order" in s.claim]
