@@ -24,6 +24,24 @@ std::vector<CampaignColumn> value_columns(const std::vector<CampaignRun>& runs, 
     return columns;
 }
 
+CampaignKeys split_varied(const std::vector<CampaignColumn>& columns, const std::vector<CampaignRun>& runs) {
+    CampaignKeys out;
+    for (const auto& column : columns) {
+        std::vector<std::string> seen;
+        for (const auto& run : runs) {
+            const auto it = std::find_if(run.values.begin(), run.values.end(),
+                                         [&](const auto& v) { return v.first == column.name; });
+            const std::string value = it == run.values.end() ? std::string() : it->second;
+            if (std::find(seen.begin(), seen.end(), value) == seen.end()) seen.push_back(value);
+        }
+        if (seen.size() > 1)
+            out.varied.push_back(column);
+        else
+            out.constants.emplace_back(column.name, seen.empty() ? std::string() : seen.front());
+    }
+    return out;
+}
+
 std::vector<CampaignColumn> statistic_summary_columns() {
     return {{"statistic", ""},
             {"unit", ""},
@@ -32,12 +50,13 @@ std::vector<CampaignColumn> statistic_summary_columns() {
             {"mean", unit_of_row},
             {"sd", unit_of_row},
             {"ci_low", unit_of_row},
-            {"ci_high", unit_of_row}};
+            {"ci_high", unit_of_row},
+            {"interval", ""}};
 }
 
 void write_campaign_table(const Campaign& campaign, const std::string& kind, const std::filesystem::path& file,
-                          const std::vector<CampaignColumn>& columns, const std::string& rows,
-                          const std::string& note) {
+                          const std::vector<CampaignColumn>& columns, const std::string& rows, const std::string& note,
+                          const CampaignKeys* keys) {
     std::vector<std::string> names;
     std::string header;
     for (const auto& c : columns) {
@@ -57,7 +76,17 @@ void write_campaign_table(const Campaign& campaign, const std::string& kind, con
     y << YAML::Key << "units" << YAML::Value << YAML::BeginMap;
     // Quoted, so that "1" reads back as the text of a unit, not as a number.
     for (const auto& c : columns) y << YAML::Key << c.name << YAML::Value << YAML::DoubleQuoted << c.unit;
-    y << YAML::EndMap << YAML::EndMap;
+    y << YAML::EndMap;
+    if (keys) {
+        std::vector<std::string> varied;
+        for (const auto& c : keys->varied) varied.push_back(c.name);
+        y << YAML::Key << "varied" << YAML::Value << YAML::Flow << varied;
+        y << YAML::Key << "constants" << YAML::Value << YAML::BeginMap;
+        for (const auto& [key, value] : keys->constants)
+            y << YAML::Key << key << YAML::Value << YAML::DoubleQuoted << value;
+        y << YAML::EndMap;
+    }
+    y << YAML::EndMap;
     write_file_atomically(table_sidecar_path(file), std::string(y.c_str()) + "\n");
     write_file_atomically(file, header + "\n" + rows);
 }

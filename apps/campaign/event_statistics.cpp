@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <yaml-cpp/yaml.h>
+
 #include "frictionlab/output/csv_columns.hpp"
 #include "frictionlab/simulation/run_record.hpp"
 
@@ -12,14 +14,14 @@ namespace frictionlab {
 const std::vector<EventStatistic>& event_statistics() {
     static const std::vector<EventStatistic> list{
         {"precursor_count", "1", "precursors before the first global slip (NaN without a global slip)"},
-        {"first_precursor_time", "s", "start of the first precursor, since loading began"},
+        {"first_precursor_time_since_loading", "s", "start of the first precursor, since loading started"},
         {"first_precursor_force_ratio", "1", "F_S/F_N at the start of the first precursor"},
         {"precursor_1_length", "1", "l/L of the first precursor"},
         {"precursor_2_length", "1", "l/L of the second precursor"},
         {"precursor_3_length", "1", "l/L of the third precursor"},
         {"global_slip_force_ratio", "1",
          "F_S/F_N at the start of the first global slip: the global static coefficient"},
-        {"global_slip_time", "s", "start of the first global slip, since loading began"},
+        {"global_slip_time_since_loading", "s", "start of the first global slip, since loading started"},
         {"stick_slip_period", "s", "mean time between the starts of successive global slips"},
         {"mean_drop", "1",
          "mean fall of F_S/F_N through a global slip: its highest less its lowest after that, before the next event"},
@@ -58,6 +60,7 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
                                       double load_start) {
     EventStatistics s;
     if (!std::filesystem::exists(rupture.events)) return s;
+    s.events_agree = recorded_events_agree(rupture.summary);
     CsvColumns events = read_csv_columns(rupture.events);
     const auto& start = events["t_start"];
     const auto& global = events["global"];
@@ -75,7 +78,7 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
                                         [&](auto e) { return start[e] > start[globals.front()]; }),
                          precursors.end());
     if (!precursors.empty()) {
-        s["first_precursor_time"] = start[precursors[0]] - load_start;
+        s["first_precursor_time_since_loading"] = start[precursors[0]] - load_start;
         s["first_precursor_force_ratio"] = ratio[precursors[0]];
     }
     const char* lengths[] = {"precursor_1_length", "precursor_2_length", "precursor_3_length"};
@@ -83,7 +86,7 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
     if (globals.empty()) return s;
     s["precursor_count"] = static_cast<double>(precursors.size());
     s["global_slip_force_ratio"] = ratio[globals[0]];
-    s["global_slip_time"] = start[globals[0]] - load_start;
+    s["global_slip_time_since_loading"] = start[globals[0]] - load_start;
     if (globals.size() >= 2)
         s["stick_slip_period"] = (start[globals.back()] - start[globals.front()]) / double(globals.size() - 1);
     if (!std::filesystem::exists(loading_curve)) return s;
@@ -103,6 +106,19 @@ EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::fi
     }
     if (drops > 0) s["mean_drop"] = sum / drops;
     return s;
+}
+
+std::optional<bool> recorded_events_agree(const std::filesystem::path& summary) {
+    try {
+        if (!std::filesystem::exists(summary)) return std::nullopt;
+        const YAML::Node verdict = YAML::LoadFile(summary.string())["event_check"]["verdict"];
+        if (!verdict || !verdict.IsScalar()) return std::nullopt;
+        if (verdict.Scalar() == "agree") return true;
+        if (verdict.Scalar() == "disagree") return false;
+        return std::nullopt;  // not_checked
+    } catch (const YAML::Exception&) {
+        return std::nullopt;  // a summary that cannot be read says nothing of the check
+    }
 }
 
 double recorded_loading_start(const std::filesystem::path& directory) {

@@ -21,6 +21,7 @@ struct StudyCase {
 
 struct Sweep {
     std::string title, scene;
+    bool leave_out_disagreeing = false;
 };
 
 }  // namespace
@@ -82,6 +83,9 @@ const std::vector<ParamInfo>& sweep_params() {
         ParamSpec<Sweep> s;
         s.add("title", &Sweep::title, "A line describing the sweep, for its tables and figures.");
         s.add("scene", &Sweep::scene, "The base scene, relative to the sweep file's folder.").required();
+        s.add("leave_out_disagreeing", &Sweep::leave_out_disagreeing,
+              "Leave the runs whose rupture events disagree with their own check (theory.md §5a) out of "
+              "sweep_statistics.csv; false counts them in, and its `disagreeing` column says how many there are.");
         return s;
     }();
     return spec.params();

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "campaign_reader.hpp"
 #include "frictionlab/campaign/keys.hpp"
+#include "frictionlab/campaign/run_diagnostics.hpp"
 #include "frictionlab/campaign/set_keys.hpp"
 
 namespace frictionlab {
@@ -148,21 +150,27 @@ std::vector<CampaignRun> observed_runs(const Study& study, std::vector<CampaignR
         diagnostics.error(study.scene_where, "scene", problem);
         return runs;
     }
+    RunDiagnostics found;  // a mistake in the study file once, however many runs it reaches
     for (CampaignRun& run : planned) {
         const CampaignCase& c = study.cases[run.case_index];
-        const auto scene = run_scene(study, c, run.seed, {}, registry, diagnostics);
-        if (!scene) continue;
-        if (const auto problem = stage_names_problem(*scene); !problem.empty()) {
-            diagnostics.error(c.where, c.name, problem);
-            continue;
-        }
-        const auto observers = study_observers(study, *scene, output / run_directory(c, run.seed));
-        auto observed = run_scene(study, c, run.seed, observers, registry, diagnostics);
-        if (!observed) continue;
         run.name = run.seed ? fmt::format("{}.seed_{}", c.name, *run.seed) : c.name;
+        Diagnostics own;
+        const auto observed = [&]() -> std::optional<Scene> {
+            const auto scene = run_scene(study, c, run.seed, {}, registry, own);
+            if (!scene) return std::nullopt;
+            if (const auto problem = stage_names_problem(*scene); !problem.empty()) {
+                own.error(c.where, c.name, problem);
+                return std::nullopt;
+            }
+            const auto observers = study_observers(study, *scene, output / run_directory(c, run.seed));
+            return run_scene(study, c, run.seed, observers, registry, own);
+        }();
+        found.add(c.name, run.name, own);
+        if (!observed) continue;
         run.scene = std::move(*observed);
         runs.push_back(std::move(run));
     }
+    found.report_into(diagnostics);
     if (diagnostics.empty()) add_knobs(study, runs);
     return runs;
 }

@@ -95,7 +95,7 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFil
     out.any_event = first < t_start.size();
     out.global_slip = first_global < t_start.size();
     if (out.any_event && global[first] < 0.5) {
-        out.first_precursor_time = t_start[first] - load_start;
+        out.first_precursor_time_since_loading = t_start[first] - load_start;
         out.first_precursor_force = events["driving_force"][first];
     }
     // Every event in time order up to the second global slip (the precursors and the first slips).
@@ -109,8 +109,8 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFil
         globals += global[e] > 0.5;
     }
     if (std::filesystem::exists(rupture.summary))
-        out.global_static_coefficient =
-            summary_number(YAML::LoadFile(rupture.summary.string()), "global_static_coefficient");
+        out.global_slip_force_ratio =
+            summary_number(YAML::LoadFile(rupture.summary.string()), "global_slip_force_ratio");
 
     const History slip = History::read(dir / "interface_slip.csv");
     if (out.any_event && !slip.time.empty()) {
@@ -154,13 +154,14 @@ CaseErrors compare(const CaseOutcome& reference, const CaseOutcome& outcome) {
     e.settled_friction_force = relative_l2_on_grid(reference.x_over_length, reference.settled_friction,
                                                    outcome.x_over_length, outcome.settled_friction);
     if (std::isnan(e.settled_normal_force)) add_note(e.note, "no settled interface profile");
-    e.first_precursor_time = relative_error(reference.first_precursor_time, outcome.first_precursor_time);
+    e.first_precursor_time_since_loading =
+        relative_error(reference.first_precursor_time_since_loading, outcome.first_precursor_time_since_loading);
     e.first_precursor_force = relative_error(reference.first_precursor_force, outcome.first_precursor_force);
-    if (!std::isnan(reference.first_precursor_time) && std::isnan(outcome.first_precursor_time))
+    if (!std::isnan(reference.first_precursor_time_since_loading) &&
+        std::isnan(outcome.first_precursor_time_since_loading))
         add_note(e.note, outcome.any_event ? "first event is a global slip where the reference has a precursor"
                                            : "no rupture event where the reference has a precursor");
-    e.global_static_coefficient =
-        relative_error(reference.global_static_coefficient, outcome.global_static_coefficient);
+    e.global_slip_force_ratio = relative_error(reference.global_slip_force_ratio, outcome.global_slip_force_ratio);
     if (reference.global_slip && !outcome.global_slip) add_note(e.note, "no global slip where the reference has one");
     const std::size_t matched = std::min(reference.events.size(), outcome.events.size());
     if (matched > 0) e.event_time = e.event_force = e.event_length = 0;

@@ -78,6 +78,7 @@ StudyResult run_study(const Study& study, const std::vector<CampaignRun>& runs, 
         StudyRow row;
         row.name = study.cases.at(run.case_index).name;
         row.label = study.label(run);
+        row.run = scene.output_directory.lexically_relative(output / "cases").generic_string();
         row.scene_hash = scene.hash;
         for (const auto& [key, value] : run.values) row.knobs.push_back(value);
         const std::string& family = study.families.at(run.case_index);

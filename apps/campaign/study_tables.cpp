@@ -24,9 +24,9 @@ struct ErrorColumn {
 const std::vector<ErrorColumn> error_columns{
     {"err_settled_normal_force", "settled normal force", &CaseErrors::settled_normal_force},
     {"err_settled_friction_force", "settled friction force", &CaseErrors::settled_friction_force},
-    {"err_first_precursor_time", "first precursor time", &CaseErrors::first_precursor_time},
+    {"err_first_precursor_time_since_loading", "first precursor time", &CaseErrors::first_precursor_time_since_loading},
     {"err_first_precursor_force", "first precursor F_S", &CaseErrors::first_precursor_force},
-    {"err_global_static_coefficient", "global F_S/F_N", &CaseErrors::global_static_coefficient},
+    {"err_global_slip_force_ratio", "global F_S/F_N", &CaseErrors::global_slip_force_ratio},
     {"err_event_slip", "slip of first event", &CaseErrors::event_slip},
     {"err_event_time", "event times", &CaseErrors::event_time},
     {"err_event_force", "event F_S", &CaseErrors::event_force},
@@ -83,13 +83,14 @@ std::string ensemble_rows(const StudyEnsemble& e) {
     for (std::size_t i = 0; i < list.size(); ++i) {
         const EnsembleSummary s = reference ? summarize(column(e.runs, i)) : e.judgement.statistics[i].summary;
         const StatisticJudgement j = reference ? StatisticJudgement{} : e.judgement.statistics[i];
-        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},", e.name, csv_cell(e.family), e.ensemble, list[i].name,
-                            list[i].unit, s.n, s.missing, number(s.mean), number(s.sd), number(s.ci_low),
-                            number(s.ci_high));
-        text += fmt::format("{},{},{},{},{},{},{},{},{:.4g}\n", number(j.difference.value), number(j.difference.ci_low),
-                            number(j.difference.ci_high), number(j.difference.standard_error), number(j.halving_spread),
-                            number(j.tolerance), number(j.p), reference ? "reference" : to_string(j.verdict),
-                            e.cpu_seconds);
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},", e.name, csv_cell(e.family), e.ensemble,
+                            list[i].name, list[i].unit, s.n, s.missing, number(s.mean), number(s.sd), number(s.ci_low),
+                            number(s.ci_high), csv_cell(s.interval));
+        text +=
+            fmt::format("{},{},{},{},{},{},{},{},{},{:.4g}\n", number(j.difference.value), number(j.difference.ci_low),
+                        number(j.difference.ci_high), csv_cell(reference ? std::string() : j.difference.interval),
+                        number(j.difference.standard_error), number(j.halving_spread), number(j.tolerance), number(j.p),
+                        reference ? "reference" : to_string(j.verdict), e.cpu_seconds);
     }
     return text;
 }
@@ -120,10 +121,13 @@ std::string ensembles_section(const StudyResult& result, const Study& study) {
                 continue;
             }
             const StatisticJudgement& j = e.judgement.statistics[i];
+            const std::string interval =
+                j.difference.interval.empty()
+                    ? fmt::format("[{}, {}]", number(j.difference.ci_low), number(j.difference.ci_high))
+                    : "(" + j.difference.interval + ")";
             text += j.verdict == Verdict::not_judged
                         ? " – |"
-                        : fmt::format(" {} [{}, {}] {} |", number(j.difference.value), number(j.difference.ci_low),
-                                      number(j.difference.ci_high), to_string(j.verdict));
+                        : fmt::format(" {} {} {} |", number(j.difference.value), interval, to_string(j.verdict));
         }
         text += "\n";
     }
@@ -139,6 +143,7 @@ void write_ensemble_csv(const StudyResult& result, const Study& study, const std
     columns.insert(columns.end(), {{"difference", as_row},
                                    {"difference_ci_low", as_row},
                                    {"difference_ci_high", as_row},
+                                   {"difference_interval", ""},
                                    {"standard_error", as_row},
                                    {"halving_spread", as_row},
                                    {"tolerance", as_row},
@@ -154,7 +159,7 @@ void write_ensemble_csv(const StudyResult& result, const Study& study, const std
 
 void write_study_csv(const StudyResult& result, const Study& study, const std::vector<CampaignRun>& runs,
                      const Registry& registry, const std::filesystem::path& file) {
-    std::vector<CampaignColumn> columns{{"case", ""}, {"family", ""}, {"scene_hash", ""}};
+    std::vector<CampaignColumn> columns{{"case", ""}, {"run", ""}, {"family", ""}, {"scene_hash", ""}};
     const auto knobs = value_columns(runs, registry);
     for (const auto& k : result.knob_columns) {
         const auto it = std::find_if(knobs.begin(), knobs.end(), [&](const auto& c) { return c.name == k; });
@@ -165,7 +170,7 @@ void write_study_csv(const StudyResult& result, const Study& study, const std::v
     columns.push_back({"note", ""});
     std::string rows;
     for (const auto& row : result.rows) {
-        rows += fmt::format("{},{},{}", row.name, csv_cell(row.family), row.scene_hash);
+        rows += fmt::format("{},{},{},{}", row.name, csv_cell(row.run), csv_cell(row.family), row.scene_hash);
         for (const auto& v : row.knobs) rows += fmt::format(",{}", csv_cell(v));
         rows += fmt::format(",{:.4g},{:.4g},{},{}", row.summary.wall_seconds, row.summary.cpu_seconds,
                             row.summary.steps, row.summary.evaluations);
@@ -187,8 +192,9 @@ void write_study_markdown(const StudyResult& result, const Study& study, const s
         "Study `{}` on `{}`. Reference{}: first precursor {} s after loading began at F_S = {} N; "
         "global F_S/F_N = {}. Errors are relative (profiles: relative L2 on x/L).\n\n",
         study.file.filename().string(), study.scene.filename().string(),
-        study.seeds.empty() ? "" : fmt::format(" (seed {})", study.seeds.front()), number(ref.first_precursor_time),
-        number(ref.first_precursor_force), number(ref.global_static_coefficient));
+        study.seeds.empty() ? "" : fmt::format(" (seed {})", study.seeds.front()),
+        number(ref.first_precursor_time_since_loading), number(ref.first_precursor_force),
+        number(ref.global_slip_force_ratio));
     text += "| case | family |";
     for (const auto& k : result.knob_columns) text += " " + k + " |";
     text += " wall (s) | CPU (s) | steps | evaluations |";

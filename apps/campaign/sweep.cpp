@@ -8,6 +8,7 @@
 
 #include "campaign_reader.hpp"
 #include "frictionlab/campaign/keys.hpp"
+#include "frictionlab/campaign/run_diagnostics.hpp"
 #include "frictionlab/campaign/set_keys.hpp"
 
 namespace frictionlab {
@@ -89,6 +90,7 @@ public:
             detail::report_missing(root, "grid", "a mapping of key paths to lists of values (or `cases:` or `seeds:`)",
                                    "", reporter_);
         sweep.cases = grid_cases(listed, grid);
+        sweep.leave_out_disagreeing = value_or(top, "leave_out_disagreeing", sweep.leave_out_disagreeing);
     }
 
 private:
@@ -137,6 +139,8 @@ private:
 
 }  // namespace
 
+std::string sweep_case_name(const CampaignCase& c) { return c.name.empty() ? "base" : c.name; }
+
 Sweep read_sweep(const std::filesystem::path& file, Diagnostics& diagnostics) {
     return detail::read_campaign_file<Sweep, SweepReader>(file, "sweep", "scene and grid, cases or seeds", diagnostics);
 }
@@ -146,6 +150,7 @@ std::vector<CampaignRun> sweep_runs(const Sweep& sweep, const std::filesystem::p
     std::vector<CampaignRun> runs;
     if (!base_scene(sweep, registry, diagnostics)) return runs;
     std::set<std::string> names;
+    RunDiagnostics found;  // a mistake in the sweep file once, however many runs it reaches
     for (CampaignRun run : sweep.runs()) {
         const CampaignCase& c = sweep.cases[run.case_index];
         run.name = c.name;
@@ -161,11 +166,14 @@ std::vector<CampaignRun> sweep_runs(const Sweep& sweep, const std::filesystem::p
         }
         const SceneOverride output_override{"output=" + detail::yaml_text((output / "cases" / run.name).string()),
                                             sweep.scene_where};
-        auto scene = run_scene(sweep, c, run.seed, {output_override}, registry, diagnostics);
+        Diagnostics own;
+        auto scene = run_scene(sweep, c, run.seed, {output_override}, registry, own);
+        found.add(sweep_case_name(c), run.name, own);
         if (!scene) continue;
         run.scene = std::move(*scene);
         runs.push_back(std::move(run));
     }
+    found.report_into(diagnostics);
     // A listed case's values are the keys its overrides set (a grid's cases have theirs, as the sweep
     // file writes them), each run's from its scene: the tables have a column for every key varied.
     Sweep listed = sweep;

@@ -7,7 +7,6 @@
 #include <optional>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "frictionlab/campaign/accuracy_standard.hpp"
 #include "frictionlab/campaign/campaign_table.hpp"
@@ -15,7 +14,6 @@
 #include "frictionlab/campaign/csv_cell.hpp"
 #include "frictionlab/campaign/ensemble_statistics.hpp"
 #include "frictionlab/campaign/event_statistics.hpp"
-#include "frictionlab/campaign/key_unit.hpp"
 #include "frictionlab/output/csv_columns.hpp"
 
 namespace frictionlab {
@@ -23,9 +21,14 @@ namespace frictionlab {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-const char* const note = "each run's run.yaml in cases/<case>/ records its resolved scene and plugins";
+const char* const note = "each run's run.yaml in cases/<run>/ records its resolved scene and plugins";
 
 std::string number(double v) { return std::isnan(v) ? "nan" : fmt::format("{:.10g}", v); }
+
+/// A run's own verdict on its events, as a table cell: true, false, or nan without one.
+std::string agree_cell(const std::optional<EventStatistics>& s) {
+    return s && s->events_agree ? (*s->events_agree ? "true" : "false") : "nan";
+}
 
 /// The run's value of each column, as the sweep file writes it; empty where it has none.
 std::string value_cells(const CampaignValues& values, const std::vector<CampaignColumn>& columns) {
@@ -38,41 +41,18 @@ std::string value_cells(const CampaignValues& values, const std::vector<Campaign
     return text;
 }
 
-/// What a case's rupture outputs say: its events and the figures of its row.
-struct CaseEvents {
-    CsvColumns events;
-    std::size_t count = 0, precursors = 0;
-    double global_static_coefficient = nan;
-    double first_precursor_ratio = nan;  // F_S/F_N at the start of the first precursor
-};
+/// The cells that say which run a row is of: its case, the case's values, its seed and its
+/// directory below cases/, as run_columns() names them.
+std::string run_cells(const Sweep& sweep, const CampaignRun& run, const std::vector<CampaignColumn>& varied) {
+    return csv_cell(sweep_case_name(sweep.cases.at(run.case_index))) + value_cells(run.values, varied) +
+           fmt::format(",{},{}", run.scene.seed, csv_cell(run.name));
+}
 
-CaseEvents read_events(const CampaignRun& c) {
-    CaseEvents out;
-    const auto files = rupture_files(c.scene);
-    if (!files) return out;
-    out.events = read_csv_columns(files->events);
-    out.count = out.events["t_start"].size();
-    const auto& global = out.events["global"];
-    const auto& ratio = out.events["force_ratio"];
-    const auto& start = out.events["t_start"];
-    double first = std::numeric_limits<double>::infinity();
-    for (std::size_t e = 0; e < out.count; ++e) {
-        if (global.size() > e && global[e] > 0.5) continue;
-        ++out.precursors;
-        if (start[e] < first && ratio.size() > e) {
-            first = start[e];
-            out.first_precursor_ratio = ratio[e];
-        }
-    }
-    try {
-        if (std::filesystem::exists(files->summary)) {
-            const YAML::Node n = YAML::LoadFile(files->summary.string())["global_static_coefficient"];
-            if (n && n.IsScalar() && n.Scalar() != "null") out.global_static_coefficient = n.as<double>();
-        }
-    } catch (const YAML::Exception&) {
-        // A summary that cannot be read leaves the coefficient unknown (nan), as a run without global slip.
-    }
-    return out;
+std::vector<CampaignColumn> run_columns(const std::vector<CampaignColumn>& varied) {
+    std::vector<CampaignColumn> columns{{"case", ""}};
+    columns.insert(columns.end(), varied.begin(), varied.end());
+    columns.insert(columns.end(), {{"seed", "1"}, {"run", ""}});
+    return columns;
 }
 
 /// Each finished run's event statistics (none for a run that failed or has no precursors observer).
@@ -84,41 +64,85 @@ std::vector<std::optional<EventStatistics>> runs_statistics(const std::vector<Ca
     return out;
 }
 
+/// sweep.csv's and events.csv's rows.
+struct RunTables {
+    std::string runs, events;
+};
+
+RunTables run_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs, const std::vector<CaseRecord>& records,
+                   const std::vector<std::optional<EventStatistics>>& statistics,
+                   const std::vector<CampaignColumn>& varied) {
+    RunTables out;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const auto& r = records.at(i);
+        const std::string cells = run_cells(sweep, runs[i], varied);
+        CsvColumns events;
+        const auto files = rupture_files(runs[i].scene);
+        if (r.status == "done" && files && std::filesystem::exists(files->events))
+            events = read_csv_columns(files->events);
+        const std::size_t count = events["t_start"].size();
+        const auto statistic = [&](const char* name) { return number(statistics[i] ? statistics[i]->at(name) : nan); };
+        out.runs += fmt::format("{},{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", cells, r.status, csv_cell(r.reason),
+                                r.scene_hash, r.status == "done" && files ? std::to_string(count) : "nan",
+                                statistic("precursor_count"), statistic("first_precursor_force_ratio"),
+                                statistic("global_slip_force_ratio"), agree_cell(statistics[i]), r.summary.steps,
+                                r.summary.wall_seconds, r.summary.cpu_seconds);
+        auto column = [&](const char* name, std::size_t k) {
+            const auto it = events.find(name);
+            return it == events.end() || k >= it->second.size() ? nan : it->second[k];
+        };
+        for (std::size_t k = 0; k < count; ++k)
+            out.events += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, number(column("event", k)),
+                                      number(column("t_start", k)), number(column("t_start_since_loading", k)),
+                                      number(column("t_end", k)), number(column("t_end_since_loading", k)),
+                                      number(column("force_ratio", k)), number(column("extent_over_length", k)),
+                                      column("global", k) > 0.5 ? "global" : "precursor");
+    }
+    return out;
+}
+
 /// run_statistics.csv's rows: each run's values and its event statistics, NaN where it has none.
-std::string run_statistics_rows(const std::vector<CampaignRun>& runs,
+std::string run_statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs,
                                 const std::vector<std::optional<EventStatistics>>& statistics,
-                                const std::vector<CampaignColumn>& values) {
+                                const std::vector<CampaignColumn>& varied) {
     std::string text;
     for (std::size_t i = 0; i < runs.size(); ++i) {
-        text += csv_cell(runs[i].name) + value_cells(runs[i].values, values);
+        text += run_cells(sweep, runs[i], varied);
         for (std::size_t k = 0; k < event_statistics().size(); ++k)
             text += fmt::format(",{}", number(statistics[i] ? statistics[i]->values[k] : nan));
-        text += "\n";
+        text += "," + agree_cell(statistics[i]) + "\n";
     }
     return text;
 }
 
 /// sweep_statistics.csv's rows: for each case (a point of the grid), each event statistic over the
-/// seeds of its runs that finished.
+/// seeds of its runs that finished, and how many of them disagree with their own check of their
+/// events (left out of the statistics with leave_out_disagreeing).
 std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& runs,
                             const std::vector<std::optional<EventStatistics>>& statistics,
-                            const std::vector<CampaignColumn>& values) {
+                            const std::vector<CampaignColumn>& varied) {
     std::vector<std::vector<EventStatistics>> ensembles(sweep.cases.size());
+    std::vector<int> disagreeing(sweep.cases.size(), 0);
     std::vector<const CampaignValues*> case_values(sweep.cases.size());  // a run's: listed cases' are its scene's
     for (std::size_t i = 0; i < runs.size(); ++i) {
-        if (statistics[i]) ensembles.at(runs[i].case_index).push_back(*statistics[i]);
-        case_values.at(runs[i].case_index) = &runs[i].values;
+        const std::size_t c = runs[i].case_index;
+        case_values.at(c) = &runs[i].values;
+        if (!statistics[i]) continue;
+        const bool disagrees = statistics[i]->events_agree == false;
+        disagreeing.at(c) += disagrees;
+        if (!(disagrees && sweep.leave_out_disagreeing)) ensembles.at(c).push_back(*statistics[i]);
     }
     const auto& list = event_statistics();
     std::string text;
     for (std::size_t c = 0; c < sweep.cases.size(); ++c) {
         const CampaignCase& point = sweep.cases[c];
-        const std::string cells = csv_cell(point.name.empty() ? "base" : point.name) +
-                                  value_cells(case_values[c] ? *case_values[c] : point.values, values);
+        const std::string cells =
+            csv_cell(sweep_case_name(point)) + value_cells(case_values[c] ? *case_values[c] : point.values, varied);
         for (std::size_t k = 0; k < list.size(); ++k) {
             const EnsembleSummary e = summarize(column(ensembles[c], k));
-            text += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,
-                                number(e.mean), number(e.sd), number(e.ci_low), number(e.ci_high));
+            text += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", cells, list[k].name, list[k].unit, e.n, e.missing,
+                                number(e.mean), number(e.sd), number(e.ci_low), number(e.ci_high), csv_cell(e.interval),
+                                disagreeing[c]);
         }
     }
     return text;
@@ -129,10 +153,27 @@ std::string statistics_rows(const Sweep& sweep, const std::vector<CampaignRun>& 
 void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs,
                         const std::vector<CaseRecord>& records, const Registry& registry,
                         const std::filesystem::path& output) {
-    const std::vector<CampaignColumn> values = value_columns(runs, registry);
-    std::vector<CampaignColumn> columns{{"case", ""}};
-    columns.insert(columns.end(), values.begin(), values.end());
-    std::vector<CampaignColumn> events_columns = columns;
+    // The seed has a column of its own in every table of runs; the other keys are axes only where
+    // they vary.
+    std::vector<CampaignColumn> keys = value_columns(runs, registry);
+    std::erase_if(keys, [](const CampaignColumn& c) { return c.name == "seed"; });
+    const CampaignKeys split = split_varied(keys, runs);
+    const std::vector<CampaignColumn>& varied = split.varied;
+    const std::vector<CampaignColumn> leading = run_columns(varied);
+
+    std::vector<CampaignColumn> columns = leading;
+    columns.insert(columns.end(), {{"status", ""},
+                                   {"reason", ""},
+                                   {"scene_hash", ""},
+                                   {"event_count", "1"},
+                                   {"precursor_count", "1"},
+                                   {"first_precursor_force_ratio", "1"},
+                                   {"global_slip_force_ratio", "1"},
+                                   {"events_agree", ""},
+                                   {"steps", "1"},
+                                   {"wall_seconds", "s"},
+                                   {"cpu_seconds", "s"}});
+    std::vector<CampaignColumn> events_columns = leading;
     events_columns.insert(events_columns.end(), {{"event", "1"},
                                                  {"t_start", "s"},
                                                  {"t_start_since_loading", "s"},
@@ -141,62 +182,35 @@ void write_sweep_tables(const Sweep& sweep, const std::vector<CampaignRun>& runs
                                                  {"force_ratio", "1"},
                                                  {"extent_over_length", "1"},
                                                  {"kind", ""}});
-    columns.insert(columns.end(), {{"status", ""},
-                                   {"reason", ""},
-                                   {"scene_hash", ""},
-                                   {"global_static_coefficient", "1"},
-                                   {"events", "1"},
-                                   {"precursor_count", "1"},
-                                   {"first_precursor_force_ratio", "1"},
-                                   {"steps", "1"},
-                                   {"wall_seconds", "s"},
-                                   {"cpu_seconds", "s"}});
-
-    std::string table, events;
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        const auto& c = runs[i];
-        const auto& r = records.at(i);
-        const CaseEvents e = r.status == "done" ? read_events(c) : CaseEvents{};
-        const std::string cells = csv_cell(c.name) + value_cells(c.values, values);
-        table +=
-            fmt::format("{},{},{},{},{},{},{},{},{},{:.4g},{:.4g}\n", cells, r.status, csv_cell(r.reason), r.scene_hash,
-                        number(e.global_static_coefficient), e.count, e.precursors, number(e.first_precursor_ratio),
-                        r.summary.steps, r.summary.wall_seconds, r.summary.cpu_seconds);
-        auto column = [&](const char* name, std::size_t k) {
-            const auto it = e.events.find(name);
-            return it == e.events.end() || k >= it->second.size() ? nan : it->second[k];
-        };
-        for (std::size_t k = 0; k < e.count; ++k)
-            events += fmt::format("{},{},{},{},{},{},{},{},{}\n", cells, number(column("event", k)),
-                                  number(column("t_start", k)), number(column("t_start_since_loading", k)),
-                                  number(column("t_end", k)), number(column("t_end_since_loading", k)),
-                                  number(column("force_ratio", k)), number(column("extent_over_length", k)),
-                                  column("global", k) > 0.5 ? "global" : "precursor");
-    }
-    write_campaign_table(sweep, "sweep", output / "sweep.csv", columns, table, note);
-    write_campaign_table(sweep, "sweep", output / "events.csv", events_columns, events, note);
     const auto statistics = runs_statistics(runs, records);
-    std::vector<CampaignColumn> run_columns{{"case", ""}};
-    run_columns.insert(run_columns.end(), values.begin(), values.end());
-    for (const auto& s : event_statistics()) run_columns.push_back({s.name, s.unit});
-    write_campaign_table(sweep, "sweep", output / "run_statistics.csv", run_columns,
-                         run_statistics_rows(runs, statistics, values),
+    const RunTables rows = run_rows(sweep, runs, records, statistics, varied);
+    write_campaign_table(sweep, "sweep", output / "sweep.csv", columns, rows.runs, note, &split);
+    write_campaign_table(sweep, "sweep", output / "events.csv", events_columns, rows.events, note, &split);
+    std::vector<CampaignColumn> run_statistics_columns = leading;
+    for (const auto& s : event_statistics()) run_statistics_columns.push_back({s.name, s.unit});
+    run_statistics_columns.push_back({"events_agree", ""});
+    write_campaign_table(sweep, "sweep", output / "run_statistics.csv", run_statistics_columns,
+                         run_statistics_rows(sweep, runs, statistics, varied),
                          "per run, each event statistic (share/docs/accuracy-standard.md); nan where the run has "
-                         "none (no global slip, a precursor that never came, a failed run)");
+                         "none (no global slip, a precursor that never came, a failed run)",
+                         &split);
     if (sweep.seeds.empty()) return;
     // Per case over its seeds, as a study's ensemble.csv describes an ensemble; mean, sd and the
     // interval are in the unit each row names.
-    std::vector<CampaignColumn> point;  // the varied keys without the seed
-    std::copy_if(values.begin(), values.end(), std::back_inserter(point),
-                 [](const auto& v) { return v.name != "seed"; });
     std::vector<CampaignColumn> statistics_columns{{"case", ""}};
-    statistics_columns.insert(statistics_columns.end(), point.begin(), point.end());
+    statistics_columns.insert(statistics_columns.end(), varied.begin(), varied.end());
     for (auto c : statistic_summary_columns()) statistics_columns.push_back(std::move(c));
-    write_campaign_table(sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
-                         statistics_rows(sweep, runs, statistics, point),
-                         "per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "
-                         "finished: n that reach it, missing that do not, their mean, sample sd and Student-t 95 % "
-                         "interval of the mean");
+    statistics_columns.push_back({"disagreeing", "1"});
+    write_campaign_table(
+        sweep, "sweep", output / "sweep_statistics.csv", statistics_columns,
+        statistics_rows(sweep, runs, statistics, varied),
+        fmt::format("per case, each event statistic (share/docs/accuracy-standard.md) over the seeds whose run "
+                    "finished: n that reach it, missing that do not, their mean, sample sd and the 95 % percentile "
+                    "bootstrap interval of the mean ({} keyed resamples; none below {} values: `interval` says so); "
+                    "disagreeing: runs whose events disagree with their own check ({})",
+                    bootstrap_resamples, interval_minimum_values,
+                    sweep.leave_out_disagreeing ? "left out of the statistics" : "counted in the statistics"),
+        &split);
 }
 
 }  // namespace frictionlab

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
 
     const cli::Command commands[] = {cli::run_command(),   cli::check_command(),   cli::list_command(),
                                      cli::doc_command(),   cli::example_command(), cli::plot_command(),
-                                     cli::study_command(), cli::sweep_command()};
+                                     cli::study_command(), cli::sweep_command(),   cli::reproduce_command()};
     std::vector<std::pair<const CLI::App*, cli::Execute>> executes;
     for (const auto& command : commands) {
         auto* subcommand = app.add_subcommand(command.name, command.description);

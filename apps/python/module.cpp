@@ -1,6 +1,7 @@
 // frictionlab._core: the C++ side of the Python module (the package's __init__.py wraps it). It
-// reads and validates scenes exactly as the command line does, runs them in-process and answers
-// what `frictionlab list` and `frictionlab doc` print.
+// reads and validates scenes exactly as the command line does, runs them in-process, answers what
+// `frictionlab list` and `frictionlab doc` print, and gives frictionlab.ensembles the bootstrap
+// intervals the campaign tables use.
 #include <dlfcn.h>
 
 #include <atomic>
@@ -28,6 +29,7 @@
 #include "frictionlab/simulation/run.hpp"
 #include "frictionlab/scene/scene.hpp"
 #include "frictionlab/base/version.hpp"
+#include "frictionlab/campaign/ensemble_statistics.hpp"
 
 namespace py = pybind11;
 namespace fl = frictionlab;
@@ -204,6 +206,11 @@ std::string doc_json(const std::string& kind, const std::string& type, const std
     return fl::cli::render_doc(types, fl::cli::DocFormat::json);
 }
 
+/// A bootstrap estimate as frictionlab.ensembles reads it: (estimate, low, high, se, interval).
+py::tuple estimate_tuple(const fl::BootstrapEstimate& e) {
+    return py::make_tuple(e.estimate, e.ci_low, e.ci_high, e.standard_error, e.interval);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -243,4 +250,25 @@ PYBIND11_MODULE(_core, m) {
     m.def("types", &types, py::arg("plugin_paths"));
     m.def("doc_json", &doc_json, py::arg("kind"), py::arg("type"), py::arg("plugin_paths"));
     m.def("version", &fl::framework_version);
+    // The campaign tables' intervals (ensemble_statistics.hpp), for frictionlab.ensembles.
+    m.attr("bootstrap_resamples") = fl::bootstrap_resamples;
+    m.attr("interval_minimum_values") = fl::interval_minimum_values;
+    m.def(
+        "bootstrap_mean",
+        [](const std::vector<double>& a, std::uint64_t seed, int resamples) {
+            return estimate_tuple(fl::bootstrap_mean(a, seed, resamples));
+        },
+        py::arg("a"), py::arg("seed"), py::arg("resamples"));
+    m.def(
+        "bootstrap_difference",
+        [](const std::vector<double>& a, const std::vector<double>& b, std::uint64_t seed, int resamples) {
+            return estimate_tuple(fl::bootstrap_difference(a, b, seed, resamples));
+        },
+        py::arg("a"), py::arg("b"), py::arg("seed"), py::arg("resamples"));
+    m.def(
+        "bootstrap_slope",
+        [](const std::vector<double>& x, const std::vector<double>& y, std::uint64_t seed, int resamples) {
+            return estimate_tuple(fl::bootstrap_slope(x, y, seed, resamples));
+        },
+        py::arg("x"), py::arg("y"), py::arg("seed"), py::arg("resamples"));
 }

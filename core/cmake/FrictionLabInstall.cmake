@@ -38,7 +38,7 @@ install(FILES
   ${CMAKE_CURRENT_LIST_DIR}/FrictionLabPlugin.cmake
   DESTINATION ${FRICTIONLAB_CMAKE_DIR})
 
-# Plugin template, plotting scripts, docs: whatever share/ holds.
+# Plugin template, docs, examples: whatever share/ holds.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/share/
   DESTINATION ${CMAKE_INSTALL_DATADIR}/frictionlab
   USE_SOURCE_PERMISSIONS)

@@ -53,6 +53,7 @@ Chain1d::Chain1d(const Params& p, const Context& ctx) {
     body_.width = p.width;
     body_.spacing = a;
     body_.bond_stiffness = p.bond_stiffness > 0 ? p.bond_stiffness : p.youngs_modulus * p.width * p.height / a;
+    body_.wave_speed = a * std::sqrt(body_.bond_stiffness / node_mass());
     eta_ = std::sqrt(p.damping_factor * body_.bond_stiffness * node_mass());
     eta_z_ = std::sqrt(p.vertical_damping_factor * body_.bond_stiffness * node_mass());
 

@@ -94,6 +94,7 @@ SpringLattice2d::SpringLattice2d(const Params& p, const Context& ctx)
     body_.spacing = grid_.spacing;
     body_.bond_stiffness = 0.75 * p.width * p.youngs_modulus;
     body_.reference_spacing = p.reference_spacing;
+    body_.wave_speed = grid_.spacing * std::sqrt(body_.bond_stiffness / (2 * scales.mass));  // c_S = sqrt(3E/8 rho)
     eta_ = std::sqrt(p.damping_factor * body_.bond_stiffness * scales.damping_mass);
     build_node_sets();
     build_connectivity();

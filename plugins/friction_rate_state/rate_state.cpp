@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -22,7 +23,8 @@ ParamSpec<RateState::Params> RateState::spec() {
         .greater_than(0);
     s.add("d_c", &Params::d_c, "Characteristic slip distance D_c over which psi evolves to its new steady state.")
         .unit("m")
-        .greater_than(0);
+        .greater_than(0)
+        .also_known_as("critical_slip");
     s.add("f0", &Params::f0, "Reference friction coefficient f0: the steady-state mu at v = v0.")
         .unit("1")
         .greater_than(0);
@@ -51,6 +53,9 @@ RateState::RateState(const Params& params, const Context& ctx) : p_(spec().check
     normal_force_ = &q.needed_field("normal_force", set, n, name);
     friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from the friction law.");
     state_ = &q.field("state_variable", set, n, "1", "Rate-and-state variable psi of the block.");
+    // No elastic contact: the state's slip scale D_c stands for it; f0 is the steady-state level at v0.
+    rupture_scales::publish_characteristic_slip(q, p_.d_c);
+    rupture_scales::publish_kinetic_coefficient(q, p_.f0);
 }
 
 double RateState::coefficient(double v, double psi) const {

@@ -25,17 +25,12 @@ ParamSpec<Params> CoulombStrength::spec() {
     s.add("mu_d", &Params::mu_d, "Kinetic (dynamic) coefficient: a slipping block feels mu_d f_N against its velocity.")
         .unit("1")
         .at_least(0)
-        .formerly("mu_k");
+        .also_known_as("mu_k");
     s.rule("mu_d", order_rule);
     return s;
 }
 
 CoulombStrength::CoulombStrength(const Params& p) : mu_d_(spec().checked(p).mu_d) {}
-
-void CoulombStrength::declare(Quantities& q, const std::string& node_set, Index blocks) {
-    slipping_ =
-        &q.field("slipping", node_set, blocks, "1", "1 while the block slips, 0 while it is stuck or detached.");
-}
 
 std::string CoulombStrength::describe(const stick_slip::Settings& settings, const std::string& stiffness) const {
     return fmt::format("Coulomb friction (mu_s={:.3g}, mu_d={:.3g}, {})", settings.mu_s, mu_d_, stiffness);

@@ -20,7 +20,7 @@ namespace frictionlab {
 /// block logic shared with slip_weakening): at a commit, when the velocity has reversed or fallen
 /// below stick_velocity after exceeding it, with the spring re-anchored to carry the kinetic force
 /// the block felt, so the friction force is continuous and the block re-loads from mu_d f_N.
-/// Publishes "friction_force" and "slipping" (1 while slipping, else 0).
+/// Publishes "friction_force" and "slipping" (1 while slipping, else 0; StickSlipLaw).
 class CoulombStrength {
 public:
     struct Params {
@@ -39,15 +39,13 @@ public:
 
     /// S = mu_d f_N, whatever the slip.
     double operator()(double normal, double /*slip*/) const { return mu_d_ * normal; }
-    void declare(Quantities& q, const std::string& node_set, Index blocks);
-    void publish(Index i, const stick_slip::Block& b, double /*slip*/) {
-        (*slipping_)[i] = b.mode == stick_slip::Mode::slipping ? 1.0 : 0.0;
-    }
+    double kinetic_coefficient() const { return mu_d_; }
+    void declare(Quantities&, const std::string& /*node_set*/, Index /*blocks*/) {}  // no field of its own
+    void publish(Index, const stick_slip::Block&, double /*slip*/) {}
     std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;
 
 private:
     double mu_d_;
-    Eigen::ArrayXd* slipping_ = nullptr;
 };
 
 using Coulomb = StickSlipLaw<CoulombStrength>;

@@ -22,10 +22,14 @@ ParamSpec<Params> SlipWeakeningStrength::spec() {
         "a tangential spring holds a stuck block up to mu_s f_N; a slipping block's strength falls linearly with "
         "its slip since it last stuck, from mu_s f_N to mu_d f_N over D_c.");
     stick_slip::add_settings(s);
-    s.add("mu_d", &Params::mu_d, "Residual coefficient, reached after a slip D_c.").unit("1").at_least(0);
+    s.add("mu_d", &Params::mu_d, "Residual coefficient, reached after a slip D_c.")
+        .unit("1")
+        .at_least(0)
+        .also_known_as("mu_k");
     s.add("critical_slip", &Params::critical_slip, "Slip D_c over which the strength weakens from mu_s to mu_d.")
         .unit("m")
-        .greater_than(0);
+        .greater_than(0)
+        .also_known_as("d_c");
     s.rule("mu_d", order_rule);
     return s;
 }

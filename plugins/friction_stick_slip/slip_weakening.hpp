@@ -40,6 +40,7 @@ public:
         const double weakened = std::min(slip / critical_slip_, 1.0);
         return (mu_s_ - (mu_s_ - mu_d_) * weakened) * normal;
     }
+    double kinetic_coefficient() const { return mu_d_; }
     void declare(Quantities& q, const std::string& node_set, Index blocks);
     void publish(Index i, const stick_slip::Block& /*b*/, double slip) { (*slip_)[i] = slip; }
     std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 #include "coulomb.hpp"
 #include "slip_weakening.hpp"
@@ -42,6 +43,10 @@ StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
     friction_force_ = &q.field("friction_force", set, n, "N",
                                "x-force on the block from the base: spring while stuck, kinetic while slipping.");
     strength_.declare(q, set, n);
+    slipping_ = &rupture_scales::publish_slipping(q, set, n);
+    characteristic_slip_ = &rupture_scales::publish_characteristic_slip(q, std::numeric_limits<double>::quiet_NaN());
+    rupture_scales::publish_kinetic_coefficient(q, strength_.kinetic_coefficient());
+    follow_characteristic_slip();
     blocks_.resize(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         Block& b = blocks_[i];
@@ -76,6 +81,7 @@ void StickSlipLaw<Strength>::add_forces(const StageView& s, ForceView& f) {
         const double force = stage_force(b, s.x[node], s.vx[node], (*normal_force_)[i], slip);
         f.fx[node] += force;
         (*friction_force_)[i] = force;
+        (*slipping_)[i] = b.mode == Mode::slipping ? 1.0 : 0.0;
         strength_.publish(i, b, slip);
     }
 }
@@ -157,6 +163,15 @@ void StickSlipLaw<Strength>::commit(const StageView& end, double /*dt*/) {
         commit_block(blocks_[k], end.x[node], end.vx[node], (*normal_force_)[static_cast<Index>(k)]);
     }
     drift_.commit(*normal_force_, end.t);
+    follow_characteristic_slip();
+}
+
+template <class Strength>
+void StickSlipLaw<Strength>::follow_characteristic_slip() {
+    const double mean = normal_force_->size() > 0 ? normal_force_->max(0.0).mean() : 0.0;
+    const double k_t = stiffness(settings_.tangential_stiffness, mean);
+    const double slip = settings_.mu_s * mean / k_t;
+    *characteristic_slip_ = std::isfinite(slip) && slip > 0 ? slip : std::numeric_limits<double>::quiet_NaN();
 }
 
 template <class Strength>

@@ -121,7 +121,8 @@ Settings settings_of(const P& p) {
 /// A Strength supplies what differs: its Params (flat, with the members of stick_slip::Settings),
 /// `type` and spec(); a constructor from Params that checks them; `double operator()(f_N, delta)`,
 /// the kinetic strength S >= 0; declare(quantities, node_set, blocks) and publish(i, block, delta)
-/// for its own field; describe(settings, stiffness text).
+/// for its own field; kinetic_coefficient(), which the rupture detector reads (model/rupture_scales.hpp);
+/// describe(settings, stiffness text).
 template <class Strength>
 class StickSlipLaw final : public FrictionLaw {
 public:
@@ -174,6 +175,9 @@ private:
     double stage_slip(const Block& b, double x) const;
     void commit_block(Block& b, double x, double v, double normal) const;
     void check_settled(const StageInfo&, const StageView&) const;
+    /// Publishes the slip an unloaded stuck spring takes before it breaks, mu_s f_N / k_t, at the
+    /// blocks' mean normal force (NaN while none).
+    void follow_characteristic_slip();
 
     std::string name_;
     Settings settings_;
@@ -183,6 +187,8 @@ private:
     const Eigen::ArrayXd* normal_force_;
     NormalForceDrift drift_;  // k_t follows f_N at commits: a quiet span ends before it drifts
     Eigen::ArrayXd* friction_force_;
+    Eigen::ArrayXd* slipping_;     // published: 1 while a block slips
+    double* characteristic_slip_;  // published: mu_s f_N / k_t at the mean normal force
     bool events_ = true;
 };
 

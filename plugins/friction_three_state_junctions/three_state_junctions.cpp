@@ -13,6 +13,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/random.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -75,7 +76,8 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
         .greater_than(0);
     s.add("mu_d", &Params::mu_d, "Sliding coefficient of one micro-contact: a sliding junction carries mu_d p.")
         .unit("1")
-        .at_least(0);
+        .at_least(0)
+        .also_known_as("mu_k");
     s.add("sliding_time_mean", &Params::sliding_time_mean, "Mean t_s of the sliding-state duration (Gaussian, t > 0).")
         .unit("s")
         .greater_than(0);
@@ -150,6 +152,9 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
     // Each junction is a contact of mean radius rbar: the real contact area is N pi rbar^2 (Li2020 §2.2).
     q.scalar("junction_area", "m^2", "Real contact area of one junction, pi rbar^2.") =
         std::numbers::pi * params.contact_radius * params.contact_radius;
+    // An unloaded junction breaks after mu_s p / k_s of slip: what a block takes without slipping.
+    rupture_scales::publish_characteristic_slip(q, params.mu_s * p_ / k_s_);
+    rupture_scales::publish_kinetic_coefficient(q, params.mu_d);
     const BlockJunctions::Constants c{p_, k_s_, params.mu_d};
     blocks_.reserve(nodes_.size());
     for (Index node : nodes_) {

@@ -11,6 +11,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/model/random.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -39,7 +40,8 @@ ParamSpec<Params> TwoStateJunctions::spec() {
         .greater_than(0);
     s.add("mu_d", &Params::mu_d, "Dynamic coefficient: a slipping junction carries mu_d f_N / N_s.")
         .unit("1")
-        .at_least(0);
+        .at_least(0)
+        .also_known_as("mu_k");
     s.add("junction_stiffness", &Params::junction_stiffness,
           "Stiffness k_bar of one pinned junction on a block at the mean normal force; k_i = k_bar sqrt(f_N,i/<f_N>).")
         .unit("N/m")
@@ -75,6 +77,8 @@ TwoStateJunctions::TwoStateJunctions(const Params& params, const Context& ctx)
     normal_force_ = &q.needed_field("normal_force", set, n, name_);
     friction_force_ = &q.field("friction_force", set, n, "N", "x-force on the block from its junctions, -sum_j f_j.");
     counts_ = JunctionCounts::publish(q, set, n);
+    characteristic_slip_ = &rupture_scales::publish_characteristic_slip(q, std::numeric_limits<double>::quiet_NaN());
+    rupture_scales::publish_kinetic_coefficient(q, mu_d_);
     const auto size = static_cast<std::size_t>(n_s_);
     blocks_.resize(nodes_.size());
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
@@ -156,8 +160,12 @@ double TwoStateJunctions::potential_energy(const StageView& s) const {
     return energy;
 }
 
-double TwoStateJunctions::mean_normal_force() const {
-    return normal_force_->size() > 0 ? normal_force_->max(0.0).mean() : 0.0;
+double TwoStateJunctions::follow_mean_normal_force() {
+    const double mean = normal_force_->size() > 0 ? normal_force_->max(0.0).mean() : 0.0;
+    // At the mean normal force an unloaded junction breaks after mu_s f_N / (N_s k_bar) of slip.
+    *characteristic_slip_ =
+        mean > 0 ? mu_s_ * mean / (static_cast<double>(n_s_) * k_bar_) : std::numeric_limits<double>::quiet_NaN();
+    return mean;
 }
 
 void TwoStateJunctions::follow_normal_force(Index i, double x, double mean) {
@@ -173,12 +181,12 @@ void TwoStateJunctions::follow_normal_force(Index i, double x, double mean) {
 
 void TwoStateJunctions::begin_stage(const StageInfo& stage, const StageView& s) {
     events_ = stage.friction_events;
-    const double mean = mean_normal_force();
+    const double mean = follow_mean_normal_force();
     for (std::size_t k = 0; k < nodes_.size(); ++k) follow_normal_force(static_cast<Index>(k), s.x[nodes_[k]], mean);
 }
 
 void TwoStateJunctions::commit(const StageView& end, double /*dt*/) {
-    const double mean = mean_normal_force();
+    const double mean = follow_mean_normal_force();
     next_event_ = infinity;
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const auto i = static_cast<Index>(k);

@@ -127,7 +127,8 @@ private:
     bool repin_expired(Block& b, double t) const;
     bool break_overloaded(Block& b, Index i, double t) const;
     static void refresh_aggregates(Block& b);
-    double mean_normal_force() const;
+    /// The mean normal force over the blocks, and the characteristic slip it sets, published.
+    double follow_mean_normal_force();
 
     std::string name_;
     Index n_s_;
@@ -140,6 +141,7 @@ private:
     NormalForceDrift drift_;  // k and f_s follow f_N at commits: a quiet span ends before they drift
     Eigen::ArrayXd* friction_force_;
     JunctionCounts::Writable counts_;
+    double* characteristic_slip_ = nullptr;  // published; follows the mean normal force
     bool events_ = true;
     double next_event_;
 };

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -139,6 +140,7 @@ DrivingSpring::DrivingSpring(const Params& p, const Context& ctx)
       driver_(ctx.quantities->scalar("driver_position", "m",
                                      "Displacement X(t) of the spring's far end since loading began.")) {
     x_h0_ = driving_point_x(ctx.body->reference_position.col(sliding_));
+    rupture_scales::publish_drive_velocity(*ctx.quantities, params_.velocity);
 }
 
 template <class Positions>

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
 
 namespace frictionlab {
 
@@ -43,7 +44,9 @@ PlateSprings::PlateSprings(const Params& p, const Context& ctx)
                                            "Displacement of the driving point(s) since loading began.")),
       driver_(ctx.quantities->scalar("driver_position", "m",
                                      "Displacement V (t - t0) of the driver since loading "
-                                     "began.")) {}
+                                     "began.")) {
+    rupture_scales::publish_drive_velocity(*ctx.quantities, params_.velocity);
+}
 
 std::string PlateSprings::describe() const {
     return fmt::format("plate springs k_p={:g} N/m on each of {} nodes of '{}', V={:g} m/s", params_.stiffness,

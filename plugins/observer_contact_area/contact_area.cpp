@@ -47,8 +47,29 @@ const std::vector<std::string> block_columns{"time",
                                              "normal_force",
                                              "bond_force_left",
                                              "bond_force_right"};
-// Both tables' step and stage numbers and junction counts.
-const ColumnTypes count_types{{"step", "stage", "pinned", "sliding", "dislocated", "junctions"}, {}};
+// Both tables' step and stage numbers and junction counts, and every column's unit.
+const ColumnTypes count_types{{"step", "stage", "pinned", "sliding", "dislocated", "junctions"},
+                              {},
+                              {{"time", "s"},
+                               {"step", "1"},
+                               {"stage", "1"},
+                               {"pinned", "1"},
+                               {"sliding", "1"},
+                               {"dislocated", "1"},
+                               {"junctions", "1"},
+                               {"pinned_reference", "1"},
+                               {"normalised_pinned", "1"},
+                               {"pinned_fraction", "1"},
+                               {"sliding_fraction", "1"},
+                               {"dislocated_fraction", "1"},
+                               {"slip", "m"},
+                               {"slip_since_loading", "m"},
+                               {"velocity", "m/s"},
+                               {"friction_force", "N"},
+                               {"normal_force", "N"},
+                               {"bond_force_left", "N"},
+                               {"bond_force_right", "N"},
+                               {"contact_area", "m^2"}}};
 
 double ratio(double a, double b) { return b > 0 ? a / b : nan; }
 

@@ -41,6 +41,8 @@ void EnergyBalance::begin(const RunView& view) {
                                                                  : Group::bulk);
     });
     std::vector<std::string> names{"time", "step", "stage", "kinetic_energy"};
+    ColumnTypes types{
+        {"step", "stage"}, {}, {{"time", "s"}, {"step", "1"}, {"stage", "1"}, {"relative_residual", "1"}}};
     for (std::size_t k = 0; k < effects_.size(); ++k) {
         const std::string& label = system.labels()[k];
         names.push_back(label + "_energy");
@@ -50,8 +52,8 @@ void EnergyBalance::begin(const RunView& view) {
     for (const char* total : {"stored_energy", "input", "dissipated_damping", "dissipated_friction", "residual",
                               "relative_residual", "balance_error"})
         names.push_back(total);
-    table_ = open_table(view.output_directory / params_.file, names, ColumnTypes{{"step", "stage"}, {}}, view.info,
-                        TableFormat::csv, view.resuming);
+    for (const auto& name : names) types.units.emplace(name, "J");  // every energy, work and balance
+    table_ = open_table(view.output_directory / params_.file, names, types, view.info, TableFormat::csv, view.resuming);
     row_.reserve(names.size());
     stored_.resize(effects_.size());
 }

@@ -46,26 +46,32 @@ void InterfaceHistory::begin(const RunView& view) {
     std::vector<std::string> columns{"time"};
     for (std::size_t b = 0; b < nodes_.size(); ++b) columns.push_back(fmt::format("block_{}", b));
 
-    const auto add = [&](const char* file, std::function<double(const RunView&, Index)> value) {
-        tables_.push_back({open_table(view.output_directory / file, columns, view.info, params_.format, view.resuming),
-                           std::move(value)});
+    // Every block's column of a table is in the unit of its quantity.
+    const auto add = [&](const char* file, const std::string& unit,
+                         std::function<double(const RunView&, Index)> value) {
+        ColumnTypes types{{}, {}, {{"time", "s"}}};
+        for (std::size_t k = 1; k < columns.size(); ++k) types.units[columns[k]] = unit;
+        tables_.push_back(
+            {open_table(view.output_directory / file, columns, types, view.info, params_.format, view.resuming),
+             std::move(value)});
     };
-    add(velocity_file, [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
-    add(slip_file, [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0()(nodes_[b]); });
+    add(velocity_file, "m/s", [this](const RunView& v, Index b) { return v.state.vx(nodes_[b]); });
+    add(slip_file, "m", [this](const RunView& v, Index b) { return v.state.x(nodes_[b]) - v.body.x0()(nodes_[b]); });
     // Published fields are over the interface node set, indexed like it.
     const Quantities& q = view.quantities;
     const auto blocks = static_cast<Index>(nodes_.size());
     if (const auto counts = JunctionCounts::find(q, blocks); counts && params_.node_set == "interface")
-        add(pinned_fraction_file, [counts = *counts](const RunView&, Index b) { return counts.pinned_fraction(b); });
+        add(pinned_fraction_file, "1",
+            [counts = *counts](const RunView&, Index b) { return counts.pinned_fraction(b); });
     const auto* friction = q.find_field("friction_force");
     const auto* normal = q.find_field("normal_force");
     // Forces per block, e.g. the settled profile an accuracy study compares (frictionlab study).
     for (const auto* field : {normal, friction})
         if (field && field->node_set == params_.node_set)
-            add(field == normal ? normal_force_file : friction_force_file,
+            add(field == normal ? normal_force_file : friction_force_file, field->unit,
                 [field](const RunView&, Index b) { return field->values(b); });
     if (friction && normal && params_.node_set == friction->node_set)
-        add(shear_ratio_file, [friction, normal](const RunView&, Index b) {
+        add(shear_ratio_file, "1", [friction, normal](const RunView&, Index b) {
             return normal->values(b) > 0 ? friction->values(b) / normal->values(b)
                                          : std::numeric_limits<double>::quiet_NaN();
         });

@@ -27,11 +27,18 @@ LoadingCurve::LoadingCurve(const Params& p, const Context&) : params_(spec().che
 
 void LoadingCurve::begin(const RunView& view) {
     const Quantities& q = view.quantities;
+    ColumnTypes types{{"step", "stage"}, {}, {{"time", "s"}, {"step", "1"}, {"stage", "1"}}};
     const auto scalar = [&](const char* name, const char* column) {
-        if (const auto* s = q.find_scalar(name)) columns_.push_back({column, &s->value, nullptr});
+        if (const auto* s = q.find_scalar(name)) {
+            columns_.push_back({column, &s->value, nullptr});
+            types.units[column] = s->unit;
+        }
     };
     const auto total = [&](const char* name, const char* column) {
-        if (const auto* f = q.find_field(name)) columns_.push_back({column, nullptr, &f->values});
+        if (const auto* f = q.find_field(name)) {
+            columns_.push_back({column, nullptr, &f->values});
+            types.units[column] = f->unit;
+        }
     };
     scalar("driving_force", "driving_force");
     scalar("driving_displacement", "driving_displacement");
@@ -45,8 +52,8 @@ void LoadingCurve::begin(const RunView& view) {
     std::vector<std::string> names{"time", "step", "stage"};
     for (const auto& c : columns_) names.push_back(c.name);
     if (normal_load_ && driving_force_) names.push_back("driving_force_over_normal_load");
-    table_ = open_table(view.output_directory / params_.file, names, ColumnTypes{{"step", "stage"}, {}}, view.info,
-                        TableFormat::csv, view.resuming);
+    types.units["driving_force_over_normal_load"] = "1";
+    table_ = open_table(view.output_directory / params_.file, names, types, view.info, TableFormat::csv, view.resuming);
     row_.reserve(names.size());
 }
 

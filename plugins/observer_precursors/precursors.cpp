@@ -1,20 +1,25 @@
 #include "precursors.hpp"
 
-#include <fstream>
 #include <limits>
 
 #include <fmt/format.h>
 
-#include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/base/errors.hpp"
-#include "frictionlab/output/provenance.hpp"
+#include "frictionlab/model/rupture_scales.hpp"
+#include "frictionlab/output/atomic_file.hpp"
 #include "frictionlab/output/output_file_name.hpp"
+#include "frictionlab/output/provenance.hpp"
 
 namespace frictionlab {
 
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The auto settings as fractions of the scene's scales (theory.md §5a says why these).
+constexpr double quiet_fraction_of_drive = 0.5;     // quiet_speed = this x the drive's speed
+constexpr double quiet_time_in_windows = 2;         // quiet_time = this x rate_window
+constexpr double min_slip_in_characteristic = 0.1;  // min_slip = this x the law's characteristic slip
 
 /// YAML 1.2 reads a JSON number; NaN (unknown yet) is written as null.
 std::string yaml_number(double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null"; }
@@ -40,17 +45,47 @@ const std::vector<std::string> event_columns{"event",
                                              "max_slip",
                                              "out_of_contact",
                                              "front_speed_error",
-                                             "crossing_speed_error"};
+                                             "crossing_speed_error",
+                                             "slip_extent"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay", "resolution"};
 const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
 const ColumnTypes event_types{{"event", "nucleation_block", "ruptured_blocks", "out_of_contact"},
-                              {"finished", "global"}};
-const ColumnTypes front_types{{"event", "block"}, {}};
-const ColumnTypes contact_types{{"block"}, {"in_contact"}};
+                              {"finished", "global"},
+                              {{"event", "1"},
+                               {"finished", "1"},
+                               {"t_start", "s"},
+                               {"t_end", "s"},
+                               {"duration", "s"},
+                               {"driving_force", "N"},
+                               {"normal_load", "N"},
+                               {"force_ratio", "1"},
+                               {"nucleation_block", "1"},
+                               {"nucleation_x", "m"},
+                               {"extent", "m"},
+                               {"extent_over_length", "1"},
+                               {"min_ruptured_x", "m"},
+                               {"max_ruptured_x", "m"},
+                               {"ruptured_blocks", "1"},
+                               {"global", "1"},
+                               {"front_speed", "m/s"},
+                               {"crossing_speed", "m/s"},
+                               {"max_slip", "m"},
+                               {"out_of_contact", "1"},
+                               {"front_speed_error", "m/s"},
+                               {"crossing_speed_error", "m/s"},
+                               {"slip_extent", "m"}}};
+const ColumnTypes front_types{{"event", "block"},
+                              {},
+                              {{"event", "1"},
+                               {"block", "1"},
+                               {"x", "m"},
+                               {"distance", "m"},
+                               {"time", "s"},
+                               {"delay", "s"},
+                               {"resolution", "s"}}};
+const ColumnTypes contact_types{
+    {"block"}, {"in_contact"}, {{"time", "s"}, {"block", "1"}, {"x", "m"}, {"in_contact", "1"}}};
 
-}  // namespace
-
-namespace {
 std::vector<OutputName> outputs(const Precursors::Params& p) {
     auto out = table_outputs("events_file", p.events_file, p.format);
     for (auto& o : table_outputs("fronts_file", p.fronts_file, p.format)) out.push_back(std::move(o));
@@ -58,33 +93,58 @@ std::vector<OutputName> outputs(const Precursors::Params& p) {
     out.push_back({"summary_file", p.summary_file});
     return out;
 }
+
+std::string number(double v) { return fmt::format("{:.4g}", v); }
+
 }  // namespace
 
 ParamSpec<Precursors::Params> Precursors::spec() {
     ParamSpec<Params> s(
         "Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
-        "theory.md B.19): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; "
-        "as CSV tables and a summary with the global static coefficient.");
-    s.choice(
-        "criterion", &Params::criterion,
-        {{"auto", Criterion::automatic}, {"pinned_fraction", Criterion::pinned_fraction}, {"slip", Criterion::slip}},
-        "When a block is ruptured: 'pinned_fraction' (more than ruptured_fraction of its junctions are not "
-        "pinned; needs the junction-count fields) or 'slip' (it slipped more than slip_threshold within "
-        "quiet_time); 'auto': pinned_fraction where the friction law publishes junction counts, slip "
-        "otherwise (run.yaml records which, under resolved_choices). Either way a block out of contact "
-        "(lifted off) is not ruptured.");
+        "theory.md §5a): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; each run's "
+        "global slips checked against the drops of its loading curve and its precursors against its slip field; "
+        "as CSV tables and a summary with the settings used and the verdict of the check.");
+    s.choice("criterion", &Params::criterion,
+             {{"auto", Criterion::automatic},
+              {"pinned_fraction", Criterion::pinned_fraction},
+              {"slipping", Criterion::slipping},
+              {"slip_rate", Criterion::slip_rate}},
+             "Whether a block's contact is broken: 'pinned_fraction' (more than ruptured_fraction of its junctions "
+             "are not pinned; needs junction counts), 'slipping' (the law's stuck spring is broken; needs its field "
+             "'slipping'), 'slip_rate' (no contact measure: the slip rate alone decides); 'auto': the first the "
+             "friction law allows (run.yaml records which, under resolved_choices). A block must besides slip faster "
+             "than quiet_speed, and one out of contact (lifted off) never ruptures.");
     s.add("ruptured_fraction", &Params::ruptured_fraction,
           "Criterion pinned_fraction: fraction of a block's junctions that must be sliding or dislocated.")
         .unit("1")
         .at_least(0)
         .less_than(1);
-    s.add("slip_threshold", &Params::slip_threshold, "Criterion slip: slip that makes a block ruptured.")
-        .unit("m")
-        .greater_than(0);
-    s.add("quiet_time", &Params::quiet_time,
-          "An event ends once this long has passed without a ruptured block; ruptures closer in time are one event.")
+    s.add("quiet_speed", &Params::quiet_speed,
+          "A block slipping slower than this (its mean rate over rate_window) creeps with the load and does not "
+          "rupture; auto: half the drive's speed.")
+        .unit("m/s")
+        .greater_than(0)
+        .or_auto();
+    s.add("rate_window", &Params::rate_window,
+          "Time over which a block's slip rate is averaged; auto: the time L/c_S a shear wave takes to cross the "
+          "slider, over which its vibrations average out.")
         .unit("s")
-        .greater_than(0);
+        .greater_than(0)
+        .or_auto()
+        .within_stage("stage");
+    s.add("quiet_time", &Params::quiet_time,
+          "A block rupturing within one block of an event's rupturing block at most this long after it joins that "
+          "event; an event ends once none of its blocks has ruptured for this long; auto: twice rate_window.")
+        .unit("s")
+        .greater_than(0)
+        .or_auto()
+        .within_stage("stage");
+    s.add("min_slip", &Params::min_slip,
+          "An event none of whose blocks slipped this much is not reported (vibration or a junction's flicker); "
+          "auto: a tenth of the friction law's characteristic slip (its published characteristic_slip).")
+        .unit("m")
+        .greater_than(0)
+        .or_auto();
     s.add("front_every", &Params::front_every,
           "While an event runs, the observer samples this often (besides `every`), so that a front's arrival at a "
           "block, and its speed, are resolved finer than the table's cadence; 0: at `every` only.")
@@ -99,12 +159,25 @@ ParamSpec<Precursors::Params> Precursors::spec() {
         .unit("1")
         .greater_than(0)
         .at_most(1);
-    s.add("nucleation_window_quiet_times", &Params::nucleation_window_quiet_times,
-          "A non-global event ending at most this many quiet_times before a larger one (a longer precursor or a "
-          "global slip) starts, within one block of its nucleation, is that rupture's nucleation and is reported "
-          "with it (B.19a); in quiet times so that it scales with the loading rate as quiet_time does; 0: never.")
+    s.add("nucleation_load", &Params::nucleation_load,
+          "A rupture's nucleation: an event that is not global is reported with a larger one nucleating within "
+          "one block of it, which starts after it ended, before F_S has risen by this fraction of F_N (theory.md "
+          "§5a); in load, not time, so that it means the same at every drive; 0: never.")
         .unit("1")
         .at_least(0);
+    s.add("drop_threshold", &Params::drop_threshold,
+          "The check of the events: a fall of F_S/F_N by at least this much is a drop of the loading curve, "
+          "which exactly one global slip must match; a fall by a third of it goes beyond a slip's ringing, and a "
+          "global slip may lie in it.")
+        .unit("1")
+        .greater_than(0);
+    s.add("match_tolerance", &Params::match_tolerance,
+          "The check of the events: a global slip must start within this fraction of its drop's peak F_S/F_N.")
+        .unit("1")
+        .greater_than(0);
+    s.add("check", &Params::check,
+          "Check the events against the loading curve's drops and the slip field (theory.md §5a); false skips "
+          "the check (verdict: not_checked), for a run that measures what it costs.");
     s.add("events_file", &Params::events_file,
           "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
@@ -120,18 +193,77 @@ ParamSpec<Precursors::Params> Precursors::spec() {
 }
 
 Precursors::Precursors(const Params& p, const Context& ctx) : params_(spec().checked(p)) {
+    if (!ctx.quantities || !ctx.body) throw InputError("precursors needs the run's body and quantities");
+    const Quantities& q = *ctx.quantities;
+    // Built after every effect: what they publish is declared by now, or never.
     if (params_.criterion == Criterion::automatic) {
-        // Built after every effect: the junction counts are published by now, or never.
-        const bool counts = ctx.quantities && JunctionCounts::published(*ctx.quantities);
-        params_.criterion = counts ? Criterion::pinned_fraction : Criterion::slip;
-        ctx.resolved("criterion", counts ? "pinned_fraction" : "slip",
-                     counts ? "the friction law publishes junction counts"
-                            : "no effect of this scene publishes junction counts");
+        const bool counts = JunctionCounts::published(q);
+        const auto* slipping = q.find_field(rupture_scales::slipping_name);
+        params_.criterion = counts                            ? Criterion::pinned_fraction
+                            : slipping && slipping->published ? Criterion::slipping
+                                                              : Criterion::slip_rate;
+        ctx.resolved("criterion",
+                     counts     ? "pinned_fraction"
+                     : slipping ? "slipping"
+                                : "slip_rate",
+                     counts     ? "the friction law publishes junction counts"
+                     : slipping ? "the friction law publishes whether a block slips"
+                                : "the friction law publishes no contact measure");
     }
     if (params_.criterion == Criterion::pinned_fraction)
         counts_ = JunctionCounts::need(ctx,
-                                       "set criterion: slip (or auto, which chooses slip without junction "
-                                       "counts), or use a friction law with junctions");
+                                       "set criterion: slip_rate (or auto, which chooses what the law allows), or "
+                                       "use a friction law with junctions");
+    if (params_.criterion == Criterion::slipping) {
+        const auto blocks = static_cast<Index>(ctx.body->nodes("interface").size());
+        slipping_ = &ctx.quantities->needed_field(std::string(rupture_scales::slipping_name), "interface", blocks,
+                                                  ctx.name, "set criterion: slip_rate or auto");
+    }
+
+    if (std::isnan(params_.quiet_speed)) {
+        const double v = rupture_scales::find(q, rupture_scales::drive_velocity_name);
+        if (!(v > 0))
+            throw InputError(
+                "quiet_speed is auto, half the drive's speed, but no loader of this scene publishes a "
+                "drive_velocity (a driving_spring or plate_springs does): set quiet_speed in m/s");
+        params_.quiet_speed = quiet_fraction_of_drive * v;
+        ctx.resolved("quiet_speed", number(params_.quiet_speed), fmt::format("half the drive's {} m/s", number(v)));
+    }
+    if (std::isnan(params_.rate_window)) {
+        const Body& body = *ctx.body;
+        if (!(body.length > 0 && body.wave_speed > 0))
+            throw InputError(
+                "rate_window is auto, the time a wave takes to cross the body, but the bulk model gives "
+                "no length or wave speed: set rate_window in s");
+        params_.rate_window = body.length / body.wave_speed;
+        ctx.resolved("rate_window", number(params_.rate_window),
+                     fmt::format("L/c_S = {} m / {} m/s", number(body.length), number(body.wave_speed)));
+    }
+    if (std::isnan(params_.quiet_time)) {
+        params_.quiet_time = quiet_time_in_windows * params_.rate_window;
+        ctx.resolved("quiet_time", number(params_.quiet_time), "twice rate_window");
+    }
+    if (const auto* s = q.find_scalar(rupture_scales::characteristic_slip_name)) law_slip_scale_ = &s->value;
+    kinetic_coefficient_ = rupture_scales::find(q, rupture_scales::kinetic_coefficient_name);
+    if (std::isnan(params_.min_slip)) {
+        if (!law_slip_scale_) {
+            params_.min_slip = 0;
+            ctx.resolved("min_slip", "0",
+                         "no friction law of this scene publishes a characteristic slip: every event is reported");
+        } else if ((min_slip_follows_law_ = std::isnan(*law_slip_scale_))) {
+            ctx.resolved("min_slip", "a tenth of the law's characteristic slip when loading starts",
+                         "the law's scale follows the normal force");
+        } else {
+            characteristic_slip_ = *law_slip_scale_;
+            params_.min_slip = min_slip_in_characteristic * characteristic_slip_;
+            ctx.resolved("min_slip", number(params_.min_slip),
+                         fmt::format("a tenth of the law's characteristic slip {} m", number(characteristic_slip_)));
+        }
+    } else if (law_slip_scale_) {
+        characteristic_slip_ = *law_slip_scale_;
+    }
+    drops_ = LoadingDrops(params_.drop_threshold);
+    slip_rate_ = SlipRate(params_.rate_window);
 }
 
 void Precursors::begin(const RunView& view) {
@@ -140,16 +272,15 @@ void Precursors::begin(const RunView& view) {
     const auto n = static_cast<Index>(interface_.size());
     if (n == 0) throw RunError("precursors: the node set 'interface' is empty");
 
-    if (params_.criterion == Criterion::slip) slip_criterion_.emplace(params_.slip_threshold, params_.quiet_time);
-
     RuptureEventDetector::Interface geometry;
     geometry.x.resize(n);
     for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0()(interface_[i]) - body.x0()(interface_[0]);
     geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
     geometry.spacing = body.spacing;
-    detector_.emplace(
-        std::move(geometry), params_.quiet_time,
-        RuptureEventDetector::Options{params_.global_span, params_.nucleation_window_quiet_times * params_.quiet_time});
+    detector_.emplace(std::move(geometry),
+                      RuptureEventDetector::Options{params_.quiet_time, params_.global_span,
+                                                    min_slip_follows_law_ ? nan : params_.min_slip,
+                                                    characteristic_slip_, params_.nucleation_load, params_.quiet_time});
 
     const Quantities& q = view.quantities;
     if (!counts_) counts_ = JunctionCounts::find(q, n);
@@ -172,7 +303,11 @@ void Precursors::begin(const RunView& view) {
         view.log.warn("precursors: no effect publishes 'normal_load'; F_N of the events is NaN");
 
     slip_.resize(n);
-    ruptured_.resize(n);
+    rate_.resize(n);
+    rupturing_.resize(n);
+    fast_.resize(n);
+    broke_at_ = Eigen::ArrayXd::Constant(n, nan);
+    intact_at_ = Eigen::ArrayXd::Constant(n, nan);
     contact_ = BlockMask::Constant(n, true);
     const TableFormat format = params_.format;
     const auto& out = view.output_directory;
@@ -184,36 +319,70 @@ void Precursors::begin(const RunView& view) {
     if (!view.resuming) write_summary(view, false);
 }
 
-void Precursors::classify(const RunView& view, bool rearm) {
+void Precursors::classify(const RunView& view, bool record) {
     for (std::size_t i = 0; i < interface_.size(); ++i) {
         const Index node = interface_[i];
         slip_(static_cast<Index>(i)) = view.state.x(node) - view.body.x0()(node);
     }
-    if (params_.criterion == Criterion::pinned_fraction)
-        ruptured_by_pinned_fraction(*counts_->pinned, *counts_->sliding, *counts_->dislocated,
-                                    params_.ruptured_fraction, ruptured_);
-    else if (rearm)
-        slip_criterion_->apply(view.state.t, slip_, ruptured_);
-    else
-        slip_criterion_->peek(slip_, ruptured_);
+    switch (params_.criterion) {
+        case Criterion::pinned_fraction:
+            ruptured_by_pinned_fraction(*counts_->pinned, *counts_->sliding, *counts_->dislocated,
+                                        params_.ruptured_fraction, rupturing_);
+            break;
+        case Criterion::slipping:
+            ruptured_by_slipping(*slipping_, rupturing_);
+            break;
+        default:
+            rupturing_.setConstant(true);
+    }
     observe_contact(view);
+    // When each contact broke: a rupture's front passed it then (no contact measure: unknown).
+    const double t = view.state.t;
+    const bool measured = params_.criterion != Criterion::slip_rate;
+    for (Index i = 0; i < rupturing_.size(); ++i) {
+        if (!(measured && rupturing_(i) && contact_(i)))
+            broke_at_(i) = nan;
+        else if (std::isnan(broke_at_(i)))
+            broke_at_(i) = t, intact_at_(i) = std::isnan(last_observed_) ? t : last_observed_;
+    }
+    last_observed_ = t;
+    slip_rate_.rate(t, slip_, rate_);
+    fast_ = rate_ > params_.quiet_speed;
+    rupturing_ = rupturing_ && fast_;
+    if (record) slip_rate_.record(t, slip_);
 }
 
 void Precursors::observe_between(const RunView& view) {
     if (!detector_ || (!params_.stage.empty() && view.stage.name != params_.stage)) return;
     classify(view, false);
-    detector_->observe_between(view.state.t, ruptured_, contact_, slip_);
+    detector_->observe_between(view.state.t, {rupturing_, contact_, fast_, slip_, broke_at_, intact_at_});
 }
 
 void Precursors::observe(const RunView& view) {
     if (!detector_ || (!params_.stage.empty() && view.stage.name != params_.stage)) return;
+    if (min_slip_follows_law_ && law_slip_scale_ && std::isfinite(*law_slip_scale_)) {
+        // The law's scale is known once loads act: the first observation of the stage fixes it.
+        characteristic_slip_ = *law_slip_scale_;
+        params_.min_slip = min_slip_in_characteristic * characteristic_slip_;
+        detector_->set_slip_scales(params_.min_slip, characteristic_slip_);
+        min_slip_follows_law_ = false;
+    }
     classify(view, true);
     const double f_s = driving_force_ ? *driving_force_ : nan;
     const double f_n = normal_load_ ? *normal_load_ : nan;
-    if (auto ended = detector_->observe(view.state.t, ruptured_, contact_, slip_, f_s, f_n)) {
-        write(*ended);
-        write_summary(view, false);
+    detector_->observe(view.state.t, {rupturing_, contact_, fast_, slip_, broke_at_, intact_at_}, f_s, f_n);
+    if (params_.check) drops_.observe(view.state.t, f_s / f_n);
+    report_ended(view);
+}
+
+void Precursors::report_ended(const RunView& view) {
+    bool any = false;
+    while (auto e = detector_->next_reported()) {
+        write(*e);
+        checked_.push_back({e->index, e->global, e->finished, e->t_start, e->force_ratio(), e->extent, e->slip_extent});
+        any = true;
     }
+    if (any) write_summary(view, false);
 }
 
 void Precursors::observe_contact(const RunView& view) {
@@ -228,8 +397,18 @@ void Precursors::observe_contact(const RunView& view) {
 
 void Precursors::end(const RunView& view) {
     if (!detector_) return;  // the run failed before its first stage: nothing to write
-    while (auto e = detector_->close()) write(*e);
+    detector_->close();
+    report_ended(view);
     write_summary(view, true);
+    const EventCheck c = check();
+    if (!params_.check || c.agree()) return;
+    std::string problems;
+    for (const auto& p : c.problems) problems += "\n  " + p;
+    view.log.warn(
+        "precursors: the rupture events disagree with the loading curve or the slip field ({} of {}; "
+        "{}):{}",
+        c.problems.size() == 1 ? "one problem" : fmt::format("{} problems", c.problems.size()), params_.summary_file,
+        "theory.md §5a says what each check means", problems);
 }
 
 void Precursors::write(const RuptureEvent& e) {
@@ -254,45 +433,93 @@ void Precursors::write(const RuptureEvent& e) {
                  e.max_slip,
                  double(e.out_of_contact),
                  e.front_speed_error,
-                 e.crossing_speed_error});
+                 e.crossing_speed_error,
+                 e.slip_extent});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
+        if (!e.in_extent(i) && static_cast<int>(i) != e.nucleation) continue;
         const double t = e.first_rupture[i];
-        if (std::isnan(t)) continue;
         const double xi = x(static_cast<Index>(i));
         fronts_->row(
             {double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start, t - e.sampled_before[i]});
     }
 }
 
-std::string Precursors::summary_text(const RuptureSummary& s, const ContactChanges& contact, const RunInfo& info,
-                                     bool run_ended) {
+EventCheck Precursors::check() const {
+    if (!params_.check) return {};
+    EventCheckOptions o;
+    o.match_tolerance = params_.match_tolerance;
+    o.kinetic_coefficient = kinetic_coefficient_;
+    o.spacing = detector_->interface().spacing;
+    return check_events(drops_.falls(), checked_, o);
+}
+
+std::string Precursors::summary_text(const RunView& view, const EventCheck& c, bool run_ended) const {
+    const RuptureSummary& s = detector_->summary();
+    const double t0 = view.info.loading_start;
     std::string out;
     auto line = [&](std::string_view key, const std::string& value) { out += fmt::format("{}: {}\n", key, value); };
-    out += "# Rupture events (theory.md B.19, B.20). Numbers in SI units; null: not (yet) observed.\n";
+    out +=
+        "# Rupture events (theory.md §5a, B.20). Numbers in SI units; times on the run's clock, or since\n"
+        "# loading started where the key says so; null: not (yet) observed.\n";
     line("run_ended", run_ended ? "true" : "false");
-    line("events", std::to_string(s.events));
+    line("event_count", std::to_string(s.events));
     line("global_slip_seen", s.global_seen ? "true" : "false");
-    line("precursors_before_first_global_slip", std::to_string(s.precursors_before_global));
-    line("first_global_slip_time", yaml_number(s.global_time));
-    line("first_global_slip_driving_force", yaml_number(s.global_driving_force));
-    line("first_global_slip_normal_load", yaml_number(s.global_normal_load));
-    line("global_static_coefficient", yaml_number(s.global_seen ? s.global_static_coefficient() : nan));
+    line("precursor_count", s.global_seen ? std::to_string(s.precursors_before_global) : "null");
+    line("global_slip_time", yaml_number(s.global_time));
+    line("global_slip_time_since_loading", yaml_number(s.global_time - t0));
+    line("global_slip_driving_force", yaml_number(s.global_driving_force));
+    line("global_slip_normal_load", yaml_number(s.global_normal_load));
+    line("global_slip_force_ratio", yaml_number(s.global_seen ? s.global_force_ratio() : nan));
     line("peak_driving_force", yaml_number(s.peak_driving_force));
     line("peak_driving_force_time", yaml_number(s.peak_time));
-    line("lift_offs", std::to_string(contact.lift_offs()));
-    line("re_contacts", std::to_string(contact.re_contacts()));
-    line("blocks_out_of_contact", std::to_string(contact.out_of_contact()));
+    line("peak_driving_force_time_since_loading", yaml_number(s.peak_time - t0));
+    line("events_too_small", std::to_string(s.too_small));
+    line("lift_offs", std::to_string(contact_changes_.lift_offs()));
+    line("re_contacts", std::to_string(contact_changes_.re_contacts()));
+    line("blocks_out_of_contact", std::to_string(contact_changes_.out_of_contact()));
+    // What decided the events, every auto resolved: enough to run the detector again by hand.
+    const auto& o = detector_->options();
+    const char* criteria[] = {"auto", "pinned_fraction", "slipping", "slip_rate"};
+    out += fmt::format(
+        "settings: {{criterion: {}, ruptured_fraction: {}, quiet_speed: {}, rate_window: {}, quiet_time: {}, "
+        "min_slip: {}, characteristic_slip: {}, kinetic_coefficient: {}, global_span: {}, nucleation_load: {}, "
+        "drop_threshold: {}, match_tolerance: {}}}\n",
+        criteria[static_cast<int>(params_.criterion)], yaml_number(params_.ruptured_fraction),
+        yaml_number(params_.quiet_speed), yaml_number(params_.rate_window), yaml_number(o.quiet_time),
+        yaml_number(o.min_slip), yaml_number(o.characteristic_slip), yaml_number(kinetic_coefficient_),
+        yaml_number(o.global_span), yaml_number(o.nucleation_load), yaml_number(params_.drop_threshold),
+        yaml_number(params_.match_tolerance));
+    out +=
+        "# The events checked (theory.md §5a): global slips against the falls of F_S/F_N (drop: by at least\n"
+        "# drop_threshold, which a global slip must match), precursors against the slip field.\n"
+        "# verdict: agree, or disagree with the problems listed.\n";
+    out += "event_check:\n";
+    out += fmt::format("  verdict: {}\n", !params_.check ? "not_checked" : c.agree() ? "agree" : "disagree");
+    const auto& falls = drops_.falls();
+    out += "  falls:";
+    if (falls.empty()) out += " []";
+    out += "\n";
+    for (std::size_t d = 0; d < falls.size(); ++d)
+        out += fmt::format(
+            "    - {{peak_time_since_loading: {}, peak_force_ratio: {}, trough_force_ratio: {}, drop: {}, ended: {}, "
+            "global_slip_event: {}}}\n",
+            yaml_number(falls[d].peak_time - t0), yaml_number(falls[d].peak_ratio), yaml_number(falls[d].trough_ratio),
+            falls[d].major ? "true" : "false", falls[d].ended ? "true" : "false",
+            c.drop_event[d] >= 0 ? std::to_string(c.drop_event[d]) : "null");
+    out += "  problems:";
+    if (c.problems.empty()) out += " []";
+    out += "\n";
+    for (const auto& p : c.problems) out += fmt::format("    - \"{}\"\n", p);
     out += "run:\n";
-    out += Provenance::of(info).yaml(2);
+    out += Provenance::of(view.info).yaml(2);
     return out;
 }
 
 void Precursors::write_summary(const RunView& view, bool run_ended) const {
     // A reader (or a run killed mid-write) never sees half a summary.
-    write_file_atomically(view.output_directory / params_.summary_file,
-                          summary_text(detector_->summary(), contact_changes_, view.info, run_ended));
+    write_file_atomically(view.output_directory / params_.summary_file, summary_text(view, check(), run_ended));
 }
 
 }  // namespace frictionlab

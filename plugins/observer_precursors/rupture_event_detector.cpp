@@ -1,6 +1,7 @@
 #include "rupture_event_detector.hpp"
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
 
 namespace frictionlab {
@@ -9,159 +10,272 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 }
 
-RuptureEventDetector::RuptureEventDetector(Interface interface, double quiet_time, Options options)
-    : interface_(std::move(interface)), quiet_time_(quiet_time), options_(options) {
-    reported_.reserve(3);
+RuptureEventDetector::RuptureEventDetector(Interface interface, Options options)
+    : interface_(std::move(interface)), options_(options) {
+    const auto n = static_cast<std::size_t>(interface_.x.size());
+    owner_.assign(n, -1);
+    last_rupture_.assign(n, -std::numeric_limits<double>::infinity());
 }
 
-std::optional<RuptureEvent> RuptureEventDetector::observe(double t, const RuptureMask& ruptured_flags,
-                                                          const BlockMask& contact, const Eigen::ArrayXd& slip,
-                                                          double driving_force, double normal_load) {
-    if (t <= last_t_) return std::nullopt;
+void RuptureEventDetector::set_slip_scales(double min_slip, double characteristic_slip) {
+    options_.min_slip = min_slip;
+    options_.characteristic_slip = characteristic_slip;
+}
+
+void RuptureEventDetector::observe(double t, const InterfaceObservation& now, double driving_force,
+                                   double normal_load) {
+    if (t <= last_t_) return;
     const double before = std::isinf(last_sampled_t_) ? t : last_sampled_t_;
-    ruptured_ = ruptured_flags && contact;
-    const RuptureMask& ruptured = ruptured_;
-    if (previous_slip_.size() != slip.size()) previous_slip_ = slip;  // the first observation
+    if (previous_slip_.size() != now.slip.size()) previous_slip_ = sampled_slip_ = now.slip;  // the first observation
     last_t_ = last_sampled_t_ = t;
+    driving_force_ = driving_force;
     if (std::isfinite(driving_force) && !(driving_force <= summary_.peak_driving_force)) {
         summary_.peak_driving_force = driving_force;
         summary_.peak_time = t;
     }
-
-    // Slack against rounding of observation times that are sums of a cadence.
-    const bool quiet_long_enough = open_ && t - last_ruptured_t_ >= quiet_time_ * (1 - 1e-9);
-    if (ruptured.any()) {
-        if (quiet_long_enough) settle(finish(true));  // the observations were sparser than quiet_time
-        if (!open_) start(t, ruptured, slip, driving_force, normal_load);
-        record(ruptured, t, before);
-    } else if (quiet_long_enough) {
-        settle(finish(true));
-    }
-    if (open_) follow(contact, slip);
-    // The held event can no longer be a nucleation once its window has passed with no event
-    // started within it. At most one report per observation: a second waits for the next one.
-    // The same slack as for quiet_time, the other way: "more than" must not hinge on rounding.
-    const bool window_passed = held_ && t - held_->t_end > options_.nucleation_window * (1 + 1e-9);
-    const bool open_in_window = open_ && held_ && open_->t_start - held_->t_end <= options_.nucleation_window;
-    if (window_passed && !open_in_window && reported_.empty()) {
-        report(std::move(*held_));
-        held_.reset();
-    }
-    previous_slip_ = slip;
-    return take_reported();
+    // The loads of the last `lookback`, and the one before it, to interpolate a backdated start.
+    std::size_t old = 0;
+    while (old + 1 < loads_.size() && t - loads_[old + 1][0] > options_.lookback) ++old;
+    loads_.erase(loads_.begin(), loads_.begin() + static_cast<std::ptrdiff_t>(old));
+    loads_.push_back({t, driving_force, normal_load});
+    // An ended event whose F_S window F_S has left (up past it, or down in a slip) nucleates nothing,
+    // unless a rupture that started within it is still open.
+    for (Ended& e : ended_)
+        if (e.nucleating && !within_nucleation_window(e.event, driving_force))
+            e.nucleating =
+                std::any_of(open_.begin(), open_.end(), [&](const Open& o) { return may_follow(e.event, o.event); });
+    end_quiet(t, false);  // before joining: a block rupturing now must not reopen an ended event
+    join(t, before, now, true);
+    follow(now);
+    previous_slip_ = now.slip;
 }
 
-void RuptureEventDetector::observe_between(double t, const RuptureMask& ruptured_flags, const BlockMask& contact,
-                                           const Eigen::ArrayXd& slip) {
-    if (!open_ || t <= last_sampled_t_) return;
+void RuptureEventDetector::observe_between(double t, const InterfaceObservation& now) {
+    if (open_.empty() || t <= last_sampled_t_) return;
     const double before = last_sampled_t_;
     last_sampled_t_ = t;
-    ruptured_ = ruptured_flags && contact;
-    if (ruptured_.any()) record(ruptured_, t, before);
-    follow(contact, slip);
+    join(t, before, now, false);
+    follow(now);
 }
 
-void RuptureEventDetector::record(const RuptureMask& ruptured, double t, double before) {
-    RuptureEvent& e = *open_;
-    for (Index i = 0; i < ruptured.size(); ++i)
-        if (ruptured(i) && std::isnan(e.first_rupture[i])) e.first_rupture[i] = t, e.sampled_before[i] = before;
-    e.t_end = last_ruptured_t_ = t;
-}
-
-void RuptureEventDetector::follow(const BlockMask& contact, const Eigen::ArrayXd& slip) {
-    for (Index i = 0; i < contact.size(); ++i) open_->in_contact[i] |= contact(i);
-    open_->max_slip = std::max(open_->max_slip, (slip - base_slip_).maxCoeff());
-    if (held_) open_slip_since_held_ = std::max(open_slip_since_held_, (slip - held_base_slip_).maxCoeff());
-}
-
-std::optional<RuptureEvent> RuptureEventDetector::close() {
-    if (open_) settle(finish(false));
-    if (held_) {
-        report(std::move(*held_));
-        held_.reset();
-    }
-    return take_reported();
-}
-
-std::optional<RuptureEvent> RuptureEventDetector::take_reported() {
-    if (reported_.empty()) return std::nullopt;
-    RuptureEvent e = std::move(reported_.front());
-    reported_.erase(reported_.begin());
-    return e;
-}
-
-void RuptureEventDetector::start(double t, const RuptureMask& ruptured, const Eigen::ArrayXd& slip,
-                                 double driving_force, double normal_load) {
-    RuptureEvent e;
-    e.index = next_index_++;
-    e.t_start = e.t_end = t;
-    e.driving_force = driving_force;
-    e.normal_load = normal_load;
-    e.first_rupture.assign(static_cast<std::size_t>(ruptured.size()), nan);
-    e.sampled_before.assign(static_cast<std::size_t>(ruptured.size()), nan);
-    e.in_contact.assign(static_cast<std::size_t>(ruptured.size()), 0);
-    double most = -std::numeric_limits<double>::infinity();
-    for (Index i = 0; i < ruptured.size(); ++i) {
-        const double increment = slip(i) - previous_slip_(i);
-        if (ruptured(i) && increment > most) most = increment, e.nucleation = static_cast<int>(i);
-    }
-    base_slip_ = previous_slip_;
-    open_slip_since_held_ = 0;
-    open_ = std::move(e);
-}
-
-RuptureEvent RuptureEventDetector::finish(bool finished) {
-    RuptureEvent e = std::move(*open_);
-    open_.reset();
-    e.finished = finished;
-    measure(e);
-    return e;
-}
-
-bool RuptureEventDetector::is_nucleation_of(const RuptureEvent& held, const RuptureEvent& later) const {
-    if (held.global || later.ruptured_blocks <= held.ruptured_blocks ||
-        later.t_start - held.t_end > options_.nucleation_window)
-        return false;
-    // The same nucleation site, not merely a block the held event reached: a rupture that restarts
-    // at the arrest front of a precursor is a new rupture.
-    return std::abs(held.nucleation - later.nucleation) <= 1;
-}
-
-void RuptureEventDetector::settle(RuptureEvent e) {
-    if (options_.nucleation_window <= 0) return report(std::move(e));
-    if (held_ && is_nucleation_of(*held_, e)) {
-        RuptureEvent merged = std::move(*held_);
-        held_.reset();
-        for (std::size_t i = 0; i < merged.first_rupture.size(); ++i) {
-            if (std::isnan(merged.first_rupture[i]))
-                merged.first_rupture[i] = e.first_rupture[i], merged.sampled_before[i] = e.sampled_before[i];
-            merged.in_contact[i] |= e.in_contact[i];
+std::pair<double, double> RuptureEventDetector::loads_at(double t) const {
+    const auto& l = loads_;
+    if (l.empty()) return {nan, nan};
+    if (t <= l.front()[0]) return {l.front()[1], l.front()[2]};
+    for (std::size_t k = 1; k < l.size(); ++k)
+        if (t <= l[k][0]) {
+            const double w = (t - l[k - 1][0]) / (l[k][0] - l[k - 1][0]);
+            return {l[k - 1][1] + w * (l[k][1] - l[k - 1][1]), l[k - 1][2] + w * (l[k][2] - l[k - 1][2])};
         }
-        merged.t_end = e.t_end;
-        merged.finished = e.finished;
-        merged.max_slip = std::max(merged.max_slip, open_slip_since_held_);
-        measure(merged);
-        return report(std::move(merged));
-    }
-    if (held_) report(std::move(*held_));
-    held_ = std::move(e);
-    held_base_slip_ = base_slip_;
+    return {l.back()[1], l.back()[2]};
 }
 
-void RuptureEventDetector::report(RuptureEvent e) {
-    e.index = reported_count_++;
-    summary_.events += 1;
-    if (!summary_.global_seen) {
-        if (e.global) {
-            summary_.global_seen = true;
-            summary_.global_driving_force = e.driving_force;
-            summary_.global_normal_load = e.normal_load;
-            summary_.global_time = e.t_start;
+void RuptureEventDetector::join(double t, double before, const InterfaceObservation& now, bool may_start) {
+    const RuptureMask rupturing = now.rupturing && now.contact;
+    const Eigen::ArrayXd& slip = now.slip;
+    const Index n = rupturing.size();
+    // Slack against rounding of observation times that are sums of a cadence.
+    const double reach = t - options_.quiet_time * (1 + 1e-9);
+    for (Index i = 0; i < n; ++i) {
+        if (!rupturing(i)) continue;
+        // The events of this block and its neighbours that it still reaches.
+        Open* into = nullptr;
+        for (Index j = std::max<Index>(0, i - 1); j <= std::min(n - 1, i + 1); ++j) {
+            const auto k = static_cast<std::size_t>(j);
+            if (owner_[k] < 0 || last_rupture_[k] < reach) continue;
+            Open* e = find(owner_[k]);
+            if (!e || e == into) continue;
+            if (!into) {
+                into = e;
+            } else {
+                if (e->event.t_start < into->event.t_start) std::swap(e, into);
+                merge(*into, *e);
+                const int kept = into->id, gone = e->id;
+                open_.erase(open_.begin() + (e - open_.data()));
+                into = find(kept);  // the erase moved it
+                for (int& o : owner_)
+                    if (o == gone) o = kept;
+            }
+        }
+        if (!into) {
+            if (!may_start) continue;
+            into = &start(i);
+        }
+        RuptureEvent& e = into->event;
+        const auto k = static_cast<std::size_t>(i);
+        if (std::isnan(e.first_rupture[k])) {
+            // When its contact broke, if that was within lookback; else now.
+            const bool broke_lately = now.broke_at(i) >= t - options_.lookback * (1 + 1e-9);
+            e.first_rupture[k] = broke_lately ? now.broke_at(i) : t;
+            e.sampled_before[k] = broke_lately ? now.intact_at(i) : before;
+            const auto n_k = static_cast<std::size_t>(e.nucleation);
+            const double most = slip(e.nucleation) - previous_slip_(e.nucleation);
+            const bool earlier = e.first_rupture[k] < e.first_rupture[n_k];
+            const bool as_early = e.first_rupture[k] == e.first_rupture[n_k];
+            // Ties: the one that slipped most (more than by rounding), then the one nearest the trailing edge.
+            if (std::isnan(e.first_rupture[n_k]) || earlier ||
+                (as_early && slip(i) - previous_slip_(i) > most + 1e-9 * std::abs(most)))
+                e.nucleation = static_cast<int>(i);
+            if (e.first_rupture[k] < e.t_start || std::isnan(e.t_start)) {
+                e.t_start = e.first_rupture[k];
+                std::tie(e.driving_force, e.normal_load) = loads_at(e.t_start);
+            }
+        }
+        e.t_end = into->last_rupture = t;
+        owner_[k] = into->id;
+        last_rupture_[k] = t;
+    }
+}
+
+RuptureEventDetector::Open& RuptureEventDetector::start(Index block) {
+    Open o;
+    o.id = next_id_++;
+    RuptureEvent& e = o.event;
+    e.t_start = e.t_end = nan;  // set by its first rupture
+    e.nucleation = static_cast<int>(block);
+    const auto n = static_cast<std::size_t>(interface_.x.size());
+    e.first_rupture.assign(n, nan);
+    e.sampled_before.assign(n, nan);
+    e.in_contact.assign(n, 0);
+    o.base_slip = previous_slip_;
+    o.fast_slip = Eigen::ArrayXd::Zero(previous_slip_.size());
+    open_.push_back(std::move(o));
+    return open_.back();
+}
+
+void RuptureEventDetector::merge(Open& into, Open& from) {
+    RuptureEvent &a = into.event, &b = from.event;
+    for (std::size_t k = 0; k < a.first_rupture.size(); ++k) {
+        if (std::isnan(a.first_rupture[k]) || b.first_rupture[k] < a.first_rupture[k])
+            if (!std::isnan(b.first_rupture[k]))
+                a.first_rupture[k] = b.first_rupture[k], a.sampled_before[k] = b.sampled_before[k];
+        a.in_contact[k] |= b.in_contact[k];
+    }
+    a.t_end = std::max(a.t_end, b.t_end);
+    // Slip counts from the earlier start; a block's slip since then is at least its slip since the later one.
+    a.max_slip = std::max(a.max_slip, b.max_slip);
+    into.fast_slip = into.fast_slip.max(from.fast_slip);
+    into.last_rupture = std::max(into.last_rupture, from.last_rupture);
+}
+
+RuptureEventDetector::Open* RuptureEventDetector::find(int id) {
+    for (Open& o : open_)
+        if (o.id == id) return &o;
+    return nullptr;
+}
+
+void RuptureEventDetector::follow(const InterfaceObservation& now) {
+    const Eigen::ArrayXd& slip = now.slip;
+    for (Open& o : open_) {
+        RuptureEvent& e = o.event;
+        // Its slip while it ruptures: what follows its last rupture belongs to the tail or the next event.
+        if (o.last_rupture == last_sampled_t_) o.fast_slip += now.fast.select(slip - sampled_slip_, 0.0);
+        for (std::size_t k = 0; k < e.first_rupture.size(); ++k) {
+            const auto i = static_cast<Index>(k);
+            e.in_contact[k] |= now.contact(i);
+            if (!std::isnan(e.first_rupture[k])) e.max_slip = std::max(e.max_slip, slip(i) - o.base_slip(i));
+        }
+    }
+    sampled_slip_ = slip;
+}
+
+void RuptureEventDetector::end_quiet(double t, bool all) {
+    const double reach = t - options_.quiet_time * (1 + 1e-9);
+    for (std::size_t k = 0; k < open_.size();) {
+        if (all || open_[k].last_rupture < reach) {
+            finish(open_[k], !all);
+            open_.erase(open_.begin() + static_cast<std::ptrdiff_t>(k));
         } else {
-            summary_.precursors_before_global += 1;
+            ++k;
         }
     }
-    reported_.push_back(std::move(e));
+}
+
+void RuptureEventDetector::close() {
+    end_quiet(last_t_, true);
+    for (Ended& e : ended_) e.nucleating = false;  // no rupture will follow them now
+}
+
+void RuptureEventDetector::finish(Open& o, bool finished) {
+    RuptureEvent e = std::move(o.event);
+    e.finished = finished;
+    const Eigen::ArrayXd slip = sampled_slip_ - o.base_slip;
+    e.block_slip.assign(slip.begin(), slip.end());
+    e.min_slip = options_.min_slip;
+    bool significant = false;
+    for (std::size_t k = 0; k < e.block_slip.size(); ++k) significant = significant || e.in_extent(k);
+    if (!significant) {
+        summary_.too_small += 1;
+        return;
+    }
+    measure(e);
+    measure_slip(e, o.id, o.fast_slip);
+    // Ended events that were this one's nucleation join it: its start becomes theirs.
+    bool merged = false;
+    for (std::size_t k = 0; k < ended_.size();) {
+        if (!is_nucleation_of(ended_[k], e, true)) {
+            ++k;
+            continue;
+        }
+        const RuptureEvent& n = ended_[k].event;
+        for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
+            if (!std::isnan(n.first_rupture[i]) && !(n.first_rupture[i] >= e.first_rupture[i]))
+                e.first_rupture[i] = n.first_rupture[i], e.sampled_before[i] = n.sampled_before[i];
+            e.in_contact[i] |= n.in_contact[i];
+            e.block_slip[i] = std::max(e.block_slip[i], n.block_slip[i]);
+        }
+        e.t_start = n.t_start, e.driving_force = n.driving_force, e.normal_load = n.normal_load;
+        e.nucleation = n.nucleation;
+        e.max_slip = std::max(e.max_slip, n.max_slip);
+        ended_.erase(ended_.begin() + static_cast<std::ptrdiff_t>(k));
+        merged = true;
+        k = 0;
+    }
+    if (merged) measure(e);  // from the nucleation block, with its first ruptures
+    const bool nucleating = !e.global && options_.nucleation_load > 0 && within_nucleation_window(e, driving_force_);
+    ended_.push_back({std::move(e), nucleating});
+}
+
+bool RuptureEventDetector::within_nucleation_window(const RuptureEvent& e, double driving_force) const {
+    return std::abs(driving_force - e.driving_force) <= options_.nucleation_load * e.normal_load;
+}
+
+bool RuptureEventDetector::may_follow(const RuptureEvent& held, const RuptureEvent& open) const {
+    return open.t_start > held.t_end && std::abs(held.nucleation - open.nucleation) <= 1 &&
+           within_nucleation_window(held, open.driving_force);
+}
+
+bool RuptureEventDetector::is_nucleation_of(const Ended& held, const RuptureEvent& later, bool later_ended) const {
+    // An open event may still grow past the held one; an ended one must have.
+    return held.nucleating && may_follow(held.event, later) &&
+           (!later_ended || later.ruptured_blocks > held.event.ruptured_blocks);
+}
+
+std::optional<RuptureEvent> RuptureEventDetector::next_reported() {
+    if (ended_.empty()) return std::nullopt;
+    const auto earliest = std::min_element(
+        ended_.begin(), ended_.end(), [](const auto& a, const auto& b) { return a.event.t_start < b.event.t_start; });
+    for (const Open& o : open_)
+        if (o.event.t_start < earliest->event.t_start) return std::nullopt;
+    if (earliest->nucleating) return std::nullopt;
+    RuptureEvent e = std::move(earliest->event);
+    ended_.erase(earliest);
+    e.index = reported_count_++;
+    count(e);
+    return e;
+}
+
+void RuptureEventDetector::count(const RuptureEvent& e) {
+    summary_.events += 1;
+    if (summary_.global_seen) return;
+    if (e.global) {
+        summary_.global_seen = true;
+        summary_.global_driving_force = e.driving_force;
+        summary_.global_normal_load = e.normal_load;
+        summary_.global_time = e.t_start;
+    } else {
+        summary_.precursors_before_global += 1;
+    }
 }
 
 template <class Flagged>
@@ -176,6 +290,24 @@ double RuptureEventDetector::span(const Flagged& flagged) const {
            std::max(0.0, first - 0.5 * interface_.spacing);
 }
 
+void RuptureEventDetector::measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip) const {
+    const Eigen::ArrayXd& x = interface_.x;
+    Index tip = 0;
+    for (Index i = 0; i < x.size(); ++i)
+        if (e.in_extent(static_cast<std::size_t>(i))) tip = i;
+    // Without the law's scale, half the event's largest fast slip stands for "more than elastic".
+    const double slipped =
+        std::isnan(options_.characteristic_slip) ? 0.5 * fast_slip.maxCoeff() : options_.characteristic_slip;
+    // Beyond its tip, until a block that ruptured in another event meanwhile: that slip is the other's.
+    const auto others = [&](Index j) {
+        const auto k = static_cast<std::size_t>(j);
+        return owner_[k] != id && last_rupture_[k] >= e.t_start;
+    };
+    Index last = tip;
+    while (last + 1 < x.size() && fast_slip(last + 1) > slipped && !others(last + 1)) ++last;
+    e.slip_extent = std::min(interface_.length, x(last) + 0.5 * interface_.spacing);
+}
+
 void RuptureEventDetector::measure(RuptureEvent& e) const {
     const Eigen::ArrayXd& x = interface_.x;
     const double x_nucleation = x(e.nucleation);
@@ -185,9 +317,8 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.ruptured_blocks = 0;
     double farthest = 0, delay = nan;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
-        const double t = e.first_rupture[i];
-        if (std::isnan(t)) continue;
-        const double xi = x(static_cast<Index>(i));
+        if (!e.in_extent(i)) continue;
+        const double t = e.first_rupture[i], xi = x(static_cast<Index>(i));
         e.ruptured_blocks += 1;
         e.min_x = std::min(e.min_x, xi);
         e.max_x = std::max(e.max_x, xi);
@@ -195,10 +326,10 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
         if (distance > farthest || (distance == farthest && distance > 0 && t - e.t_start < delay))
             farthest = distance, delay = t - e.t_start;
     }
-    const auto ruptured = [&](std::size_t i) { return !std::isnan(e.first_rupture[i]); };
+    const auto in_extent = [&](std::size_t i) { return e.in_extent(i); };
     const auto in_contact = [&](std::size_t i) { return e.in_contact[i] != 0; };
     e.out_of_contact = static_cast<int>(std::count(e.in_contact.begin(), e.in_contact.end(), 0));
-    e.global = e.ruptured_blocks > 0 && span(ruptured) >= options_.global_span * span(in_contact) * (1 - 1e-12);
+    e.global = e.ruptured_blocks > 0 && span(in_extent) >= options_.global_span * span(in_contact) * (1 - 1e-12);
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
     // A first rupture within (sampled_before, first_rupture], uniformly: its variance.
@@ -210,7 +341,7 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.front_speed_error = nan;
     if (!std::isnan(e.front_speed))
         for (std::size_t i = 0; i < e.first_rupture.size(); ++i)
-            if (std::abs(x(static_cast<Index>(i)) - x_nucleation) == farthest &&
+            if (e.in_extent(i) && std::abs(x(static_cast<Index>(i)) - x_nucleation) == farthest &&
                 e.first_rupture[i] - e.t_start == delay)
                 e.front_speed_error =
                     e.front_speed * std::sqrt(variance(i) + variance(static_cast<std::size_t>(e.nucleation))) / delay;
@@ -220,7 +351,7 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     const auto far_half = [&](auto visit) {
         for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
             const double d = std::abs(x(static_cast<Index>(i)) - x_nucleation), t = e.first_rupture[i];
-            if (!std::isnan(t) && d >= 0.5 * farthest) visit(i, d, t);
+            if (e.in_extent(i) && d >= 0.5 * farthest) visit(i, d, t);
         }
     };
     double n = 0, d_mean = 0, t_mean = 0, quantisation = 0;

@@ -286,6 +286,7 @@ void VtkSeries::add_field_data(const RunView& view) {
     vtkFieldData* data = grid_->GetFieldData();
     when_.time = add_array<vtkDoubleArray>(data, "TIME", 1, 1);
     when_.time_value = add_array<vtkDoubleArray>(data, "TimeValue", 1, 1);
+    when_.time_since_loading = add_array<vtkDoubleArray>(data, "time_since_loading", 1, 1);
     when_.step = add_array<vtkTypeInt64Array>(data, "STEP", 1, 1);
     when_.stage = add_array<vtkStringArray>(data, "stage", 1, 1);
     when_.stage_index = add_array<vtkIntArray>(data, "stage_index", 1, 1);
@@ -326,12 +327,16 @@ void VtkSeries::update(const RunView& view) {
     }
     update_pinned_fraction();
     for (const auto& [value, array] : scalars_) set_single(array, *value);
-    // The time the .pvd lists, so that the series and a file opened alone agree to the digit.
-    const std::string listed = collection_time(s.t, view.step);
-    double t = s.t;
-    std::from_chars(listed.data(), listed.data() + listed.size(), t);
+    // The times the .pvd lists, so that the series and a file opened alone agree to the digit.
+    const auto listed = [](const std::string& text, double exact) {
+        std::from_chars(text.data(), text.data() + text.size(), exact);
+        return exact;
+    };
+    const double t = listed(collection_time(s.t, view.step), s.t);
     set_single(when_.time, t);
     set_single(when_.time_value, t);
+    const double since = s.t - view.info.loading_start;
+    set_single(when_.time_since_loading, listed(collection_time(since, s.t, view.step), since));
     set_single(when_.step, view.step);
     set_single(when_.stage, view.stage.name);
     set_single(when_.stage_index, view.stage.index);
@@ -363,23 +368,26 @@ void VtkSeries::write_snapshot(const RunView& view) {
         writer_->SetFileName(tmp.c_str());
         return writer_->Write() == 1;
     });
-    datasets_ += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
-                             collection_time(view.state.t, view.step), name);
+    const double t = view.state.t;
+    datasets_ +=
+        fmt::format("    <DataSet timestep=\"{}\" time_since_loading=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                    collection_time(t, view.step), collection_time(t - view.info.loading_start, t, view.step), name);
     ++snapshots_;
     write_collection(view.output_directory);
 }
 
-std::string VtkSeries::collection_time(double t, long long steps) {
-    if (steps <= 0 || t <= 0 || !std::isfinite(t)) return fmt::format("{}", t);  // shortest exact text
+std::string VtkSeries::collection_time(double value, double t, long long steps) {
+    if (steps <= 0 || t <= 0 || !std::isfinite(t) || !std::isfinite(value))
+        return fmt::format("{}", value);  // shortest exact text
     // Decimals that resolve a hundredth of the mean step; the value rounded to them, trailing zeros cut.
     const int decimals =
         std::clamp(2 - static_cast<int>(std::floor(std::log10(t / static_cast<double>(steps)))), 0, 17);
-    std::string text = fmt::format("{:.{}f}", t, decimals);
+    std::string text = fmt::format("{:.{}f}", value, decimals);
     if (text.find('.') != std::string::npos) {
         text.erase(text.find_last_not_of('0') + 1);
         if (text.back() == '.') text.pop_back();
     }
-    return text;
+    return text == "-0" ? "0" : text;  // a time since loading that rounds to its start
 }
 
 void VtkSeries::write_collection(const std::filesystem::path& output_directory) const {

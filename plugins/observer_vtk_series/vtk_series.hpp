@@ -62,12 +62,17 @@ namespace frictionlab {
 ///
 /// The .pvd lists each snapshot at its simulated time rounded to a hundredth of the mean step so far
 /// (0.408, not the 0.40800000000967207 a sum of two million steps gives); TIME and TimeValue in the
-/// file hold the same rounded time.
+/// file hold the same rounded time. That is the run's clock, from t = 0 with settling, as every plain
+/// `time` is: ParaView's time axis then runs forward over the whole run in the order the snapshots
+/// were taken, and a resumed run appends to it. The time since loading started, the figures'
+/// clock, is beside it: each DataSet's `time_since_loading` attribute in the .pvd (ParaView's reader
+/// passes over attributes it does not know) and the field array time_since_loading (negative while
+/// settling), both rounded as the .pvd's time.
 ///
 /// Field data: TIME (s), TimeValue (the same; VTK's readers take a file's time from this name when
-/// the .vtu files are opened without the .pvd), STEP, stage, stage_index, every published scalar
-/// (e.g. driving_force in N), the run's provenance as every output records it (output/provenance.hpp:
-/// framework, version, scene_file, scene_hash, seed, plugins) and units ("array: unit" for each point array).
+/// the .vtu files are opened without the .pvd), time_since_loading (s), STEP, stage, stage_index, every published
+/// scalar (e.g. driving_force in N), the run's provenance as every output records it (output/provenance.hpp: framework,
+/// version, scene_file, scene_hash, seed, plugins) and units ("array: unit" for each point array).
 ///
 /// In ParaView: File > Open <prefix>.pvd, Apply, colour by an array; the time controls step through
 /// the snapshots at their simulated times. In Python: vtk.vtkXMLUnstructuredGridReader per file.
@@ -107,7 +112,9 @@ public:
 
     /// The time a snapshot is listed at in the .pvd: `t` after `steps` steps, rounded to a hundredth
     /// of the mean step t/steps, as the shortest text (the sum of many steps drifts in the last digits).
-    static std::string collection_time(double t, long long steps);
+    static std::string collection_time(double t, long long steps) { return collection_time(t, t, steps); }
+    /// Another time of the snapshot (its time since loading started), rounded as `t` is.
+    static std::string collection_time(double value, double t, long long steps);
 
     /// The collection file, in the output directory.
     std::filesystem::path collection_file(const std::filesystem::path& output_directory) const;
@@ -124,7 +131,7 @@ private:
     };
     /// Field data that says when a snapshot is.
     struct When {
-        vtkDoubleArray *time = nullptr, *time_value = nullptr;
+        vtkDoubleArray *time = nullptr, *time_value = nullptr, *time_since_loading = nullptr;
         vtkTypeInt64Array* step = nullptr;
         vtkStringArray* stage = nullptr;
         vtkIntArray* stage_index = nullptr;

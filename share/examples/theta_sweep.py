@@ -30,12 +30,12 @@ def normal_load_index(scene):
 
 
 def precursor_count(run):
-    """Precursors before the first global slip (all events, if no global slip happened)."""
+    """Precursors before the first global slip; NaN in a run without one (the summary's
+    `precursor_count` is null there: there is no "before")."""
     with open(os.path.join(run.directory, "precursors_summary.yaml")) as f:
         summary = yaml.safe_load(f)
-    if summary["global_slip_seen"]:
-        return summary["precursors_before_first_global_slip"]
-    return summary["events"]
+    count = summary["precursor_count"]
+    return float("nan") if count is None else count
 
 
 def main(argv):

@@ -47,8 +47,10 @@ public:
     bool checkpointable() const override { return true; }
 
     void begin(const RunView& view) override {
+        // Every column's unit, and which hold integers: the table's sidecar records them.
+        const frictionlab::ColumnTypes types{{"step"}, {}, {{"time", "s"}, {"step", "1"}, {"max_speed", "m/s"}}};
         table_ = frictionlab::open_table(view.output_directory / params_.file_name, {"time", "step", "max_speed"},
-                                         view.info, params_.format, view.resuming);
+                                         types, view.info, params_.format, view.resuming);
     }
 
     void observe(const RunView& view) override {

@@ -98,7 +98,7 @@ TEST_F(Cli, RunWritesMetadataAndRefusesToOverwrite) {
     auto r = frictionlab("run -q " + scene("tiny_lattice.yaml"), dir_);
     ASSERT_EQ(r.code, 0) << r.output;
     const std::string meta = read_text(dir_ / "tiny_out" / "run.yaml");
-    for (const char* key : {"status: completed", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
+    for (const char* key : {"status: done", "version:", "scene_hash:", "seed: 7", "integrator_rk4", "steps: 1500"})
         EXPECT_NE(meta.find(key), std::string::npos) << key << "\n" << meta;
     EXPECT_FALSE(fs::exists(dir_ / "tiny_out" / "run.json")) << "run.yaml is the one record";
     const std::string curve = read_text(dir_ / "tiny_out" / "loading_curve.csv");
@@ -205,11 +205,20 @@ TEST_F(Cli, SetOverridesAreValidatedLikeTheFile) {
     EXPECT_NE(bad.output.find("integrator.dt"), std::string::npos) << bad.output;
 }
 
-TEST_F(Cli, CoulombsFormerKineticKeyIsAnsweredWithMuD) {
-    // Every law names its sliding coefficient mu_d; mu_k, Coulomb's former name, is as close to mu_s.
-    auto r = frictionlab("check " + scene("tiny_lattice.yaml") + " --set friction='{type: coulomb, mu_k: 0.17}'", dir_);
-    EXPECT_EQ(r.code, 2) << r.output;
-    EXPECT_NE(r.output.find("unknown key 'mu_k'; did you mean 'mu_d'?"), std::string::npos) << r.output;
+TEST_F(Cli, TheKineticCoefficientsOtherSymbolIsAnsweredWithMuDInEveryLaw) {
+    // Every law names its sliding coefficient mu_d; mu_k, the other symbol for it (and Coulomb's
+    // former key), is as close to mu_s by spelling: the answer must be mu_d, never mu_s.
+    for (const char* law : {"coulomb", "slip_weakening", "two_state_junctions", "three_state_junctions"}) {
+        auto r = frictionlab(
+            "check " + scene("tiny_lattice.yaml") + " --set friction='{type: " + law + ", mu_k: 0.17}'", dir_);
+        EXPECT_EQ(r.code, 2) << law << "\n" << r.output;
+        EXPECT_NE(r.output.find("unknown key 'mu_k'; did you mean 'mu_d'?"), std::string::npos) << law << "\n"
+                                                                                                << r.output;
+    }
+    // D_c: slip_weakening's critical_slip is rate_state's d_c, and the other way round.
+    auto d_c = frictionlab(
+        "check " + scene("tiny_lattice.yaml") + " --set friction='{type: slip_weakening, d_c: 1e-6}'", dir_);
+    EXPECT_NE(d_c.output.find("unknown key 'd_c'; did you mean 'critical_slip'?"), std::string::npos) << d_c.output;
 }
 
 TEST_F(Cli, APluginRefusingItsSetUpIsBadInputNotACrash) {

@@ -43,6 +43,30 @@ protected:
     fs::path dir_;
 };
 
+// The rupture detector's settings (theory.md §5a): each may be auto, which the observer derives from
+// the scene, or a number within its bounds; a time longer than the stage it observes makes no sense.
+TEST_F(HostileInput, RuptureDetectorSettingsThatMakeNoSenseAreRefusedAtTheirKey) {
+    const std::string headline = FRICTIONLAB_SOURCE_DIR "/configs/headline.yaml";
+    expect_refused(headline + " --set observers[1].quiet_time=0.5",
+                   "observers[1].quiet_time: 0.5 s is longer than stage 'load' (0.4 s): give at most 0.4 s, or auto");
+    expect_refused(headline + " --set observers[1].rate_window=1",
+                   "observers[1].rate_window: 1 s is longer than stage 'load' (0.4 s)");
+    expect_refused(headline + " --set observers[1].min_slip=0", "observers[1].min_slip: must be > 0, got 0, or auto");
+    expect_refused(headline + " --set observers[1].quiet_speed=-1e-3",
+                   "observers[1].quiet_speed: must be > 0, got -0.001, or auto");
+    expect_refused(headline + " --set observers[1].min_slip=fast",
+                   "observers[1].min_slip: expected a number or auto, got 'fast'");
+    const auto ok = frictionlab("check " + headline + " --set observers[1].min_slip=auto", dir_);
+    EXPECT_EQ(ok.code, 0) << ok.output;
+    EXPECT_NE(ok.output.find("observers[1].min_slip: auto is 2.442e-07 (a tenth of the law's characteristic slip "
+                             "2.442e-06 m)"),
+              std::string::npos)
+        << ok.output;
+    // What doc and example show of a key left auto.
+    const auto doc = frictionlab("example observer/precursors", dir_);
+    EXPECT_NE(doc.output.find("min_slip: auto"), std::string::npos) << doc.output;
+}
+
 TEST_F(HostileInput, OnlyARegularFileOfSensibleSizeIsReadAsAScene) {
     for (const char* device : {"/dev/zero", "/dev/urandom"}) {
         const auto r = frictionlab(std::string("check ") + device, dir_);
@@ -179,12 +203,13 @@ TEST_F(HostileInput, AnObserverReadingWhatNoEffectPublishesIsRefusedAtTheObserve
     expect_refused((dir_ / "precursors.yaml").string(),
                    "precursors.yaml:32:5: error: observers[1]: precursors reads the fields 'junctions_dislocated', "
                    "'junctions_pinned', 'junctions_sliding' over node set 'interface', which no effect of this scene "
-                   "publishes: set criterion: slip");
-    // By its default criterion, auto, it chooses slip here, and check says so.
+                   "publishes: set criterion: slip_rate");
+    // By its default criterion, auto, it chooses slip_rate here, and check says so.
     std::ofstream(dir_ / "auto_precursors.yaml") << read_text(tiny()) << "  - type: precursors\n    every: 2.0e-5\n";
     const auto chosen = frictionlab("check auto_precursors.yaml", dir_);
     EXPECT_EQ(chosen.code, 0) << chosen.output;
-    const std::string said = "observers[1].criterion: auto is slip (no effect of this scene publishes junction counts)";
+    const std::string said =
+        "observers[1].criterion: auto is slip_rate (the friction law publishes no contact measure)";
     EXPECT_NE(chosen.output.find(said), std::string::npos) << chosen.output;
 }
 

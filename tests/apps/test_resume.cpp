@@ -78,7 +78,7 @@ protected:
         }
         const YAML::Node record = YAML::LoadFile((dir_ / "out" / "run.yaml").string());
         const YAML::Node reference = YAML::LoadFile((reference_dir_ / "out" / "run.yaml").string());
-        EXPECT_EQ(record["status"].as<std::string>(), "completed");
+        EXPECT_EQ(record["status"].as<std::string>(), "done");
         EXPECT_EQ(record["steps"].as<long long>(), reference["steps"].as<long long>());
         EXPECT_EQ(record["evaluations"].as<long long>(), reference["evaluations"].as<long long>());
         EXPECT_EQ(record["simulated_time"].as<double>(), reference["simulated_time"].as<double>());

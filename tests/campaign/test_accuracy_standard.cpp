@@ -50,10 +50,11 @@ TEST(AccuracyStandard, AShiftOfManyStandardErrorsFailsAndNoShiftPasses) {
 }
 
 TEST(AccuracyStandard, AShiftWithinTheReferencesStepHalvingSpreadPasses) {
-    const auto reference = ensemble("first_precursor_time", 1.0, 0.01, 1);
-    const auto half_step = ensemble("first_precursor_time", 1.03, 0.01, 4);  // RK4 at dt/2 moves it by 0.03
-    const auto case_runs = ensemble("first_precursor_time", 1.02, 0.01, 2);
-    const std::size_t i = index_of("first_precursor_time");
+    const auto reference = ensemble("first_precursor_time_since_loading", 1.0, 0.01, 1);
+    const auto half_step =
+        ensemble("first_precursor_time_since_loading", 1.03, 0.01, 4);  // RK4 at dt/2 moves it by 0.03
+    const auto case_runs = ensemble("first_precursor_time_since_loading", 1.02, 0.01, 2);
+    const std::size_t i = index_of("first_precursor_time_since_loading");
     const auto without = judge_ensemble(case_runs, reference, nullptr, 9);
     EXPECT_EQ(without.statistics[i].verdict, Verdict::fail);
     const auto with = judge_ensemble(case_runs, reference, &half_step, 9);

@@ -46,13 +46,13 @@ TEST(EventStatistics, FromAPrecursorsTableAndALoadingCurve) {
     const EventStatistics s =
         read_event_statistics({dir / "precursors.csv", dir / "summary.yaml"}, dir / "loading_curve.csv", 0.1);
     EXPECT_DOUBLE_EQ(s.at("precursor_count"), 2);
-    EXPECT_NEAR(s.at("first_precursor_time"), 0.1, 1e-15);
+    EXPECT_NEAR(s.at("first_precursor_time_since_loading"), 0.1, 1e-15);
     EXPECT_DOUBLE_EQ(s.at("first_precursor_force_ratio"), 0.18);
     EXPECT_DOUBLE_EQ(s.at("precursor_1_length"), 0.1);
     EXPECT_DOUBLE_EQ(s.at("precursor_2_length"), 0.4);
     EXPECT_TRUE(std::isnan(s.at("precursor_3_length"))) << "a third precursor never came";
     EXPECT_DOUBLE_EQ(s.at("global_slip_force_ratio"), 0.40);
-    EXPECT_NEAR(s.at("global_slip_time"), 0.4, 1e-15);
+    EXPECT_NEAR(s.at("global_slip_time_since_loading"), 0.4, 1e-15);
     EXPECT_NEAR(s.at("stick_slip_period"), 0.1, 1e-15);
     // Falls from the highest to the lowest after it, before the next event: 0.05 (0.41 -> 0.36, before
     // the precursor at 0.55), 0.10 (0.41 -> 0.31), 0.15 (0.43 -> 0.28).

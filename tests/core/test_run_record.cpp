@@ -1,6 +1,7 @@
 // run.yaml: its text field by field (what a resume and a campaign read back, and what a reader of the
 // run's folder sees first), and reading it back into what `run --resume` and a campaign need.
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -34,9 +35,9 @@ RunInfo two_plugin_run() {
 const std::vector<std::string> command_line = {"frictionlab", "run", "scenes/slider.yaml"};
 const std::vector<std::string> overrides = {"seed=7", "stages[0].duration=0.5"};
 
-TEST(RunRecord, ACompletedRunsTextHasTheProvenanceFirstThenWhatOnlyTheRecordHolds) {
+TEST(RunRecord, AFinishedRunsTextHasTheProvenanceFirstThenWhatOnlyTheRecordHolds) {
     const RunInfo info = two_plugin_run();
-    RunRecord record{info, command_line, overrides, "completed", "", {}};
+    RunRecord record{info, command_line, overrides, "done", "", {}};
     record.summary = {1200, 4800, 0.5, 1.25, 1.0, {{"quiet_steps", 30}, {"quiet_fraction", 0.125}}};
     EXPECT_EQ(record.text(),
               "framework: frictionlab\n"
@@ -45,7 +46,7 @@ TEST(RunRecord, ACompletedRunsTextHasTheProvenanceFirstThenWhatOnlyTheRecordHold
               "scene_hash: 0123456789abcdef\n"
               "seed: 7\n"
               "plugins: bulk_chain_1d 0.1.0, observer_energy 0.2.0\n"
-              "status: completed\n"
+              "status: done\n"
               "scene_path: scenes/slider.yaml\n"
               "plugin_files:\n"
               "  - {name: bulk_chain_1d, file: lib/bulk_chain_1d.so, fnv1a_64: aaaa}\n"
@@ -108,9 +109,14 @@ TEST(RunRecord, WhatIsWrittenReadsBackAsTheRunToResume) {
     recorded = read_recorded_run(dir);
     EXPECT_TRUE(recorded->has_checkpoint);
     EXPECT_TRUE(recorded->resumable());
-    record.status = "completed";
+    record.status = "done";
     record.write(dir);
     EXPECT_FALSE(read_recorded_run(dir)->resumable()) << "a finished run has nothing to resume";
+    // A record from before a finished run was `done` reads as one.
+    write_file_atomically(dir / "run.yaml", std::regex_replace(testing::read_text(dir / "run.yaml"),
+                                                               std::regex("status: done"), "status: completed"));
+    EXPECT_EQ(read_recorded_run(dir)->status, "done");
+    EXPECT_FALSE(read_recorded_run(dir)->resumable());
 }
 
 TEST(RunRecord, AFolderWithoutFrictionLabsRecordHasNoRunToResume) {

@@ -161,6 +161,41 @@ TEST_F(SceneTest, OverrideErrorsPointIntoTheCommandLine) {
               "<command line>:1:15: error: friction.mu_s: must be > 0, got -1\n");
 }
 
+TEST_F(SceneTest, ANullOverrideRemovesAListItemOrAKey) {
+    // `~` removes the item: the later ones move up, and a second removal counts in the shorter list.
+    const auto [scene, d] = check(testing::good_scene_text(), {"loaders[0]=~", "friction.mu_s=null"});
+    ASSERT_TRUE(d.empty()) << d.format();
+    ASSERT_EQ(scene.loaders.size(), 1u);
+    EXPECT_EQ(scene.loaders[0].type, "fake_driver");
+    EXPECT_EQ(scene.loaders[0].path, "loaders[0]");
+    EXPECT_DOUBLE_EQ(std::get<double>(scene.friction->values.at("mu_s")), 0.7) << "back to its default";
+    const auto both = check(testing::good_scene_text(), {"loaders[0]=~", "loaders[0]=~"});
+    ASSERT_TRUE(both.diagnostics.empty()) << both.diagnostics.format();
+    EXPECT_TRUE(both.scene.loaders.empty());
+    // The same scene written without the item has the same physics, so the same hash.
+    auto text = testing::good_scene_text();
+    text.erase(text.find("  - type: fake_normal_load"),
+               text.find("  - type: fake_driver") - text.find("  - type: fake_normal_load"));
+    const auto written = check(text);
+    ASSERT_TRUE(written.diagnostics.empty()) << written.diagnostics.format();
+    EXPECT_EQ(written.scene.hash, check(testing::good_scene_text(), {"loaders[0]=~"}).scene.hash);
+    // A quoted "~" is a string, not a removal.
+    EXPECT_EQ(check(testing::good_scene_text(), {"title='~'"}).scene.title, "~");
+}
+
+TEST_F(SceneTest, RemovingWhatIsNotThereIsReported) {
+    const auto [scene, d] =
+        check(testing::good_scene_text(), {"observers[3]=~", "friction.mu_k=~", "checkpoint.every=~"});
+    EXPECT_EQ(
+        d.format(),
+        "<command line>:1:1: error: checkpoint: in --set 'checkpoint.every=~': nothing to remove: the scene has no "
+        "key 'checkpoint'\n"
+        "<command line>:1:10: error: observers[3]: in --set 'observers[3]=~': no such item: observers has 1 "
+        "item\n"
+        "<command line>:1:10: error: friction.mu_k: in --set 'friction.mu_k=~': nothing to remove: friction has "
+        "no key 'mu_k'\n");
+}
+
 TEST_F(SceneTest, OverrideOfAMissingSectionCreatesIt) {
     auto text = testing::good_scene_text();
     text.erase(text.find("friction:"), text.find("loaders:") - text.find("friction:"));

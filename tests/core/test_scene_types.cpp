@@ -80,7 +80,7 @@ public:
     static ParamSpec<Params> spec() {
         ParamSpec<Params> s("Junctions that never slip.");
         s.add("mu_s", &Params::mu_s, "Static coefficient.").unit("1").greater_than(0);
-        s.add("mu_d", &Params::mu_d, "Dynamic coefficient.").unit("1").at_least(0).formerly("mu_k");
+        s.add("mu_d", &Params::mu_d, "Dynamic coefficient.").unit("1").at_least(0).also_known_as("mu_k");
         s.add("weights", &Params::weights, "Weights of the junction classes.").at_least(0).less_than(10);
         s.choice("state_model", &Params::state_model,
                  {{"two_state", Params::StateModel::two_state}, {"three_state", Params::StateModel::three_state}},

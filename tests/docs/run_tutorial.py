@@ -1,7 +1,9 @@
 """Runs share/docs/tutorial.md as a reader would: its fenced ```sh (or ```bash, ```console) and
 ```python blocks, in order, in one shell session in a fresh directory that holds the source tree's
 configs/, with the build's frictionlab first on PATH and its Python module on PYTHONPATH. Fails
-(exit status 1) on the first block that fails, naming its line in the tutorial.
+(exit status 1) on the first block that fails, naming its line in the tutorial. Then checks that the
+tutorial names what its blocks wrote: every table of every sweep (`sweep.csv`, ...) and every
+format of every figure (PNG, SVG).
 
 Usage: run_tutorial.py TUTORIAL.md   (environment: FRICTIONLAB_CLI, FRICTIONLAB_SOURCE_DIR, PYTHONPATH)
 """
@@ -54,6 +56,25 @@ def script(markdown):
     return "".join(parts), ran
 
 
+def unnamed_outputs(markdown, work):
+    """What the tutorial's runs wrote that its text does not name: a sweep's tables (each as
+    `NAME.csv`) and the formats of the figures in any plots/ folder (as PNG, SVG)."""
+    text = Path(markdown).read_text()
+    missing = []
+    for sweep in sorted(Path(work).glob("out/*/sweep.csv")):
+        for table in sorted(sweep.parent.glob("*.csv")):
+            if f"`{table.name}`" not in text:
+                missing.append(f"{table.parent.name}/{table.name}: a sweep table the tutorial does not name")
+    plots = sorted(Path(work).glob("out/*/plots"))
+    for folder in plots:
+        for ext in sorted({p.suffix[1:].upper() for p in folder.iterdir()}):
+            if ext not in text:
+                missing.append(f"{folder.parent.name}/plots: figures as {ext}, a format the tutorial does not name")
+    if not plots:
+        missing.append("no plots/ folder: the tutorial draws no figure")
+    return missing
+
+
 def main():
     markdown = Path(sys.argv[1]).resolve()
     source = Path(os.environ["FRICTIONLAB_SOURCE_DIR"])
@@ -69,9 +90,13 @@ def main():
         (Path(work) / "configs").symlink_to(source / "configs")
         (Path(work) / "tutorial.sh").write_text(text)
         result = subprocess.run(["bash", "tutorial.sh"], cwd=work, env=env)
+        missing = unnamed_outputs(markdown, work) if result.returncode == 0 else []
     if result.returncode != 0:
         print(f"{markdown.name}: a block failed with status {result.returncode} (the last one announced above)",
               file=sys.stderr)
+        return 1
+    if missing:
+        print("\n".join(f"{markdown.name}: {m}" for m in missing), file=sys.stderr)
         return 1
     print(f"{markdown.name}: {ran} blocks ran")
     return 0

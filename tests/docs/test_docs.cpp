@@ -10,9 +10,16 @@
 // - Lines `--set ...` in any fence: applied to a shipped scene with `frictionlab check`.
 // - Fenced ```yaml blocks: a scene (it has `bulk:`) is written out and checked; a study or sweep (it has
 //   `scene:`) is written beside the base scene it names and checked with `check`.
+// - A fence after `<!-- docs-test: output of frictionlab ARGS -->` (`... in configs -->`: run in
+//   configs/) is what the command prints, line by line (a line ending in " ..." is a prefix of its
+//   line): the error examples quote today's line numbers. A ```yaml fence after
+//   `<!-- docs-test: scene.yaml -->` is a scene with mistakes, written out for the output after it.
 // - share/docs/glossary.md names every CSV column, VTU array and run.yaml and precursors_summary.yaml
 //   key a run writes, and every column of a sweep's and a study's tables, each with its unit; every
 //   table starts with its header.
+// - The README's claims: its first path opens only what it wrote; a law swap takes the blocks it says
+//   (and `check` names the rest); the slip-weakening run takes seconds, as it says. The kinetic
+//   coefficient has one name, μ_d (`mu_k` only as the name `check` answers with `mu_d`).
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -44,22 +51,30 @@ const std::string shipped_scene = "configs/li2020/maegawa_uniform.yaml";
 
 struct Fence {
     std::string file, language, text;
-    int line;  // of the opening fence
+    int line;            // of the opening fence
+    std::string marker;  // what a `<!-- docs-test: ... -->` line just before the fence says
 };
 
 std::vector<Fence> fences(const fs::path& markdown) {
     std::vector<Fence> out;
     std::istringstream in(read_text(markdown));
-    std::string line;
+    std::string line, marker;
     std::optional<Fence> open;
+    const std::string tag = "<!-- docs-test: ", end = " -->";
     for (int n = 1; std::getline(in, line); ++n) {
         if (line.rfind("```", 0) == 0) {
             if (open)
                 out.push_back(*open), open.reset();
             else
-                open = Fence{markdown.filename().string(), line.substr(3), "", n};
+                open = Fence{markdown.filename().string(), line.substr(3), "", n, marker};
+            marker.clear();
         } else if (open) {
             open->text += line + "\n";
+        } else if (line.rfind(tag, 0) == 0 && line.size() >= tag.size() + end.size() &&
+                   line.compare(line.size() - end.size(), end.size(), end) == 0) {
+            marker = line.substr(tag.size(), line.size() - tag.size() - end.size());
+        } else if (!line.empty()) {
+            marker.clear();  // the marker belongs to the fence right after it
         }
     }
     return out;
@@ -94,6 +109,7 @@ std::string as_checked(std::string args) {
     if (args.rfind("run ", 0) == 0) return "check " + args.substr(4);
     if (args.rfind("study ", 0) == 0) return "study --check " + args.substr(6);
     if (args.rfind("sweep ", 0) == 0) return "sweep --check " + args.substr(6);
+    if (args.rfind("reproduce ", 0) == 0) return args + " --check --configs " + (source / "configs").string();
     return args;
 }
 
@@ -149,7 +165,7 @@ TEST_F(Docs, EveryDocumentedOverrideIsAccepted) {
 TEST_F(Docs, EveryDocumentedSceneAndStudyIsValid) {
     int files = 0;
     for (const auto& f : documented_fences()) {
-        if (f.language != "yaml") continue;
+        if (f.language != "yaml" || f.marker == "scene.yaml") continue;  // a scene with mistakes
         const YAML::Node node = YAML::Load(f.text);
         const std::string where = f.file + ":" + std::to_string(f.line);
         if (node["bulk"]) {
@@ -162,9 +178,10 @@ TEST_F(Docs, EveryDocumentedSceneAndStudyIsValid) {
             EXPECT_EQ(r.code, 0) << where << "\n" << r.output;
         } else if (node["scene"]) {
             ++files;
-            // A study's base scene is in configs/study, a sweep's in configs/li2020.
+            // A study's base scene is in configs/study, a sweep's in configs/li2020 or configs/.
             auto base = source / "configs/study" / node["scene"].as<std::string>();
             if (!fs::exists(base)) base = source / "configs/li2020" / node["scene"].as<std::string>();
+            if (!fs::exists(base)) base = source / "configs" / node["scene"].as<std::string>();
             ASSERT_TRUE(fs::exists(base)) << where << ": the base scene " << base;
             fs::copy_file(base, dir_ / base.filename(), fs::copy_options::overwrite_existing);
             std::ofstream(dir_ / "campaign.yaml") << f.text;
@@ -173,6 +190,109 @@ TEST_F(Docs, EveryDocumentedSceneAndStudyIsValid) {
         }
     }
     EXPECT_GE(files, 2);
+}
+
+TEST_F(Docs, EveryDocumentedOutputIsWhatTheCommandPrints) {
+    int outputs = 0;
+    for (const auto& f : documented_fences()) {
+        const std::string where = f.file + ":" + std::to_string(f.line);
+        if (f.marker == "scene.yaml") {
+            std::ofstream(dir_ / "scene.yaml") << f.text;  // for the output that follows
+            continue;
+        }
+        const std::string of = "output of frictionlab ", in_configs = " in configs";
+        if (f.marker.rfind(of, 0) != 0) continue;
+        ++outputs;
+        std::string args = f.marker.substr(of.size());
+        const bool configs = args.size() > in_configs.size() &&
+                             args.compare(args.size() - in_configs.size(), in_configs.size(), in_configs) == 0;
+        if (configs) args.erase(args.size() - in_configs.size());
+        const auto r = frictionlab(args, configs ? source / "configs" : dir_);
+        const auto documented = lines_of(f.text), printed = lines_of(r.output);
+        EXPECT_EQ(documented.size(), printed.size()) << where << ": frictionlab " << args << " printed\n" << r.output;
+        for (std::size_t k = 0; k < documented.size() && k < printed.size(); ++k) {
+            const std::string& d = documented[k];
+            const bool prefix = d.size() > 4 && d.compare(d.size() - 4, 4, " ...") == 0;
+            if (prefix)
+                EXPECT_EQ(printed[k].rfind(d.substr(0, d.size() - 4), 0), 0u)
+                    << where << ": documented\n  " << d << "\nprinted\n  " << printed[k];
+            else
+                EXPECT_EQ(d, printed[k]) << where << ": line " << k + 1;
+        }
+    }
+    EXPECT_GE(outputs, 4) << "scene-format.md's error examples are checked";
+}
+
+TEST_F(Docs, TheReadmesFirstPathOpensOnlyWhatItWrote) {
+    int opened = 0;
+    for (const auto& f : fences(source / "README.md")) {
+        if (f.language != "sh") continue;
+        std::vector<std::string> written;
+        for (const auto& raw : lines_of(f.text)) {
+            const std::string line = without_comment(raw);
+            std::smatch m;
+            // A plot or a Python look at a run directory reads what a line above wrote with -o.
+            std::vector<std::string> read;
+            if (std::regex_search(line, m, std::regex("frictionlab plot (out/\\S+)"))) read.push_back(m[1]);
+            if (std::regex_search(line, m, std::regex("open_run\\('([^']+)'\\)"))) read.push_back(m[1]);
+            for (const auto& dir : read) {
+                ++opened;
+                EXPECT_NE(std::find(written.begin(), written.end(), dir), written.end())
+                    << "README.md:" << f.line << ": " << line << " reads " << dir << ", which no line above writes";
+            }
+            if (std::regex_search(line, m, std::regex(" -o (\\S+)"))) written.push_back(m[1]);
+        }
+    }
+    EXPECT_GE(opened, 3);
+}
+
+TEST_F(Docs, ALawSwapTakesTheBlocksTheReadmeSays) {
+    // The README: a swap is an edit of the law's block, and `check` names any other change it needs.
+    const std::string readme = read_text(source / "README.md");
+    EXPECT_EQ(readme.find("editing one line"), std::string::npos) << "a law swap on the headline takes two blocks";
+    EXPECT_NE(readme.find("by\nediting its block"), std::string::npos);
+    const auto law_only = frictionlab("check configs/headline.yaml --set \"friction={type: slip_weakening}\"", source);
+    EXPECT_EQ(law_only.code, 2) << law_only.output;
+    EXPECT_NE(law_only.output.find("observers[2]: contact_area reads the fields"), std::string::npos)
+        << "check names the other block: " << law_only.output;
+    const auto both = frictionlab(
+        "check configs/headline.yaml --set \"friction={type: slip_weakening}\" --set \"observers[2]=~\"", source);
+    EXPECT_EQ(both.code, 0) << both.output;
+}
+
+TEST_F(Docs, TheSlipWeakeningRunTakesTheSecondsTheReadmeSays) {
+    const std::string readme = read_text(source / "README.md");
+    std::smatch m;
+    const std::regex line(
+        "frictionlab run (configs/peer_laws/maegawa_slip_weakening\\.yaml) -o \\S+ .*\\(about "
+        "([0-9.]+) s of processor time\\)");
+    ASSERT_TRUE(std::regex_search(readme, m, line)) << "the README states the run's time in seconds";
+    const double stated = std::stod(m[2]);
+    EXPECT_LT(stated, 60) << "seconds, not minutes";
+    // A tenth of its loading, its cost scaled by its steps: a fixed-step run costs the same a step
+    // throughout. Not a benchmark: only the order of what the README states (4x either way).
+    const auto r =
+        frictionlab("run " + (source / m[1].str()).string() + " --set stages[1].duration=0.04 -q -o sw", dir_);
+    ASSERT_EQ(r.code, 0) << r.output;
+    const YAML::Node record = YAML::LoadFile((dir_ / "sw" / "run.yaml").string());
+    const YAML::Node scene = YAML::LoadFile((source / m[1].str()).string());
+    const double full = scene["stages"][0]["duration"].as<double>() + scene["stages"][1]["duration"].as<double>();
+    const double cpu = record["cpu_seconds"].as<double>() * full / record["simulated_time"].as<double>();
+    EXPECT_LT(cpu, 4 * stated) << "the whole run would take about " << cpu << " s; the README says " << stated;
+    EXPECT_GT(cpu, stated / 4) << "the whole run would take about " << cpu << " s; the README says " << stated;
+}
+
+TEST_F(Docs, TheKineticCoefficientHasOneName) {
+    std::vector<fs::path> pages{source / "README.md"};
+    for (const auto& page : fs::directory_iterator(source / "share/docs"))
+        if (page.path().extension() == ".md") pages.push_back(page.path());
+    for (const auto& page : pages) {
+        const std::string text = read_text(page);
+        EXPECT_EQ(text.find("μ_k"), std::string::npos) << page.filename() << ": write μ_d (mu_d), as every law does";
+        if (page.filename() != "scene-format.md") {  // where the did-you-mean is explained
+            EXPECT_EQ(text.find("mu_k"), std::string::npos) << page.filename();
+        }
+    }
 }
 
 /// The cells of a Markdown table row (an escaped \| stays within its cell), trimmed.

@@ -198,21 +198,27 @@ TEST(FastLoadingRegression, LoadingCurveAndRuptureEvents) {
     EXPECT_NEAR(late / early, 1.0, 0.002) << "linear while stuck";
     EXPECT_NEAR(early / nominal, 0.888, 0.01);
 
-    ASSERT_GE(events["event"].size(), 2u);
-    // The first precursor nucleates at the driven (trailing) edge at F_S/F_N = 0.18, as at the 20x
-    // slower rate of the headline scene: nucleation is set by the static stress field.
-    EXPECT_EQ(events["nucleation_block"][0], 0);
+    // Three precursors of growing length from the driven edge, each at a higher F_S/F_N (0.18, 0.26,
+    // 0.34; l/L 0.09, 0.30, 0.64), then the whole interface slips at F_S/F_N = 0.42 (the global static
+    // coefficient) behind a fast, sub-Rayleigh front. The first nucleates at F_S/F_N = 0.18, as at the
+    // 20x slower rate of the headline scene: nucleation is set by the static stress field. (The former
+    // detector, its 2 ms quiet time bridging the 2.3 ms between them, merged the three into one "slow
+    // front" reaching 0.64 L; theory.md §5a.)
+    ASSERT_EQ(events["event"].size(), 4u);
+    EXPECT_LE(events["nucleation_block"][0], 1);
     EXPECT_NEAR(events["force_ratio"][0], 0.182, 0.03 * 0.182);
-    // It is a slow front (tens of m/s against c_R ~ 900 m/s) arresting at l/L ~ 0.64.
-    EXPECT_NEAR(events["extent_over_length"][0], 0.64, 0.05);
-    EXPECT_LT(events["front_speed"][0], 100.0);
-    EXPECT_EQ(events["global"][0], 0);
-    // Then the whole interface slips at F_S/F_N = 0.42 (the global static coefficient), behind a
-    // fast, sub-Rayleigh front.
-    EXPECT_EQ(events["global"][1], 1);
-    EXPECT_NEAR(events["force_ratio"][1], 0.417, 0.03 * 0.417);
-    EXPECT_GT(events["front_speed"][1], 300.0);
-    EXPECT_LT(events["front_speed"][1], 1100.0);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(events["global"][k], 0) << "precursor " << k;
+        if (k > 0) {
+            EXPECT_GT(events["extent_over_length"][k], events["extent_over_length"][k - 1]) << "precursor " << k;
+            EXPECT_GT(events["force_ratio"][k], events["force_ratio"][k - 1] + 0.05) << "precursor " << k;
+        }
+    }
+    EXPECT_NEAR(events["extent_over_length"][2], 0.64, 0.05);
+    EXPECT_EQ(events["global"][3], 1);
+    EXPECT_NEAR(events["force_ratio"][3], 0.417, 0.03 * 0.417);
+    EXPECT_GT(events["front_speed"][3], 300.0);
+    EXPECT_LT(events["front_speed"][3], 1100.0);
 }
 
 /// The stable step estimated before a stage runs (theory.md A.5) separates stable from unstable

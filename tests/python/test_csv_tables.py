@@ -41,6 +41,9 @@ def check_table(path):
     assert numeric.size == len(frame) or (len(frame) == 0 and numeric.size in (0, 1)), path
     meta = sidecar(path)
     assert meta["framework"] == "frictionlab" and "version" in meta, path
+    # Every column's unit, as text ("1" for a pure number, "" only for a column of text).
+    assert list(meta["units"]) == columns, path
+    assert all(isinstance(unit, str) for unit in meta["units"].values()), path
     if frame.empty:  # pandas types no column of an empty table
         return frame
     for column in meta.get("integer_columns", []):
@@ -72,6 +75,20 @@ def test_the_python_module_types_integer_and_flag_columns_as_pandas_does(csv_run
         np.testing.assert_array_equal(events[column], read[column].astype(bool))
     curve = csv_run.frame("loading_curve", index="time")
     assert curve.index.name == "time" and curve.index.is_monotonic_increasing
+
+
+def test_every_column_of_a_run_has_its_unit_in_the_module_as_in_the_sidecar(csv_run, hdf5_run):
+    table = csv_run.table("precursors")
+    assert table.units["t_start"] == table.units["t_start_since_loading"] == "s"
+    assert table.units["driving_force"] == "N" and table.units["front_speed"] == "m/s"
+    assert table.units["global"] == "1" and table.units["nucleation_x"] == "m"
+    assert csv_run.table("loading_curve").units["driving_force_over_normal_load"] == "1"
+    for run in (csv_run, hdf5_run):
+        for name in run.tables:
+            t = run.table(name)
+            assert set(t.units) == set(t.columns) and all(t.units.values()), (run.directory, name)
+    # HDF5 keeps them as the dataset's attribute, aligned with its columns.
+    assert hdf5_run.table("precursors").units == csv_run.table("precursors").units
 
 
 @pytest.mark.parametrize("campaign", ["real_sweep", "real_study"])

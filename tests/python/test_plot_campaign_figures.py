@@ -14,12 +14,12 @@ import frictionlab.plot
 from conftest import plot_command
 from frictionlab.plot import _tables, campaign_figures
 
-SWEEP = """case,loaders[1].theta,seed,status,reason,scene_hash,global_static_coefficient,events,precursor_count,\
-first_precursor_force_ratio,steps,wall_seconds,cpu_seconds
-theta--0.5_seed-1,-0.5,1,done,,a1,0.30,3,2,0.20,100,1.0,1.0
-theta--0.5_seed-2,-0.5,2,done,,a2,0.34,2,1,0.22,100,1.0,1.0
-theta-0.5_seed-1,0.5,1,done,,b1,0.40,1,0,nan,100,1.0,1.0
-theta-0.5_seed-2,0.5,2,failed,diverged,b2,nan,0,0,nan,100,1.0,1.0
+SWEEP = """case,loaders[1].theta,seed,run,status,reason,scene_hash,event_count,precursor_count,\
+first_precursor_force_ratio,global_slip_force_ratio,steps,wall_seconds,cpu_seconds
+theta--0.5,-0.5,1,theta--0.5_seed-1,done,,a1,3,2,0.20,0.30,100,1.0,1.0
+theta--0.5,-0.5,2,theta--0.5_seed-2,done,,a2,2,1,0.22,0.34,100,1.0,1.0
+theta-0.5,0.5,1,theta-0.5_seed-1,done,,b1,1,0,nan,0.40,100,1.0,1.0
+theta-0.5,0.5,2,theta-0.5_seed-2,failed,diverged,b2,nan,nan,nan,nan,100,1.0,1.0
 """
 SIDECAR = """framework: frictionlab
 sweep_file: theta.yaml
@@ -29,23 +29,35 @@ units:
   case: ""
   loaders[1].theta: "1"
   seed: "1"
+  run: ""
+varied: ["loaders[1].theta"]
+constants:
+  stages[1].duration: "0.03"
 """
-EVENTS = """case,loaders[1].theta,seed,event,t_start,t_end,force_ratio,extent_over_length,kind
-theta--0.5_seed-1,-0.5,1,0,0.001,0.002,0.20,0.3,precursor
-theta--0.5_seed-1,-0.5,1,1,0.003,0.004,0.25,0.6,precursor
-theta--0.5_seed-1,-0.5,1,2,0.005,0.006,0.30,1,global
-theta--0.5_seed-2,-0.5,2,0,0.001,0.002,0.22,0.5,precursor
-theta--0.5_seed-2,-0.5,2,1,0.003,0.004,0.34,1,global
-theta-0.5_seed-1,0.5,1,0,0.001,0.002,0.40,1,global
+EVENTS = """case,loaders[1].theta,seed,run,event,t_start,t_end,force_ratio,extent_over_length,kind
+theta--0.5,-0.5,1,theta--0.5_seed-1,0,0.001,0.002,0.20,0.3,precursor
+theta--0.5,-0.5,1,theta--0.5_seed-1,1,0.003,0.004,0.25,0.6,precursor
+theta--0.5,-0.5,1,theta--0.5_seed-1,2,0.005,0.006,0.30,1,global
+theta--0.5,-0.5,2,theta--0.5_seed-2,0,0.001,0.002,0.22,0.5,precursor
+theta--0.5,-0.5,2,theta--0.5_seed-2,1,0.003,0.004,0.34,1,global
+theta-0.5,0.5,1,theta-0.5_seed-1,0,0.001,0.002,0.40,1,global
 """
-# As the sweep writes it: the mean over the seeds that reach the event, with its 95 % interval.
-STATISTICS = """case,loaders[1].theta,statistic,unit,n,missing,mean,sd,ci_low,ci_high
-theta--0.5,-0.5,precursor_count,1,2,0,1.5,0.7071067812,-4.853102368,7.853102368
-theta--0.5,-0.5,first_precursor_force_ratio,1,2,0,0.21,0.01414213562,0.03,0.39
-theta--0.5,-0.5,global_slip_force_ratio,1,2,0,0.32,0.02828427125,-0.04,0.68
-theta-0.5,0.5,precursor_count,1,1,0,0,nan,nan,nan
-theta-0.5,0.5,first_precursor_force_ratio,1,0,1,nan,nan,nan,nan
-theta-0.5,0.5,global_slip_force_ratio,1,1,0,0.4,nan,nan,nan
+# Each run's statistics as the sweep computes them (the ones the figures draw).
+RUN_STATISTICS = """case,loaders[1].theta,seed,run,precursor_count,first_precursor_force_ratio,global_slip_force_ratio
+theta--0.5,-0.5,1,theta--0.5_seed-1,2,0.20,0.30
+theta--0.5,-0.5,2,theta--0.5_seed-2,1,0.22,0.34
+theta-0.5,0.5,1,theta-0.5_seed-1,0,nan,0.40
+theta-0.5,0.5,2,theta-0.5_seed-2,nan,nan,nan
+"""
+# As the sweep writes it: the mean over the seeds that reach the event, with its 95 % interval
+# (made up here: two seeds are too few for one, as the last rows say).
+STATISTICS = """case,loaders[1].theta,statistic,unit,n,missing,mean,sd,ci_low,ci_high,interval
+theta--0.5,-0.5,precursor_count,1,2,0,1.5,0.7071067812,1,2,
+theta--0.5,-0.5,first_precursor_force_ratio,1,2,0,0.21,0.01414213562,0.20,0.22,
+theta--0.5,-0.5,global_slip_force_ratio,1,2,0,0.32,0.02828427125,0.30,0.34,
+theta-0.5,0.5,precursor_count,1,1,0,0,nan,nan,nan,too few seeds
+theta-0.5,0.5,first_precursor_force_ratio,1,0,1,nan,nan,nan,nan,too few seeds
+theta-0.5,0.5,global_slip_force_ratio,1,1,0,0.4,nan,nan,nan,too few seeds
 """
 ERRORS = [column for column, _ in campaign_figures.STUDY_ERRORS]
 STUDY_CASES = [  # case, family, seed, wall seconds, every error
@@ -62,6 +74,7 @@ def sweep(tmp_path, csv_run):
     (tmp_path / "sweep.csv").write_text(SWEEP)
     (tmp_path / "sweep.csv.meta.yaml").write_text(SIDECAR)
     (tmp_path / "events.csv").write_text(EVENTS)
+    (tmp_path / "run_statistics.csv").write_text(RUN_STATISTICS)
     (tmp_path / "sweep_statistics.csv").write_text(STATISTICS)
     shutil.copytree(csv_run.directory, tmp_path / "cases" / "theta--0.5_seed-1")
     yield str(tmp_path)
@@ -106,22 +119,38 @@ def error_bars(ax):
 
 
 def test_against_a_varied_key_each_seed_faint_and_the_mean_with_its_interval(sweep):
-    assert campaign_figures.numeric_keys(_tables.campaign_rows(sweep, "sweep.csv")) == ["loaders[1].theta"]
+    assert campaign_figures.numeric_keys(sweep, _tables.campaign_rows(sweep, "sweep.csv")) == ["loaders[1].theta"]
     count, first, coefficient = frictionlab.plot.sweep_against(sweep, "loaders[1].theta", axes=plt.subplots(1, 3)[1])
     assert drawn(count, "o") == {-0.5: [2, 1], 0.5: [0]}
     assert all(line.get_alpha() < 0.5 for line in count.lines if line.get_marker() == "o")  # faint
     assert drawn(count, "s") == {-0.5: [1.5], 0.5: [0]}
-    assert error_bars(coefficient) == [pytest.approx((-0.04, 0.68))]  # none for one seed
+    assert error_bars(coefficient) == [pytest.approx((0.30, 0.34))]  # none where the table gives none
     assert drawn(coefficient, "o") == {-0.5: [0.30, 0.34], 0.5: [0.40]}  # the failed case left out
     assert drawn(first, "o") == {-0.5: [0.20, 0.22]}  # no precursor at theta = 0.5: NaN, not drawn
     assert coefficient.get_xlabel() == r"$\theta$"  # the symbol, not the key path
 
 
+def test_only_keys_that_vary_are_axes(sweep):
+    # The sidecar's constants (a duration every case sets alike) are no axis, and the table has no
+    # column for them.
+    assert campaign_figures.varied_keys(sweep) == ["loaders[1].theta"]
+    sidecar = os.path.join(sweep, "sweep.csv.meta.yaml")
+    with open(sidecar) as f:
+        text = f.read()
+    with open(sidecar, "w") as f:
+        f.write(text.replace("varied: [\"loaders[1].theta\"]", "varied: []"))
+    assert campaign_figures.varied_keys(sweep) == []
+    frictionlab.plot.plot_sweep(sweep)
+    assert not [f for f in os.listdir(os.path.join(sweep, "plots")) if f.startswith("sweep_against")]
+    labels = [line.get_label() for line in frictionlab.plot.sweep_precursor_lengths(sweep).lines]
+    assert labels[0] == "theta--0.5"  # the case by its name where no key varies
+
+
 def test_an_empty_panel_says_why(sweep):
-    with open(os.path.join(sweep, "events.csv")) as f:
+    with open(os.path.join(sweep, "run_statistics.csv")) as f:
         lines = f.readlines()
-    with open(os.path.join(sweep, "events.csv"), "w") as f:  # no precursors: only global slips
-        f.writelines(line for line in lines if not line.rstrip().endswith("precursor"))
+    with open(os.path.join(sweep, "run_statistics.csv"), "w") as f:  # no precursors: only global slips
+        f.writelines(line.replace(",0.20,", ",nan,").replace(",0.22,", ",nan,") for line in lines)
     _, first, _ = frictionlab.plot.sweep_against(sweep, "loaders[1].theta", axes=plt.subplots(1, 3)[1])
     assert not first.lines and [t.get_text() for t in first.texts] == ["no case had a precursor"]
     low, high = first.get_xlim()  # the sweep's values of theta, as on the other panels
@@ -169,7 +198,9 @@ def test_a_real_sweeps_figures_are_its_means_with_intervals_by_symbol_and_unit(r
     statistics = [r for r in _tables.campaign_rows(real_sweep, "sweep_statistics.csv")
                   if r["statistic"] == "global_slip_force_ratio"]
     assert drawn(coefficient, "s") == {float(r["loaders[2].velocity"]): [float(r["mean"])] for r in statistics}
-    assert error_bars(coefficient) == [pytest.approx((float(r["ci_low"]), float(r["ci_high"]))) for r in statistics]
+    # Two seeds are too few for an interval: the table says so, and no bar is drawn.
+    assert all(r["interval"] == "too few seeds" and r["ci_low"] == "nan" for r in statistics)
+    assert error_bars(coefficient) == []
     assert all(len(ys) == 2 for ys in drawn(coefficient, "o").values())  # each seed a dot
     assert [t.get_text() for t in first.texts] == ["no case had a precursor"]  # the tiny sweep has none
     plt.close("all")
@@ -184,8 +215,9 @@ def test_a_real_ensemble_studys_work_precision_is_each_cases_error_with_its_inte
     (panel,) = [ax for ax in axes if ax.get_title() == "global slip force ratio"]
     assert sorted(r["case"] for r in rows) == ["half_step", "rk4_coarse"]
     assert drawn(panel, "o") == {float(r["cpu_seconds"]): [float(r["difference"])] for r in rows}
-    assert error_bars(panel) == [pytest.approx((float(r["difference_ci_low"]), float(r["difference_ci_high"])))
-                                 for r in rows]
+    # Two seeds a side are too few for an interval of the difference: none drawn, as the table says.
+    assert all(r["difference_interval"] == "too few seeds" for r in rows)
+    assert error_bars(panel) == []
     assert axes[-1].get_xlabel() == "CPU time per run [s]"
     plt.close("all")
 

@@ -47,7 +47,7 @@ def test_a_run_from_python_equals_the_command_lines_byte_for_byte(cli, tmp_path,
     assert result.returncode == 0, result.stderr
     monkeypatch.chdir(tmp_path / "py")
     run = frictionlab.Scene.load(SCENE, set=overrides).run(output="out")
-    assert run.status == "completed"
+    assert run.status == "done"
     cli_out, py_out = tmp_path / "cli" / "out", tmp_path / "py" / "out"
     assert files_under(cli_out) == files_under(py_out)
     for name in files_under(cli_out):
@@ -143,7 +143,7 @@ def test_hdf5_tables_are_chunked_compressed_and_carry_their_provenance(hdf5_run,
 
 def test_open_run_gives_metadata_frames_and_the_vtu_series(csv_run):
     run = frictionlab.open_run(csv_run.directory)
-    assert run.metadata["status"] == "completed" and run.metadata["seed"] == 3
+    assert run.metadata["status"] == "done" and run.metadata["seed"] == 3
     frame = run.frame("precursors")
     assert list(frame.columns[:3]) == ["event", "finished", "t_start"] and len(frame) >= 1
     records = run.arrays("loading_curve")
@@ -201,7 +201,7 @@ def test_a_run_stopped_by_ctrl_c_resumes_from_python_to_the_same_outputs(tmp_pat
     child.communicate(timeout=60)
     assert yaml.safe_load(open(out / "run.yaml"))["status"] == "interrupted"
     resumed = frictionlab.Scene.load(SCENE, set=overrides).run(output=str(out), resume=True)
-    assert yaml.safe_load(open(out / "run.yaml"))["status"] == "completed"
+    assert yaml.safe_load(open(out / "run.yaml"))["status"] == "done"
     for name in ("loading_curve.csv", "precursors.csv", "interface_velocity.csv"):
         assert open(os.path.join(resumed.directory, name)).read() == \
             open(os.path.join(whole.directory, name)).read(), name

@@ -46,9 +46,9 @@ CaseOutcome outcome(double t, double force, double mu) {
     o.x_over_length = grid(3);
     o.settled_normal = {1, 1, 1};
     o.settled_friction = {-0.1, 0, 0.1};
-    o.first_precursor_time = t;
+    o.first_precursor_time_since_loading = t;
     o.first_precursor_force = force;
-    o.global_static_coefficient = mu;
+    o.global_slip_force_ratio = mu;
     o.event_slip = {2e-6, 1e-6, 0};
     o.any_event = o.global_slip = true;
     return o;
@@ -56,9 +56,9 @@ CaseOutcome outcome(double t, double force, double mu) {
 
 TEST(CompareOutcomes, RelativeErrorsAndNoNoteWhenAllIsThere) {
     const auto e = compare(outcome(0.005, 80, 0.4), outcome(0.0051, 79.2, 0.41));
-    EXPECT_NEAR(e.first_precursor_time, 0.02, 1e-12);
+    EXPECT_NEAR(e.first_precursor_time_since_loading, 0.02, 1e-12);
     EXPECT_NEAR(e.first_precursor_force, 0.01, 1e-12);
-    EXPECT_NEAR(e.global_static_coefficient, 0.025, 1e-12);
+    EXPECT_NEAR(e.global_slip_force_ratio, 0.025, 1e-12);
     EXPECT_EQ(e.settled_normal_force, 0.0);
     EXPECT_EQ(e.event_slip, 0.0);
     EXPECT_TRUE(e.note.empty()) << e.note;
@@ -68,9 +68,9 @@ TEST(CompareOutcomes, AMissingPrecursorOrGlobalSlipIsNanWithANote) {
     auto missing = outcome(CaseOutcome::nan, CaseOutcome::nan, CaseOutcome::nan);
     missing.global_slip = false;
     const auto e = compare(outcome(0.005, 80, 0.4), missing);
-    EXPECT_TRUE(std::isnan(e.first_precursor_time));
+    EXPECT_TRUE(std::isnan(e.first_precursor_time_since_loading));
     EXPECT_TRUE(std::isnan(e.first_precursor_force));
-    EXPECT_TRUE(std::isnan(e.global_static_coefficient));
+    EXPECT_TRUE(std::isnan(e.global_slip_force_ratio));
     EXPECT_EQ(e.note,
               "first event is a global slip where the reference has a precursor; no global slip where the reference "
               "has one");

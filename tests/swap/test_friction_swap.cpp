@@ -79,7 +79,7 @@ constexpr int blocks = 41;  // interface blocks of swap_base.yaml's 41 x 9 latti
 /// interface block).
 struct LawRun {
     fs::path out;
-    Columns events, velocity, slip, ratio, pinned;
+    Columns events, velocity, slip, ratio, pinned, curve;
     std::vector<double> block(const Columns& table, int i) const { return table.at("block_" + std::to_string(i)); }
 };
 
@@ -103,6 +103,7 @@ LawRun run_with(const std::string& law, const std::string& overrides = "") {
     run.velocity = testing::read_csv(run.out / "interface_velocity.csv");
     run.slip = testing::read_csv(run.out / "interface_slip.csv");
     run.ratio = testing::read_csv(run.out / "interface_shear_ratio.csv");
+    run.curve = testing::read_csv(run.out / "loading_curve.csv");
     if (fs::exists(run.out / "interface_pinned_fraction.csv"))
         run.pinned = testing::read_csv(run.out / "interface_pinned_fraction.csv");
     return run;
@@ -266,7 +267,8 @@ TEST(FrictionSwap, ThreeStateJunctionsShowGrowingPrecursorsBeforeTheFirstGlobalS
     double longest = 0;
     for (std::size_t k = 0; k < g; ++k) {
         EXPECT_LT(extent[k], 1.0);
-        EXPECT_LE(run.events.at("nucleation_block")[k], 1.0)
+        // Within the blocks a front at several hundred m/s crosses between two observations (10 us).
+        EXPECT_LE(run.events.at("nucleation_block")[k], 2.0)
             << "precursor " << k << " did not start at the driven edge";
         EXPECT_LT(ratio[k], ratio[g]);
         longest = std::max(longest, extent[k]);
@@ -276,12 +278,24 @@ TEST(FrictionSwap, ThreeStateJunctionsShowGrowingPrecursorsBeforeTheFirstGlobalS
     EXPECT_GT(ratio[g - 1], ratio[0]);
 }
 
+/// How much F_S/F_N rose over the observation before time t (the loading curve's cadence is the
+/// precursors observer's).
+double ratio_rise_before(const LawRun& run, double t) {
+    const auto& time = run.curve.at("time");
+    const auto& ratio = run.curve.at("driving_force_over_normal_load");
+    const auto k = static_cast<std::size_t>(std::lower_bound(time.begin(), time.end(), t) - time.begin());
+    return k == 0 || k >= time.size() ? 0.0 : std::abs(ratio[k] - ratio[k - 1]);
+}
+
 /// The quasi-static hybrid with every law that describes its quasi-static regime: the stuck loading
 /// is crossed in quiet steps (after the transient of the drive's start, which it integrates), and the
 /// first rupture event comes as with RK4 at the hybrid's own dynamic step, within what RK4 itself
-/// changes when its step is halved: time (and one observation), F_S (and 1e-4 of it), length (and a
-/// block). Measured: the same time and F_S within 4e-6 for three laws; slip weakening, which breaks
-/// without a force drop, between RK4's two steps.
+/// changes when its step is halved: time (and one observation), F_S (and 1e-4 of it, and what the
+/// load adds in that one observation: an event starts when its first block's contact broke, as the
+/// observer sees it at its cadence), length (and a block). Measured: two-state junctions, whose
+/// block's junctions all break within 5 us, break just before an observation with the hybrid and just
+/// after it with RK4 (one observation, 2.4e-4 in F_S/F_N); the other laws at the same observation and
+/// F_S within 4e-6; slip weakening, which breaks without a force drop, between RK4's two steps.
 TEST(FrictionSwap, EveryLawReachesItsFirstEventWithTheQuasiStaticHybridWithinRk4sStepHalving) {
     const auto first_event = [](const LawRun& run, const char* column) { return run.events.at(column).at(0); };
     for (const char* law : {"coulomb", "slip_weakening", "two_state_junctions", "three_state_junctions"}) {
@@ -295,8 +309,11 @@ TEST(FrictionSwap, EveryLawReachesItsFirstEventWithTheQuasiStaticHybridWithinRk4
             const YAML::Node stats = YAML::LoadFile((hybrid.out / "run.yaml").string())["integrator_statistics"];
             EXPECT_GE(stats["observations_within_spans"].as<double>(), 100) << law << ": no stuck span crossed quietly";
             EXPECT_EQ(stats["creep_steps"].as<double>() > 0, creep_step > 0) << law;
-            for (const auto& [column, slack] : {std::pair{"t_start", 1.01e-5}, std::pair{"force_ratio", 1e-4 * 0.2},
-                                                std::pair{"extent_over_length", 1.01 / (blocks - 1)}}) {
+            const double one_observation = ratio_rise_before(rk4, first_event(rk4, "t_start"));
+            EXPECT_LT(one_observation, 1e-3) << law << ": the load rises slowly beside the cadence";
+            for (const auto& [column, slack] :
+                 {std::pair{"t_start", 1.01e-5}, std::pair{"force_ratio", 1e-4 * 0.2 + one_observation},
+                  std::pair{"extent_over_length", 1.01 / (blocks - 1)}}) {
                 const double a = first_event(rk4, column), b = first_event(halved, column);
                 EXPECT_GE(first_event(hybrid, column), std::min(a, b) - slack) << law << " " << column << creep_step;
                 EXPECT_LE(first_event(hybrid, column), std::max(a, b) + slack) << law << " " << column << creep_step;
@@ -394,10 +411,14 @@ void swap_into_headline(const HeadlineSwap& swap) {
         testing::frictionlab("run -q scene.yaml --set stages[1].duration=0.002 --set output=out" + swap.overrides, dir);
     EXPECT_EQ(ran.code, 0) << what << ran.output;
     const YAML::Node record = YAML::LoadFile((dir / "out" / "run.yaml").string());
-    EXPECT_EQ(record["status"].as<std::string>(), "completed") << what;
+    EXPECT_EQ(record["status"].as<std::string>(), "done") << what;
     const bool counts = swap.block.find("junctions") != std::string::npos || swap.key == "bulk";
+    const bool stuck_spring =
+        swap.block.find("coulomb") != std::string::npos || swap.block.find("slip_weakening") != std::string::npos;
     EXPECT_EQ(record["resolved_choices"]["observers[1].criterion"]["value"].as<std::string>(),
-              counts ? "pinned_fraction" : "slip")
+              counts         ? "pinned_fraction"
+              : stuck_spring ? "slipping"
+                             : "slip_rate")
         << what;
 }
 
@@ -406,13 +427,13 @@ const std::pair<std::string, std::string> contact_area{"observers[2]", "remove t
 TEST(FrictionSwap, TheHeadlineTakesEveryLawByItsFrictionBlockOrCheckNamesEveryFixAtOnce) {
     swap_into_headline({"friction", "friction:\n  type: three_state_junctions\n", {}, {}, ""});
     swap_into_headline({"friction", "friction:\n  type: two_state_junctions\n", {}, {}, ""});
-    // Without junctions: the precursors' criterion becomes slip by itself; contact_area, which reports
-    // the junction phases, says to take it out.
+    // Without junctions: the precursors' criterion becomes the law's stuck spring (slipping) by itself;
+    // contact_area, which reports the junction phases, says to take it out.
     for (const char* law : {"coulomb", "slip_weakening"})
         swap_into_headline(
             {"friction", fmt::format("friction:\n  type: {}\n", law), {contact_area}, {"contact_area"}, ""});
-    // Rate and state also needs an integrator that takes its velocity dependence implicitly: said by
-    // check, not at the end of settling.
+    // Rate and state (no contact measure: slip_rate) also needs an integrator that takes its velocity
+    // dependence implicitly: said by check, not at the end of settling.
     swap_into_headline({"friction",
                         "friction:\n  type: rate_state\n",
                         {contact_area, {"integrator", "type: imex_euler"}},

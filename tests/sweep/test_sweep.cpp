@@ -67,10 +67,10 @@ std::vector<Row> table_rows(const fs::path& file) {
     return rows;
 }
 
-/// sweep.csv's rows, by case name.
+/// sweep.csv's rows, by run (the run's directory below cases/).
 std::map<std::string, Row> sweep_rows(const fs::path& file) {
     std::map<std::string, Row> rows;
-    for (auto& row : table_rows(file)) rows[row.at("case")] = std::move(row);
+    for (auto& row : table_rows(file)) rows[row.at("run")] = std::move(row);
     return rows;
 }
 
@@ -86,6 +86,7 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
     const auto rows = sweep_rows(dir / "j1" / "sweep.csv");
     ASSERT_EQ(rows.size(), case_names.size());
     std::size_t all_events = 0;
+    std::map<std::string, int> disagreeing;  // per case, its runs whose events disagree with their check
     for (const auto& name : case_names) {
         SCOPED_TRACE(name);
         const fs::path case_dir = dir / "j1" / "cases" / name;
@@ -93,25 +94,28 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
         EXPECT_EQ(row.at("status"), "done");
         EXPECT_EQ(row.at("loaders[2].velocity"), name.substr(9, 4));
         EXPECT_EQ(row.at("seed"), name.substr(name.size() - 1));
+        EXPECT_EQ(row.at("case"), name.substr(0, 13)) << "the case's name, as the statistics give it";
         // The events come from the file the observer was told to write (events_file: ruptures.csv).
         ASSERT_TRUE(fs::exists(case_dir / "ruptures.csv"));
         auto events = frictionlab::testing::read_csv(case_dir / "ruptures.csv");
         const auto& global = events["global"];
-        std::size_t precursors = 0;
-        for (double g : global) precursors += g < 0.5;
-        EXPECT_EQ(std::stoul(row.at("events")), global.size());
-        EXPECT_EQ(std::stoul(row.at("precursor_count")), precursors);
+        EXPECT_EQ(std::stoul(row.at("event_count")), global.size());
         all_events += global.size();
-        // The global static coefficient is the one the case's summary states.
-        const std::string summary = read_text(case_dir / "precursors_summary.yaml");
-        const auto at = summary.find("global_static_coefficient: ");
-        ASSERT_NE(at, std::string::npos);
-        const std::string stated = summary.substr(at + 27, summary.find('\n', at) - at - 27);
-        if (stated == "null")
-            EXPECT_EQ(row.at("global_static_coefficient"), "nan");
-        else
-            EXPECT_NEAR(std::stod(row.at("global_static_coefficient")), std::stod(stated),
-                        1e-9 * std::abs(std::stod(stated)));
+        // The precursors before the first global slip and F_S/F_N then are the ones the case's
+        // summary states.
+        const YAML::Node summary = YAML::LoadFile((case_dir / "precursors_summary.yaml").string());
+        EXPECT_EQ(summary["event_count"].as<std::size_t>(), global.size());
+        for (const char* key : {"precursor_count", "global_slip_force_ratio"}) {
+            const std::string stated = summary[key].Scalar();
+            if (stated == "null")
+                EXPECT_EQ(row.at(key), "nan") << key;
+            else
+                EXPECT_NEAR(std::stod(row.at(key)), std::stod(stated), 1e-9 * std::abs(std::stod(stated))) << key;
+        }
+        // The run's own check of its events (theory.md §5a), as its summary gives it.
+        const std::string verdict = summary["event_check"]["verdict"].Scalar();
+        EXPECT_EQ(row.at("events_agree"), verdict == "agree" ? "true" : "false") << verdict;
+        disagreeing[name.substr(0, 13)] += verdict == "disagree";
         // -j 2 computes every case bit for bit as -j 1.
         EXPECT_EQ(data_lines(case_dir / "ruptures.csv"), data_lines(dir / "j2" / "cases" / name / "ruptures.csv"));
     }
@@ -124,7 +128,7 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
         EXPECT_EQ(text.find("\n#"), std::string::npos) << table;
         const std::string sidecar = read_text(dir / "j1" / (std::string(table) + ".meta.yaml"));
         for (const char* line : {"sweep_file: tiny_sweep.yaml\n", "title: tiny sweep\n", "seeds: [1, 2]\n",
-                                 "  loaders[2].velocity: \"m/s\"\n"})
+                                 "  loaders[2].velocity: \"m/s\"\n", "varied: [\"loaders[2].velocity\"]\n"})
             EXPECT_NE(sidecar.find(line), std::string::npos) << table << ": " << line << "\n" << sidecar;
     }
     // events.csv: one row per event of every case.
@@ -155,13 +159,15 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             const double load_start = 1.5e-3;   // the settle stage of tiny_scene.yaml
             by_hand["precursor_count"].push_back(double(global - own.begin()));
             by_hand["global_slip_force_ratio"].push_back(std::stod(global->second->at("force_ratio")));
-            by_hand["global_slip_time"].push_back(global->first - load_start);
+            by_hand["global_slip_time_since_loading"].push_back(global->first - load_start);
             const auto run = std::find_if(per_run.begin(), per_run.end(), [&](const Row& r) {
                 return r.at("loaders[2].velocity") == velocity && r.at("seed") == seed;
             });
             ASSERT_NE(run, per_run.end());
             EXPECT_EQ(std::stod(run->at("precursor_count")), double(global - own.begin()));
             EXPECT_EQ(run->at("global_slip_force_ratio"), global->second->at("force_ratio"));
+            EXPECT_EQ(run->at("case"), "velocity-" + velocity);
+            EXPECT_EQ(run->at("run"), "velocity-" + velocity + "_seed-" + seed);
         }
         for (const auto& entry : by_hand) {
             const std::string& statistic = entry.first;  // not a structured binding: clang 14 cannot capture one
@@ -177,12 +183,15 @@ TEST(Sweep, TablesMatchTheRunsAndDoNotDependOnJobs) {
             ASSERT_EQ(values.size(), 2u) << "both seeds of the tiny sweep reach a global slip";
             const double mean = (values[0] + values[1]) / 2;
             const double sd = std::abs(values[0] - values[1]) / std::sqrt(2.0);
-            const double half = 12.706204736174707 * sd / std::sqrt(2.0);  // Student t, 1 dof, 97.5 %
             const double tol = 1e-8 * (std::abs(mean) + sd) + 1e-15;
             EXPECT_NEAR(std::stod(row->at("mean")), mean, tol);
             EXPECT_NEAR(std::stod(row->at("sd")), sd, tol);
-            EXPECT_NEAR(std::stod(row->at("ci_low")), mean - half, 10 * tol);
-            EXPECT_NEAR(std::stod(row->at("ci_high")), mean + half, 10 * tol);
+            // Two seeds are too few for an interval: none is given, and the table says why.
+            EXPECT_EQ(row->at("ci_low"), "nan");
+            EXPECT_EQ(row->at("ci_high"), "nan");
+            EXPECT_EQ(row->at("interval"), "too few seeds");
+            // Counted in (the sweep does not leave them out), and said how many.
+            EXPECT_EQ(row->at("disagreeing"), std::to_string(disagreeing["velocity-" + velocity]));
         }
         EXPECT_EQ(by_hand.size(), 3u);
     }
@@ -331,7 +340,7 @@ TEST(Sweep, CtrlCStopsTheRunningCaseWithACheckpointAndTheSweepRunAgainGoesOn) {
     EXPECT_EQ(record["simulated_time"].as<double>(), run["simulated_time"].as<double>());
     // sweep.csv too: steps is its third column from the end (the reason before it holds no comma).
     const std::string table = read_text(dir / "out" / "sweep.csv");
-    const auto row = table.find("\nseed-3,") + 1;
+    const auto row = table.find("\nbase,3,seed-3,") + 1;
     std::string line = table.substr(row, table.find('\n', row) - row);
     for (int k = 0; k < 2; ++k) line.erase(line.rfind(','));
     EXPECT_EQ(line.substr(line.rfind(',') + 1), run["steps"].as<std::string>()) << table;
@@ -361,7 +370,8 @@ TEST(Sweep, AFailingCaseIsRecordedAndTheOthersFinish) {
     EXPECT_EQ(std::stod(rows.at("unstable").at("stages[1].duration")), 4.0e-3);
     EXPECT_EQ(std::stod(rows.at("fine").at("integrator.dt")), 2.0e-7);
     EXPECT_EQ(std::stod(rows.at("unstable").at("integrator.dt")), 2.0e-5);
-    EXPECT_EQ(read_text(dir / "out" / "sweep.csv").rfind("case,stages[1].duration,integrator.dt,status,", 0), 0u);
+    EXPECT_EQ(read_text(dir / "out" / "sweep.csv").rfind("case,stages[1].duration,integrator.dt,seed,run,status,", 0),
+              0u);
     // No cell is quoted (a reason's commas become semicolons), so numpy.genfromtxt reads it too.
     std::istringstream table(read_text(dir / "out" / "sweep.csv"));
     std::string header, row;
@@ -403,15 +413,118 @@ TEST(Sweep, CheckNamesTheCaseAComponentRefuses) {
         << result.output;
     EXPECT_EQ(result.output.find("case junctions"), std::string::npos) << result.output;
 
-    // Over seeds the same refusal holds for every seed of the case: said once, naming them all.
+    // Over seeds the same refusal holds for every seed of the case: said once, naming the case.
     std::ofstream(dir / "laws.yaml", std::ios::app) << "seeds: [1, 2, 3]\n";
     const auto seeded = frictionlab("check laws.yaml", dir);
     EXPECT_EQ(seeded.code, 2) << seeded.output;
-    const std::string once =
-        "error: integrator: 3 cases: rate_and_state_seed-1 to rate_and_state_seed-3: rate_state is too stiff";
+    const std::string once = "error: integrator: case rate_and_state: rate_state is too stiff";
     const auto first = seeded.output.find(once);
     ASSERT_NE(first, std::string::npos) << seeded.output;
     EXPECT_EQ(seeded.output.find("rate_state is too stiff", first + once.size()), std::string::npos) << seeded.output;
+}
+
+TEST(Sweep, CheckSaysEachMistakeOnceNamingTheCasesItHoldsFor) {
+    // Two mistakes, each in a listed case that the grid makes two cases of, over two seeds: eight
+    // runs, two errors.
+    const fs::path dir = frictionlab::testing::work_directory();
+    std::ofstream(dir / "mistakes.yaml") << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
+                                         << "grid:\n  loaders[2].velocity: [0.08, 0.12]\n"
+                                         << "cases:\n  - name: a\n    set: [\"friction.mu_k=0.3\"]\n"
+                                         << "  - name: b\n    set: [\"stages[1].duration=-1\"]\n"
+                                         << "seeds: [1, 2]\n";
+    const auto result = frictionlab("check mistakes.yaml", dir);
+    EXPECT_EQ(result.code, 2) << result.output;
+    EXPECT_NE(result.output.find("mistakes.yaml:6:21: error: friction.mu_k: cases a_velocity-0.08 and a_velocity-0.12: "
+                                 "unknown key 'mu_k'; did you mean 'mu_d'?"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("mistakes.yaml:8:31: error: stages[1].duration: cases b_velocity-0.08 and "
+                                 "b_velocity-0.12: must be > 0, got -1"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("\n2 errors in mistakes.yaml"), std::string::npos) << result.output;
+}
+
+TEST(Sweep, RunsWhoseEventsDisagreeWithTheirCheckAreCountedAndCanBeLeftOut) {
+    // A check no run passes (a global slip must start within 1e-9 of its drop's peak) against the
+    // usual one: each run's verdict is in sweep.csv, and the statistics leave the disagreeing out.
+    const fs::path dir = frictionlab::testing::work_directory();
+    std::ofstream(dir / "strict.yaml")
+        << "scene: " SWEEP_FILES "/tiny_scene.yaml\nleave_out_disagreeing: true\n"
+        << "cases:\n  - name: strict\n    set: [\"observers[0].match_tolerance=1.0e-9\"]\n"
+        << "  - name: usual\n    set: [\"observers[0].match_tolerance=0.05\"]\n"
+        << "seeds: [1, 2]\n";
+    const auto swept = frictionlab("sweep -q strict.yaml -o out -j 2", dir);
+    ASSERT_EQ(swept.code, 0) << swept.output;
+    std::map<std::string, int> disagreeing;
+    for (const auto& [run, row] : sweep_rows(dir / "out" / "sweep.csv")) {
+        if (run.starts_with("strict")) EXPECT_EQ(row.at("events_agree"), "false") << run;
+        disagreeing[row.at("case")] += row.at("events_agree") == "false";
+    }
+    EXPECT_EQ(disagreeing["strict"], 2);
+    for (const Row& row : table_rows(dir / "out" / "sweep_statistics.csv")) {
+        if (row.at("statistic") != "global_slip_force_ratio") continue;
+        SCOPED_TRACE(row.at("case"));
+        const int left_out = disagreeing[row.at("case")];
+        EXPECT_EQ(row.at("disagreeing"), std::to_string(left_out));
+        EXPECT_EQ(std::stoi(row.at("n")) + std::stoi(row.at("missing")), 2 - left_out) << "the rest, counted";
+    }
+    EXPECT_NE(read_text(dir / "out" / "sweep_statistics.csv.meta.yaml").find("left out of the statistics"),
+              std::string::npos);
+}
+
+TEST(Sweep, ACaseCanRemoveAListItemToSwapTheLaw) {
+    // The base scene with an observer only a law with junctions can feed: a case that swaps the law
+    // removes it (`observers[1]=~`), as one does to compare laws on the headline.
+    const fs::path dir = frictionlab::testing::work_directory();
+    std::ofstream(dir / "base.yaml") << read_text(SWEEP_FILES "/tiny_scene.yaml")
+                                     << "  - type: contact_area\n    every: 1.0e-4\n    blocks: [3]\n";
+    const std::string cases =
+        "scene: base.yaml\ncases:\n  - name: junctions\n    set: [\"stages[1].duration=1.0e-3\"]\n"
+        "  - name: coulomb\n    set: [\"stages[1].duration=1.0e-3\", \"friction={type: coulomb}\"";
+    std::ofstream(dir / "kept.yaml") << cases << "]\n";
+    const auto kept = frictionlab("check kept.yaml", dir);
+    EXPECT_EQ(kept.code, 2) << kept.output;
+    EXPECT_NE(kept.output.find("case coulomb: contact_area reads the fields"), std::string::npos) << kept.output;
+
+    std::ofstream(dir / "laws.yaml") << cases << ", \"observers[1]=~\"]\n";
+    const auto checked = frictionlab("check laws.yaml", dir);
+    ASSERT_EQ(checked.code, 0) << checked.output;
+    const auto swept = frictionlab("sweep -q laws.yaml -o out -j 2", dir);
+    ASSERT_EQ(swept.code, 0) << swept.output;
+    const auto rows = sweep_rows(dir / "out" / "sweep.csv");
+    EXPECT_EQ(rows.at("junctions").at("status"), "done");
+    EXPECT_EQ(rows.at("coulomb").at("status"), "done");
+    EXPECT_TRUE(fs::exists(dir / "out/cases/junctions/contact_area.csv"));
+    EXPECT_FALSE(fs::exists(dir / "out/cases/coulomb/contact_area.csv"));
+    EXPECT_TRUE(fs::exists(dir / "out/cases/coulomb/ruptures.csv")) << "the other observers are kept";
+    const YAML::Node coulomb = YAML::LoadFile((dir / "out/cases/coulomb/run.yaml").string())["scene"];
+    EXPECT_EQ(coulomb["observers"].size(), 1u);
+    EXPECT_EQ(coulomb["friction"]["type"].as<std::string>(), "coulomb");
+}
+
+TEST(Sweep, KeysSetToOneValueInEveryCaseAreConstantsNotAxes) {
+    // One listed case over seeds (the tutorial's): its overrides are the same in every run, so the
+    // tables have no column for them and the figures no axis; the sidecars record them once.
+    const fs::path dir = frictionlab::testing::work_directory();
+    std::ofstream(dir / "seeds.yaml") << "scene: " SWEEP_FILES "/tiny_scene.yaml\n"
+                                      << "cases:\n  - name: short\n    set: [\"stages[1].duration=1.0e-3\", "
+                                         "\"observers[0].every=4.0e-6\"]\n"
+                                      << "seeds: [1, 2]\n";
+    const auto swept = frictionlab("sweep -q seeds.yaml -o out -j 2", dir);
+    ASSERT_EQ(swept.code, 0) << swept.output;
+    EXPECT_EQ(read_text(dir / "out" / "sweep.csv").rfind("case,seed,run,status,", 0), 0u)
+        << read_text(dir / "out" / "sweep.csv");
+    const YAML::Node meta = YAML::LoadFile((dir / "out" / "sweep.csv.meta.yaml").string());
+    EXPECT_EQ(meta["varied"].size(), 0u);
+    EXPECT_EQ(meta["constants"]["stages[1].duration"].as<std::string>(), "0.001");
+    EXPECT_EQ(meta["constants"]["observers[0].every"].as<std::string>(), "4e-06");
+    const auto plot = frictionlab("plot out", dir);
+    ASSERT_EQ(plot.code, 0) << plot.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "plots" / "sweep_loading_curves.png"));
+    for (const auto& file : fs::directory_iterator(dir / "out" / "plots"))
+        EXPECT_EQ(file.path().filename().string().rfind("sweep_against_", 0), std::string::npos)
+            << file.path() << ": a constant is no axis";
 }
 
 TEST(Sweep, BadValuesAreReportedWithTheirPlaceInTheSweepFile) {

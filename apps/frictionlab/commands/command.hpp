@@ -38,6 +38,7 @@ Command list_command();
 Command doc_command();
 Command example_command();
 Command plot_command();
+Command reproduce_command();
 Command study_command();
 Command sweep_command();
 

@@ -38,7 +38,7 @@ int run(RunCommandOptions o, const Invocation& in) {
         if (!recorded)
             throw InputError(
                 fmt::format("--resume: '{}' holds no run of FrictionLab (no run.yaml)", o.resume.string()));
-        if (recorded->status == "completed")
+        if (recorded->status == "done")
             throw InputError(
                 fmt::format("--resume: the run in '{}' is complete; nothing to resume", o.resume.string()));
         if (o.scene.empty()) o.scene = recorded->scene_file;

@@ -15,10 +15,17 @@
 
 namespace frictionlab::cli {
 
-/// A sweep with a run above its stable step fails, so there it is an error (`as_errors`, into
-/// `diagnostics`); a study records such a run as a failed row by design, so there it is a warning,
-/// printed. Returns how many runs are above their stable step (a refused run is reported, not counted).
-std::size_t report_stable_steps(const std::vector<std::pair<std::string, const Scene*>>& runs, bool as_errors,
-                                const GlobalOptions& global, const Registry& registry, Diagnostics& diagnostics);
+/// A run to check: its case's name, its own name and its scene.
+struct RunToCheck {
+    std::string case_name, run;
+    const Scene* scene;
+};
+
+/// Each finding once, with the cases it holds for (run_diagnostics.hpp). A sweep with a run above
+/// its stable step fails, so there it is an error (`as_errors`, into `diagnostics`); a study records
+/// such a run as a failed row by design, so there it is a warning, printed. Returns how many runs
+/// are above their stable step (a refused run is reported, not counted).
+std::size_t report_stable_steps(const std::vector<RunToCheck>& runs, bool as_errors, const GlobalOptions& global,
+                                const Registry& registry, Diagnostics& diagnostics);
 
 }  // namespace frictionlab::cli

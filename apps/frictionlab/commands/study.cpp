@@ -43,8 +43,9 @@ int study(const std::filesystem::path& file, std::string output, int jobs, bool 
     }
     if (!diagnostics.empty()) return report_errors(diagnostics, file);
     if (check_only) {
-        std::vector<std::pair<std::string, const Scene*>> scenes;
-        for (const auto& run : runs) scenes.emplace_back(spec.label(run), &run.scene);
+        std::vector<RunToCheck> scenes;
+        for (const auto& run : runs)
+            scenes.push_back({spec.cases.at(run.case_index).name, spec.label(run), &run.scene});
         const std::size_t above = report_stable_steps(scenes, false, in.global, registry, diagnostics);
         std::cout << file.string() << ": ok (study of " << runs.size() << " scenes"
                   << (above > 0 ? fmt::format("; {} above the stable step", above) : "") << ")\n";

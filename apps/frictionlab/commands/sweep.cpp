@@ -62,8 +62,9 @@ int sweep(const std::filesystem::path& file, std::string output, int jobs, bool 
         runs = sweep_runs(spec, output, registry, diagnostics);
     }
     if (check_only && diagnostics.empty() && root) {
-        std::vector<std::pair<std::string, const Scene*>> scenes;
-        for (const auto& run : runs) scenes.emplace_back(run.name, &run.scene);
+        std::vector<RunToCheck> scenes;
+        for (const auto& run : runs)
+            scenes.push_back({sweep_case_name(spec.cases.at(run.case_index)), run.name, &run.scene});
         report_stable_steps(scenes, true, in.global, registry, diagnostics);
     }
     if (!diagnostics.empty()) return root ? report_errors(diagnostics, file) : exit_code::bad_input;

@@ -14,15 +14,18 @@ class Table:
     observation, one column per name), with the provenance the run recorded (`provenance`: version,
     scene hash, seed, plugins). Read from NAME.csv (+ NAME.csv.meta.yaml) or NAME.h5.
 
-    `integer_columns` and `flag_columns` name the columns the observer declared integers (counts,
-    indices, step and stage numbers) and flags (0 or 1): to_records() and to_pandas() give them as
-    int64 and bool, where every value is one (a column with a missing value stays float64, as
-    pandas.read_csv reads it)."""
+    `units` gives each column's unit as the observer declared it ({"time": "s", "driving_force": "N",
+    ...}; "1" for a pure number). `integer_columns` and `flag_columns` name the columns the observer
+    declared integers (counts, indices, step and stage numbers) and flags (0 or 1): to_records() and
+    to_pandas() give them as int64 and bool, where every value is one (a column with a missing value
+    stays float64, as pandas.read_csv reads it)."""
 
     def __init__(self, name: str, path: str, columns: List[str], values: np.ndarray, provenance: dict,
-                 integer_columns: Sequence[str] = (), flag_columns: Sequence[str] = ()):
+                 integer_columns: Sequence[str] = (), flag_columns: Sequence[str] = (),
+                 units: Optional[Dict[str, str]] = None):
         self.name, self.path, self.columns, self.values, self.provenance = name, path, columns, values, provenance
         self.integer_columns, self.flag_columns = list(integer_columns), list(flag_columns)
+        self.units: Dict[str, str] = dict(units or {})
 
     def __getitem__(self, column: str) -> np.ndarray:
         """One column as a 1-D array, e.g. table["time"]."""
@@ -77,12 +80,12 @@ def read_table(path: str) -> Table:
             values = np.asarray(f["table"][:], dtype=float)
             attributes = f["table"].attrs
             names = {key: [c.decode() if isinstance(c, bytes) else str(c) for c in attributes.get(key, [])]
-                     for key in ("columns", "integer_columns", "flag_columns")}
+                     for key in ("columns", "integer_columns", "flag_columns", "units")}
             provenance = {k: (v.decode() if isinstance(v, bytes) else v.item() if hasattr(v, "item") else v)
                           for k, v in f.attrs.items()}
         columns = names["columns"]
         return Table(name, path, columns, values.reshape(-1, len(columns)), provenance, names["integer_columns"],
-                     names["flag_columns"])
+                     names["flag_columns"], dict(zip(columns, names["units"])))
     with open(path, newline="") as f:
         lines = f.readlines()
     columns = next(csv.reader(lines[:1]), [])
@@ -97,7 +100,7 @@ def read_table(path: str) -> Table:
             provenance = yaml.safe_load(f) or {}
         provenance.pop("columns", None)
     return Table(name, path, columns, values, provenance, provenance.pop("integer_columns", []),
-                 provenance.pop("flag_columns", []))
+                 provenance.pop("flag_columns", []), provenance.pop("units", None))
 
 
 def _number(cell: str) -> float:
@@ -135,7 +138,8 @@ class Run:
 
     @property
     def status(self) -> str:
-        """"completed", "failed" or "running"."""
+        """"done", "failed", "interrupted" or "running": run.yaml's `status`, the word a sweep's
+        sweep.csv uses for its runs too."""
         return self.metadata.get("status", "")
 
     @property

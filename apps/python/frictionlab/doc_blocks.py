@@ -1,17 +1,194 @@
-"""Generated blocks of Markdown documents: the text between <!-- NAME --> and <!-- /NAME --> is
-what a script measured, and the script replaces it (share/scripts/li2020-claims,
-share/scripts/lattice-convergence)."""
+"""Generated blocks of Markdown documents: the text between <!-- NAME ... --> and <!-- /NAME --> is
+what a command measured, and the command replaces it (frictionlab.li2020_claims,
+frictionlab.lattice_convergence, frictionlab.reproduce, share/scripts/update-readme-figures and
+event-matrix-table).
+
+A published number must not go stale in silence: each block's opening marker records what made it,
+the commit, the runs' scene hashes and seeds, and a fingerprint of everything its numbers depend on
+(BLOCKS: the physics sources, its scenes, its analysis code). tests/python/test_doc_blocks.py fails
+for a block whose fingerprint no longer matches the tree, naming the command that regenerates it.
+The fingerprint ignores comments and white space, so that rewording or reformatting a source does
+not call for new runs, and any other change does."""
+import hashlib
+import os
 import re
+import subprocess
+from typing import Dict, Iterable, List, NamedTuple, Optional, Sequence
+
+# What every block's numbers depend on: the code that simulates and tabulates.
+PHYSICS = ("core/src", "core/include", "plugins", "apps/campaign")
+SOURCE_SUFFIXES = (".cpp", ".hpp", ".h", ".py", ".yaml")
 
 
-def replace_block(path: str, name: str, text: str) -> None:
-    """Replaces what stands between the `name` markers of the file at `path` with `text`; raises
-    ValueError, leaving the file as it was, unless it has exactly one such block."""
+class Block(NamedTuple):
+    inputs: Sequence[str]  # files and folders below the repository's root, besides PHYSICS
+    command: str           # what regenerates it
+
+
+LI2020_CAMPAIGNS = ("configs/li2020/campaign_scene.yaml", "configs/li2020/fig7_precursor_scaling.yaml",
+                    "configs/li2020/fig8_nonuniform_loading.yaml")
+LATTICE = ("configs/li2020/campaign_scene.yaml", "apps/python/frictionlab/lattice_convergence.py",
+           "apps/python/frictionlab/ensembles.py")
+
+BLOCKS: Dict[str, Block] = {
+    "crossing-speeds": Block(("configs/headline.yaml", "share/scripts/update-readme-figures"),
+                             "share/scripts/update-readme-figures --headline-only"),
+    "li2020-claims": Block(LI2020_CAMPAIGNS + ("apps/python/frictionlab/li2020_claims.py",
+                                               "apps/python/frictionlab/ensembles.py"),
+                           "python3 -m frictionlab.li2020_claims FIG7 FIG8 --write README.md share/docs/campaigns.md "
+                           "(FIG7, FIG8: the sweeps' outputs, or a reproduction's runs/fig7, runs/fig8)"),
+    "fig8-means": Block(LI2020_CAMPAIGNS + ("apps/python/frictionlab/li2020_claims.py",),
+                        "python3 -m frictionlab.li2020_claims FIG7 FIG8 --write share/docs/campaigns.md"),
+    "fig7-means": Block(LI2020_CAMPAIGNS + ("apps/python/frictionlab/li2020_claims.py",),
+                        "python3 -m frictionlab.li2020_claims FIG7 FIG8 --write share/docs/campaigns.md"),
+    "li2020-reproduction": Block(("configs", "apps/python/frictionlab/reproduce",
+                                  "apps/python/frictionlab/li2020_claims.py", "apps/python/frictionlab/ensembles.py"),
+                                 "frictionlab reproduce li2020 -o out/li2020 -j 2 --write-docs"),
+    "tromborg2014-reproduction": Block(("configs/tromborg2014", "apps/python/frictionlab/reproduce",
+                                        "apps/python/frictionlab/ensembles.py"),
+                                       "frictionlab reproduce tromborg2014 -o out/tromborg2014 -j 2 --write-docs"),
+    "lattice-convergence": Block(LATTICE + ("configs/li2020/lattice_convergence.yaml",),
+                                 "python3 -m frictionlab.lattice_convergence (lattice-resolution.md says how)"),
+    "lattice-convergence-per-node": Block(LATTICE + ("configs/li2020/lattice_convergence_per_node.yaml",),
+                                          "python3 -m frictionlab.lattice_convergence (lattice-resolution.md)"),
+    "junction-noise": Block(LATTICE + ("configs/li2020/junction_noise.yaml",),
+                            "python3 -m frictionlab.lattice_convergence (lattice-resolution.md)"),
+    "event-matrix": Block(("configs/headline.yaml", "configs/peer_laws", "tests/model/test_event_conformance.cpp",
+                           "share/scripts/event-matrix-table"),
+                          "share/scripts/event-matrix-table (theory.md §5a says how)"),
+}
+
+OPENING = r"<!-- {name}(?P<stamp>(?: [a-z_]+=[^ ]*)*) -->"
+
+
+def repository_root(path: str) -> str:
+    """The source tree holding `path` (the folder with core/, plugins/ and CMakeLists.txt)."""
+    here = os.path.dirname(os.path.abspath(path))
+    while here != os.path.dirname(here):
+        if all(os.path.exists(os.path.join(here, p)) for p in ("core", "plugins", "CMakeLists.txt")):
+            return here
+        here = os.path.dirname(here)
+    raise ValueError(f"{path} is not inside a FrictionLab source tree")
+
+
+def files_below(root: str, entries: Iterable[str]) -> List[str]:
+    out = set()
+    for entry in entries:
+        full = os.path.join(root, entry)
+        if os.path.isfile(full):
+            out.add(entry)
+        for folder, _, names in os.walk(full):
+            out.update(os.path.relpath(os.path.join(folder, n), root) for n in names if n.endswith(SOURCE_SUFFIXES))
+    return sorted(out)
+
+
+def without_comments(path: str, text: str) -> str:
+    """The text without comments and white space: what a change of wording or layout leaves alone."""
+    if path.endswith((".cpp", ".hpp", ".h")):
+        text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+        text = re.sub(r"//[^\n]*", "", text)
+    else:
+        text = re.sub(r"(?m)^\s*#[^\n]*", "", text)  # whole-line comments of YAML, Python, shell
+        text = re.sub(r"(?m)\s+#\s[^\n]*", "", text)
+    return re.sub(r"\s+", "", text)
+
+
+def fingerprint(root: str, name: str) -> str:
+    """12 hex digits of the SHA-256 of the block's inputs and the physics, comments and spacing left out."""
+    digest = hashlib.sha256()
+    for rel in files_below(root, tuple(PHYSICS) + tuple(BLOCKS[name].inputs)):
+        with open(os.path.join(root, rel), encoding="utf-8", errors="replace") as f:
+            digest.update(rel.encode() + b"\0" + without_comments(rel, f.read()).encode() + b"\0")
+    return digest.hexdigest()[:12]
+
+
+def commit(root: str, name: str) -> str:
+    """The commit the tree is at (short), with +changes when what the block depends on has
+    uncommitted changes."""
+    def git(*args):
+        return subprocess.run(["git", "-C", root, *args], capture_output=True, text=True).stdout.strip()
+    head = git("rev-parse", "--short", "HEAD") or "unknown"
+    inputs = [p for p in tuple(PHYSICS) + tuple(BLOCKS[name].inputs) if os.path.exists(os.path.join(root, p))]
+    return head + ("+changes" if head != "unknown" and git("status", "--porcelain", "--", *inputs) else "")
+
+
+def seed_range(seeds: Iterable) -> str:
+    """Runs' seeds as a stamp records them: 1-10, or 3."""
+    ordered = sorted(int(x) for x in set(seeds))
+    return f"{ordered[0]}-{ordered[-1]}" if len(ordered) > 1 else str(ordered[0]) if ordered else ""
+
+
+def runs_of(*directories: str):
+    """(scene hashes, seeds) of the sweeps in `directories` as their sweep.csv lists them; none for a
+    directory without one."""
+    import pandas as pd
+    tables = [pd.read_csv(os.path.join(d, "sweep.csv")) for d in directories
+              if os.path.exists(os.path.join(d, "sweep.csv"))]
+    if not tables:
+        return [], ""
+    runs = pd.concat(tables)
+    hashes = runs["scene_hash"].dropna().astype(str).tolist() if "scene_hash" in runs else []
+    return hashes, seed_range(runs["seed"].dropna()) if "seed" in runs else ""
+
+
+def stamp(root: str, name: str, scene_hashes: Iterable[str] = (), seeds: str = "") -> str:
+    parts = [f"fingerprint={fingerprint(root, name)}", f"commit={commit(root, name)}"]
+    hashes = sorted({h for h in scene_hashes if h})
+    if hashes:  # one run's scene hash, or a digest of many (each seed's scene has its own)
+        parts.append(f"scene={hashes[0]}" if len(hashes) == 1 else
+                     f"scenes={len(hashes)}:{hashlib.sha256(','.join(hashes).encode()).hexdigest()[:12]}")
+    if seeds:
+        parts.append(f"seeds={seeds}")
+    return " ".join(parts)
+
+
+def replace_block(path: str, name: str, text: str, scene_hashes: Iterable[str] = (), seeds: str = "") -> None:
+    """Replaces what stands between the `name` markers of the file at `path` with `text` and stamps
+    the opening marker; raises ValueError, leaving the file as it was, unless it has exactly one
+    such block. A block on one line (text without a newline) stays on one line."""
+    if name not in BLOCKS:
+        raise ValueError(f"{name}: not a registered generated block (frictionlab.doc_blocks.BLOCKS)")
     with open(path) as f:
         old = f.read()
-    new, n = re.subn(rf"(<!-- {re.escape(name)} -->\n).*?(<!-- /{re.escape(name)} -->)",
-                     lambda m: m[1] + text + m[2], old, flags=re.S)
+    opening = "<!-- " + name + " " + stamp(repository_root(path), name, scene_hashes, seeds) + " -->"
+    separator = "\n" if text.endswith("\n") else ""
+    new, n = re.subn(OPENING.format(name=re.escape(name)) + r"\n?.*?(<!-- /" + re.escape(name) + " -->)",
+                     lambda m: opening + separator + text + m[m.lastindex], old, flags=re.S)
     if n != 1:
         raise ValueError(f"{path}: {n} <!-- {name} --> blocks, not one")
     with open(path, "w") as f:
         f.write(new)
+
+
+class Found(NamedTuple):
+    document: str
+    name: str
+    recorded: Optional[str]  # the fingerprint its marker records, None if none
+
+
+def blocks_in(path: str) -> List[Found]:
+    with open(path) as f:
+        text = f.read()
+    found = []
+    for m in re.finditer(r"<!-- ([a-z0-9-]+)((?: [a-z_]+=[^ ]*)*) -->", text):
+        if f"<!-- /{m[1]} -->" not in text:
+            continue
+        recorded = re.search(r"fingerprint=([0-9a-f]+)", m[2] or "")
+        found.append(Found(path, m[1], recorded[1] if recorded else None))
+    return found
+
+
+def stale(root: str, documents: Iterable[str]) -> List[str]:
+    """Each generated block of `documents` that is unregistered, unstamped or made from another tree
+    than this one, in words with the command that regenerates it."""
+    problems = []
+    for doc in documents:
+        for b in blocks_in(doc):
+            where = f"{os.path.relpath(doc, root)}: <!-- {b.name} -->"
+            if b.name not in BLOCKS:
+                problems.append(f"{where} is not a registered generated block (frictionlab.doc_blocks.BLOCKS)")
+            elif b.recorded != fingerprint(root, b.name):
+                problems.append(f"{where} was made from other code or scenes than these "
+                                f"(fingerprint {b.recorded}, now {fingerprint(root, b.name)}): regenerate it with "
+                                f"{BLOCKS[b.name].command}")
+    return problems

@@ -36,7 +36,8 @@ std::string to_string(const ParamValue& value) {
     struct Visitor {
         std::string operator()(bool b) const { return b ? "true" : "false"; }
         std::string operator()(std::int64_t i) const { return std::to_string(i); }
-        std::string operator()(double d) const { return fmt::format("{:g}", d); }
+        // NaN is refused as a value unless the key may be auto, whose stored form it is.
+        std::string operator()(double d) const { return std::isnan(d) ? "auto" : fmt::format("{:g}", d); }
         std::string operator()(const std::string& s) const { return s; }
         std::string operator()(const std::vector<double>& v) const {
             return join_list(v, [](double d) { return fmt::format("{:g}", d); });
@@ -67,7 +68,12 @@ std::string choice_violation(const ParamInfo& p, const std::string& s) {
 }  // namespace
 
 std::string violated_constraint(const ParamInfo& info, const ParamValue& value) {
-    if (auto* d = std::get_if<double>(&value)) return numeric_violation(info, *d);
+    if (auto* d = std::get_if<double>(&value)) {
+        if (!info.may_be_auto) return numeric_violation(info, *d);
+        if (std::isnan(*d)) return "";  // auto: the component's to choose
+        const auto m = numeric_violation(info, *d);
+        return m.empty() ? m : m + ", or auto";
+    }
     if (auto* i = std::get_if<std::int64_t>(&value)) {
         if (const auto& range = info.integer_range; range && (*i < range->first || *i > range->second))
             return fmt::format("must be between {} and {} (the range of its integer type), got {}", range->first,

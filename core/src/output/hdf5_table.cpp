@@ -87,6 +87,7 @@ Hdf5Table::Hdf5Table(const std::filesystem::path& file, const std::vector<std::s
     dataset_id_ = H5Dcreate2(file_id_, "table", H5T_IEEE_F64LE, space.id, H5P_DEFAULT, properties.id, H5P_DEFAULT);
     check(dataset_id_ >= 0, file, "create the dataset of");
     string_list_attribute(dataset_id_, "columns", columns, file);
+    string_list_attribute(dataset_id_, "units", units_of(columns, types), file);
     if (!types.integers.empty()) string_list_attribute(dataset_id_, "integer_columns", types.integers, file);
     if (!types.flags.empty()) string_list_attribute(dataset_id_, "flag_columns", types.flags, file);
     H5Fflush(file_id_, H5F_SCOPE_LOCAL);

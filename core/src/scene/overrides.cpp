@@ -31,6 +31,9 @@ public:
         if (!parse_path(equals)) return;
         value_offset_ = equals + 1;
         if (!parse_value()) return;
+        // A null value (`~` or null, unquoted) removes what the path names: a list item (the later
+        // ones move up) or a key of a mapping (it takes its default again).
+        remove_ = value_.IsNull();
         graft(root);
     }
 
@@ -119,7 +122,9 @@ private:
                         fmt::format("no such item: {} has {} item{}", path, at.size(), at.size() == 1 ? "" : "s")),
                    false;
         path = index_path(path, i);
-        if (last) {
+        if (last && remove_) {
+            at.remove(i);
+        } else if (last) {
             at[i] = value_;
             record(value_, max_depth);
         } else {
@@ -136,6 +141,7 @@ private:
                                                     : describe(at) + ", not a mapping";
             return fail(step.offset, path, "cannot set " + quote(step.key) + " in " + name + ": it is " + why), false;
         }
+        if (remove_) return remove_key(at, path, step, last);
         // Non-const lookups of yaml-cpp add the key (undefined until assigned) and turn a null into a map.
         const bool absent = !at[step.key].IsDefined();
         path = join_path(path, step.key);
@@ -148,6 +154,24 @@ private:
         }
         if (absent) record_key(at, step);
         if (!last) {
+            YAML::Node next = at[step.key];
+            at.reset(next);
+        }
+        return true;
+    }
+
+    // On the way to what is removed nothing is added: a key that is not there is reported.
+    bool remove_key(YAML::Node& at, std::string& path, const Step& step, bool last) {
+        const YAML::Node& lookup = at;  // a const lookup adds no key
+        const bool present = at.IsMap() && lookup[step.key].IsDefined();
+        const std::string parent = path.empty() ? "the scene" : path;
+        path = join_path(path, step.key);
+        if (!present)
+            return fail(step.offset, path, fmt::format("nothing to remove: {} has no key {}", parent, quote(step.key))),
+                   false;
+        if (last) {
+            at.remove(step.key);
+        } else {
             YAML::Node next = at[step.key];
             at.reset(next);
         }
@@ -169,6 +193,7 @@ private:
     std::vector<Step> steps_;
     std::size_t value_offset_ = 0;
     YAML::Node value_;
+    bool remove_ = false;
 };
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "scene/validator.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <regex>
 
@@ -334,14 +336,15 @@ private:
     }
 
     /// Parameters declared names_a_stage() (an observer's `stage:`), and observation cadences
-    /// the run could not advance by.
+    /// the run could not advance by or would never reach.
     void check_stage_parameters(const std::vector<ComponentRead>& components, const std::vector<StageSpec>& stages) {
         if (!stages_usable_) return;
         double total = 0;
         for (const auto& s : stages) total += s.duration;
         for (const auto& c : components) {
-            check_cadence_resolution(c, total);
+            check_cadence(c, total);
             if (!c.info || !c.section.valid) continue;
+            for (const auto& p : c.info->params) check_within_stage(c, p, stages, total);
             for (const auto& p : c.info->params) {
                 if (!p.names_stage) continue;
                 const auto* name = std::get_if<std::string>(&c.spec.values.at(p.key));
@@ -357,6 +360,27 @@ private:
                                             suggestion(*name, stage_names_, "stages")));
             }
         }
+    }
+
+    /// A time declared within_stage(): no longer than the (shortest) stage its stage key names, or than
+    /// the run while that key names none. A time left `auto` is the component's to choose.
+    void check_within_stage(const ComponentRead& c, const ParamInfo& p, const std::vector<StageSpec>& stages,
+                            double total) {
+        if (p.within_stage_of.empty()) return;
+        const auto* value = std::get_if<double>(&c.spec.values.at(p.key));
+        const auto* stage = std::get_if<std::string>(&c.spec.values.at(p.within_stage_of));
+        if (!value || std::isnan(*value) || !stage) return;
+        double longest = stage->empty() ? total : std::numeric_limits<double>::infinity();
+        for (const auto& s : stages)
+            if (s.name == *stage) longest = std::min(longest, s.duration);
+        // A stage without a valid duration has its own error.
+        if (!(longest > 0) || std::isinf(longest) || !(*value > longest)) return;
+        const auto given = c.section.given.find(p.key);
+        reporter_.error(
+            given == c.section.given.end() ? c.spec.where : reporter_.where(given->second.value),
+            join_path(c.spec.path, p.key),
+            fmt::format("{:.6g} s is longer than {} ({:.6g} s): give at most {:.6g} s, or auto", *value,
+                        stage->empty() ? std::string("the whole run") : "stage " + quote(*stage), longest, longest));
     }
 
     /// Two outputs of one run with the same name would overwrite each other (a file and a folder of
@@ -389,17 +413,26 @@ private:
     }
 
     /// An observation time is a running sum of `every`; below a few thousand ulps of the run's end
-    /// time, adding it no longer moves the sum and the run would never get past it.
-    void check_cadence_resolution(const ComponentRead& c, double total_duration) {
+    /// time, adding it no longer moves the sum and the run would never get past it. Longer than the
+    /// whole run, it is never due: the observer would record only what the run observes at stage
+    /// ends, which is no cadence (a cadence in another unit, ms for s, or a leftover of a longer run).
+    void check_cadence(const ComponentRead& c, double total_duration) {
         const auto given = c.section.given.find("every");
         if (given == c.section.given.end() || !(c.spec.every > 0)) return;
         const double finest = total_duration * 1e-12;
-        if (c.spec.every >= finest) return;
-        reporter_.error(given->second.value, join_path(c.spec.path, "every"),
-                        fmt::format("an observation every {:.3g} s cannot be scheduled over {:.6g} s of stages in "
-                                    "double precision; it must be at least {:.3g} s (1e-12 of the run), or use "
-                                    "every_steps: 1 to observe every step",
-                                    c.spec.every, total_duration, finest));
+        const std::string path = join_path(c.spec.path, "every");
+        if (c.spec.every < finest)
+            reporter_.error(given->second.value, path,
+                            fmt::format("an observation every {:.3g} s cannot be scheduled over {:.6g} s of stages in "
+                                        "double precision; it must be at least {:.3g} s (1e-12 of the run), or use "
+                                        "every_steps: 1 to observe every step",
+                                        c.spec.every, total_duration, finest));
+        if (c.spec.every > total_duration)
+            reporter_.error(given->second.value, path,
+                            fmt::format("an observation every {:.6g} s is longer than the whole run ({:.6g} s of "
+                                        "stages), so it never comes: give at most {:.6g} s (the observer then also "
+                                        "records each stage's end), or every_steps",
+                                        c.spec.every, total_duration, total_duration));
     }
 
     const SourceMap* sources_;

@@ -131,7 +131,12 @@ bool report_if(const std::string& message, const YAML::Node& at, const std::stri
 
 std::optional<ParamValue> read_scalar_value(const ParamInfo& info, const Entry& entry, const std::string& path,
                                             const Reporter& reporter) {
+    const YAML::Node& node = entry.value;
+    if (info.may_be_auto && node.IsScalar() && !is_quoted(node) && node.Scalar() == "auto")
+        return ParamValue(std::numeric_limits<double>::quiet_NaN());
     Scalar s = read_scalar(info.type, entry.value);
+    if (!s.value && info.may_be_auto && s.error.starts_with("expected a number"))
+        s.error.insert(std::string_view("expected a number").size(), " or auto");
     if (s.value) s.error = violated_constraint(info, *s.value);
     if (!report_if(s.error, entry.site(), path, reporter)) return std::nullopt;
     return s.value;
@@ -164,7 +169,7 @@ void report_unknown(const YAML::Node& key, const std::string& path, const Sectio
     const std::string name = key.Scalar();
     std::string guess;
     for (const auto& p : keys.params)
-        if (std::find(p.former_keys.begin(), p.former_keys.end(), name) != p.former_keys.end()) guess = p.key;
+        if (std::find(p.also_known_as.begin(), p.also_known_as.end(), name) != p.also_known_as.end()) guess = p.key;
     if (guess.empty()) guess = did_you_mean(name, known);
     if (!guess.empty()) {
         reporter.error(key, join_path(path, name),
@@ -180,7 +185,7 @@ void report_unknown(const YAML::Node& key, const std::string& path, const Sectio
 bool is_whole(double x) { return std::isfinite(x) && x == std::trunc(x) && std::fabs(x) < 0x1p53; }
 
 std::string real_text(double x) {
-    if (std::isnan(x)) return ".nan";
+    if (std::isnan(x)) return "auto";  // the only NaN a scene holds: a key left to its component
     if (std::isinf(x)) return x > 0 ? ".inf" : "-.inf";
     char buffer[64];
     const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
@@ -223,7 +228,7 @@ std::string expectation(const ParamInfo& info) {
         case ValueType::integer:
             return "an integer" + unit;
         case ValueType::real:
-            return "a number" + unit;
+            return "a number" + unit + (info.may_be_auto ? " or auto" : "");
         case ValueType::string:
             return info.choices.empty() ? "a string" : "one of " + quote_list(info.choices);
         case ValueType::real_list:

@@ -113,7 +113,7 @@ public:
             throw RunError(message);
         }
         finish_observers();
-        record.status = "completed";
+        record.status = "done";
         record.summary = summary();
         record.write(output_);
         return record.summary;

@@ -87,6 +87,7 @@ std::optional<RecordedRun> read_recorded_run(const std::filesystem::path& dir) {
     if (const auto overrides = record["overrides"]; overrides && overrides.IsSequence())
         for (const auto& o : overrides) run.overrides.push_back(o.as<std::string>(""));
     run.status = record["status"].as<std::string>("");
+    if (run.status == "completed") run.status = "done";  // a record written before a finished run was `done`
     run.scene_hash = record["scene_hash"].as<std::string>("");
     run.summary.steps = record["steps"].as<long long>(0);
     run.summary.evaluations = record["evaluations"].as<long long>(0);

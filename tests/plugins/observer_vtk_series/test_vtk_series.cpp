@@ -25,6 +25,7 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "cli.hpp"
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/simulation/system.hpp"
@@ -478,6 +479,7 @@ TEST_F(VtkSeriesTest, EndWithoutBeginWritesNothing) {
 
 TEST_F(VtkSeriesTest, TheFileHoldsTheTimeTheCollectionLists) {
     make_system();
+    info_.loading_start = 0.01;  // a settle of 10 ms
     VtkSeries observer = make_observer();
     observer.begin(view());
     // 1.25 million steps of 2e-7 s summed one by one land a few 1e-12 s off 0.25.
@@ -499,6 +501,14 @@ TEST_F(VtkSeriesTest, TheFileHoldsTheTimeTheCollectionLists) {
         ASSERT_NE(array, nullptr) << name;
         EXPECT_EQ(array->GetComponent(0, 0), 0.25) << name << ": as the .pvd lists it, not " << t;
     }
+    // The time since loading started, rounded alike, beside the run's clock in both.
+    vtkDataArray* since = reader->GetOutput()->GetFieldData()->GetArray("time_since_loading");
+    ASSERT_NE(since, nullptr);
+    EXPECT_EQ(since->GetComponent(0, 0), 0.24);
+    EXPECT_NE(
+        frictionlab::testing::read_text(dir_ / "lattice.pvd").find("timestep=\"0.25\" time_since_loading=\"0.24\""),
+        std::string::npos)
+        << frictionlab::testing::read_text(dir_ / "lattice.pvd");
 }
 
 TEST(VtkSeriesCollection, TimesAreWrittenWithoutTheDriftOfASumOfSteps) {
@@ -512,6 +522,10 @@ TEST(VtkSeriesCollection, TimesAreWrittenWithoutTheDriftOfASumOfSteps) {
     // A time between two observations on the step grid keeps its digits: 3 steps of 1e-7 s.
     EXPECT_EQ(VtkSeries::collection_time(3e-7, 3), "0.0000003");
     EXPECT_EQ(VtkSeries::collection_time(1.23456789e-3, 1000), "0.00123457");  // a hundredth of 1.2e-6 s
+    // Another clock of the same snapshot keeps the run clock's decimals, and its sign while settling.
+    EXPECT_EQ(VtkSeries::collection_time(t - 0.01, t, 2'040'000), "0.398");
+    EXPECT_EQ(VtkSeries::collection_time(0.002 - 0.01, 0.002, 10'000), "-0.008");
+    EXPECT_EQ(VtkSeries::collection_time(-1e-12, 0.01, 50'000), "0") << "loading's start itself";
 }
 
 TEST(VtkSeriesSpec, PrefixMustBeAPlainFileName) {

@@ -1,11 +1,11 @@
-"""The figures of a campaign: a sweep's, from its sweep.csv, events.csv and sweep_statistics.csv
-(Li2020 Figs. 7, 8), and an accuracy study's, from its study.csv and, over seeds, its ensemble.csv.
+"""The figures of a campaign: a sweep's, from its sweep.csv, events.csv, run_statistics.csv and
+sweep_statistics.csv (Li2020 Figs. 7, 8), and an accuracy study's, from its study.csv and, over
+seeds, its ensemble.csv.
 Each function draws onto the Axes it is given (a new figure of the command's size if None) and
 returns them; plot_sweep and plot_study write them as `frictionlab plot SWEEP_DIR` and
 `frictionlab study` do. Axes name the varied keys by symbol and unit, titles come from the
 campaign file's `title`, an empty panel says why, and the seeds of a case are told apart."""
 import os
-import re
 
 import matplotlib.lines
 import matplotlib.ticker
@@ -16,19 +16,16 @@ from ._figure import axes_of, no_data, save, seed_style
 from ._labels import key_axis_label, key_display, key_value_label
 from ._tables import campaign_meta, campaign_rows, number, sidecar_text, table
 
-# The columns of sweep.csv that are not a varied key of the scene.
-SWEEP_RESULTS = {"case", "status", "reason", "scene_hash", "global_static_coefficient", "events", "precursor_count",
-                 "first_precursor_force_ratio", "steps", "wall_seconds", "cpu_seconds"}
+def varied_keys(sweep):
+    """The scene's key paths a sweep varies (but the seed), as its sidecar records them: only the
+    keys that take more than one value over its runs; one set to the same value in every case is
+    a constant of the sweep (the sidecar's `constants`), not an axis."""
+    return list(campaign_meta(sweep, "sweep.csv").get("varied") or [])
 
 
-def varied_keys(cases):
-    """The scene's key paths a sweep varies but the seed, from the rows of its sweep.csv."""
-    return [k for k in (cases[0].keys() if cases else []) if k not in SWEEP_RESULTS and k != "seed"]
-
-
-def numeric_keys(cases):
+def numeric_keys(sweep, cases):
     """The varied keys whose every value is a number (such as theta): each has its sweep_against."""
-    return [k for k in varied_keys(cases) if all(np.isfinite(number(r[k])) for r in cases)]
+    return [k for k in varied_keys(sweep) if all(np.isfinite(number(r[k])) for r in cases)]
 
 
 def sweep_units(sweep):
@@ -42,11 +39,10 @@ def sweep_title(sweep):
 
 
 def case_group(row, varied, units=None):
-    """The case of a row of sweep.csv or events.csv apart from its seed, as a label of its values
-    by symbol and unit ("$h$ = 5 mm, $F_N$ = 400 N")."""
+    """The case of a row of sweep.csv or events.csv (its seeds together), as a label of its values
+    by symbol and unit ("$h$ = 5 mm, $F_N$ = 400 N"), or its name where no key varies."""
     units = units or {}
-    return (", ".join(key_value_label(k, row[k], units.get(k, "")) for k in varied)
-            or re.sub(r"_seed-[0-9]+$", "", row["case"]))
+    return ", ".join(key_value_label(k, row[k], units.get(k, "")) for k in varied) or row["case"]
 
 
 def seed_of_row(row):
@@ -71,7 +67,7 @@ def sweep_precursor_lengths(sweep, ax=None):
     coloured by case, a marker per seed (Li2020 Fig. 7)."""
     cases = campaign_rows(sweep, "sweep.csv")
     events = campaign_rows(sweep, "events.csv")
-    varied, units = varied_keys(cases), sweep_units(sweep)
+    varied, units = varied_keys(sweep), sweep_units(sweep)
     groups = list(dict.fromkeys(case_group(r, varied, units) for r in cases))
     seeds = list(dict.fromkeys(seed_of_row(r) for r in cases))
     ax = axes_of(ax, figsize=(7, 5))
@@ -103,20 +99,6 @@ SWEEP_PANELS = [
 ]
 
 
-def run_statistics(events):
-    """{statistic of SWEEP_PANELS: value} of one run from its rows of events.csv, as
-    sweep_statistics.csv computes them (share/docs/accuracy-standard.md); NaN where the run lacks
-    the event."""
-    order = sorted(events, key=lambda e: number(e["t_start"]))
-    first_global = next((k for k, e in enumerate(order) if e["kind"] == "global"), None)
-    precursors = [e for e in order[:first_global] if e["kind"] != "global"]
-    return {
-        "precursor_count": float("nan") if first_global is None else float(len(precursors)),
-        "first_precursor_force_ratio": number(precursors[0]["force_ratio"]) if precursors else float("nan"),
-        "global_slip_force_ratio": float("nan") if first_global is None else number(order[first_global]["force_ratio"]),
-    }
-
-
 def sweep_against(sweep, key, axes=None):
     """The precursor count before the first global slip, the first precursor's F_S/F_N and F_S/F_N
     at the first global slip against the numeric varied `key` of the sweep (e.g.
@@ -124,14 +106,15 @@ def sweep_against(sweep, key, axes=None):
     its 95 % interval (sweep_statistics.csv; no bar with fewer than two seeds), a series per value
     of the other varied keys (Li2020 Figs. 7, 8)."""
     cases = [r for r in campaign_rows(sweep, "sweep.csv") if r["status"] == "done"]
-    events = campaign_rows(sweep, "events.csv")
     statistics = (campaign_rows(sweep, "sweep_statistics.csv")
                   if os.path.exists(os.path.join(sweep, "sweep_statistics.csv")) else [])
     units = sweep_units(sweep)
-    others = [k for k in varied_keys(cases) if k != key]
+    others = [k for k in varied_keys(sweep) if k != key]
     _, _, factor = key_display(key, units.get(key, ""))
     series = list(dict.fromkeys(tuple(r[k] for k in others) for r in cases))
-    per_run = {r["case"]: run_statistics([e for e in events if e["case"] == r["case"]]) for r in cases}
+    # Each run's statistics as the sweep computed them (run_statistics.csv), by run.
+    per_run = {r["run"]: {s: number(r[s]) for s, _, _ in SWEEP_PANELS}
+               for r in campaign_rows(sweep, "run_statistics.csv")}
     xs = sorted({x * factor for x in (number(r[key]) for r in cases) if np.isfinite(x)})
     axes = axes_of(axes, 1, 3, figsize=(13, 4))
     for ax, (statistic, title, why) in zip(axes, SWEEP_PANELS):
@@ -141,7 +124,7 @@ def sweep_against(sweep, key, axes=None):
             rows = [r for r in cases if tuple(r[o] for o in others) == values]
             for x in sorted({number(r[key]) for r in rows}):
                 at = [r for r in rows if number(r[key]) == x]
-                ys = [y for y in (per_run[r["case"]][statistic] for r in at) if np.isfinite(y)]
+                ys = [y for y in (per_run[r["run"]][statistic] for r in at) if np.isfinite(y)]
                 if not ys:
                     continue
                 ax.plot([x * factor] * len(ys), ys, "o", color=colour, alpha=0.3, ms=3)
@@ -168,13 +151,13 @@ def sweep_loading_curves(sweep, ax=None):
     """Every case's F_S against time since its loading started, overlaid, coloured by case, a line
     style per seed."""
     cases = campaign_rows(sweep, "sweep.csv")
-    varied, units = varied_keys(cases), sweep_units(sweep)
+    varied, units = varied_keys(sweep), sweep_units(sweep)
     groups = list(dict.fromkeys(case_group(r, varied, units) for r in cases))
     seeds = list(dict.fromkeys(seed_of_row(r) for r in cases))
     ax = axes_of(ax, figsize=(7, 5))
     unknown = False  # a case whose loading start is unknown is drawn from its own start
     for r in cases:
-        case = os.path.join(sweep, "cases", r["case"])
+        case = os.path.join(sweep, "cases", r["run"])
         curve = table(case, "loading_curve")
         if curve is None or "driving_force" not in curve.dtype.names:
             continue
@@ -203,7 +186,7 @@ def plot_sweep(sweep):
     save(sweep_precursor_lengths(sweep).figure, out, "sweep_precursor_lengths")
     cases = campaign_rows(sweep, "sweep.csv")
     seeds = len({seed_of_row(r) for r in cases})
-    for key in numeric_keys(cases):
+    for key in numeric_keys(sweep, cases):
         fig = sweep_against(sweep, key)[0].figure
         over = f"the mean over {seeds} seeds (square) with its 95 % interval, each seed (faint dot)" if seeds > 1 \
             else "each case (square)"
@@ -217,9 +200,9 @@ def plot_sweep(sweep):
 STUDY_ERRORS = [
     ("err_settled_normal_force", "settled normal force profile"),
     ("err_settled_friction_force", "settled friction force profile"),
-    ("err_first_precursor_time", "time of the first precursor"),
+    ("err_first_precursor_time_since_loading", "time of the first precursor"),
     ("err_first_precursor_force", "$F_S$ of the first precursor"),
-    ("err_global_static_coefficient", "global $F_S/F_N$"),
+    ("err_global_slip_force_ratio", "global $F_S/F_N$"),
     ("err_event_slip", "slip profile of the first event"),
     ("err_event_time", "start times of the events to the 2nd global slip"),
     ("err_event_force", "$F_S$ of the events to the 2nd global slip"),

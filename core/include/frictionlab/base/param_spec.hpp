@@ -51,9 +51,15 @@ struct ParamInfo {
     /// An integer member narrower than the scene's 64 bits: the values it can hold. A value outside
     /// would wrap around when stored (nx = 4294967307 would build 11 columns).
     std::optional<std::pair<std::int64_t, std::int64_t>> integer_range;
-    std::vector<std::string> choices;      // allowed strings
-    bool names_stage = false;              // a string that must name a stage of the scene ("" names none)
-    std::vector<std::string> former_keys;  // names the key had before: a scene using one is told this key
+    std::vector<std::string> choices;  // allowed strings
+    bool names_stage = false;          // a string that must name a stage of the scene ("" names none)
+    /// A time that must not exceed the stage the key of this name names (its shortest stage of that
+    /// name; "" names none: the whole run), e.g. how long an observer waits within the stage it observes.
+    std::string within_stage_of;
+    std::vector<std::string> also_known_as;  // other names for it (a former name, another symbol): did-you-mean only
+    /// A number that may also be `auto`, stored as NaN: the component derives it from the scene and
+    /// reports what it chose (Context::resolved), as `check` prints it.
+    bool may_be_auto = false;
 };
 
 /// A file or folder a component writes at the top of the run's output directory, and the key whose
@@ -153,10 +159,24 @@ public:
             info().names_stage = true;
             return *this;
         }
-        /// A name the key had before. An unknown key is answered with the closest name, which for a
-        /// renamed key may be a sibling (mu_k is as close to mu_s as to mu_d); this names the new one.
-        Field& formerly(std::string old_key) {
-            info().former_keys.push_back(std::move(old_key));
+        /// A time no longer than the stage that key `stage_key` names (the whole run while it names none).
+        Field& within_stage(std::string stage_key) {
+            info().within_stage_of = std::move(stage_key);
+            return *this;
+        }
+        /// Another name the quantity is known by: a name the key had before, or the symbol other
+        /// texts use for it (mu_k for the kinetic coefficient mu_d). Only the did-you-mean reads it:
+        /// an unknown key is otherwise answered with the closest name by spelling, which may be a
+        /// sibling of another meaning (mu_k is as close to mu_s as to mu_d); a scene that uses this
+        /// name is told the key. It is not accepted in place of the key.
+        Field& also_known_as(std::string name) {
+            info().also_known_as.push_back(std::move(name));
+            return *this;
+        }
+        /// A number that may be written `auto` (stored as NaN, the member's default when it is NaN):
+        /// the component derives the value from the scene and records its choice.
+        Field& or_auto() {
+            info().may_be_auto = true;
             return *this;
         }
         /// The key must be given in the scene; the member initialiser is then only an example value.

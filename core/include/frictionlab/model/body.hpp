@@ -55,6 +55,10 @@ struct Body {
     double reference_spacing = 0;
     /// The interface's contact frame; a bulk model other than a 2D one with its base below sets it.
     ContactFrame contact_frame;
+    /// The slowest long-wave speed of the bulk (a lattice's c_S, a chain's one speed), m/s; 0:
+    /// unknown. L / wave_speed is the time the body takes to ring: observers that must look past its
+    /// vibrations (the rupture detector's slip rate) average over it.
+    double wave_speed = 0;
     std::map<std::string, NodeSet, std::less<>> node_sets;
     std::vector<std::array<Index, 2>> bonds;  // springs, for pictures and bond-force output
     std::vector<std::array<Index, 4>> cells;  // 2D: quads, counter-clockwise; empty for a chain or a 3D body

@@ -39,8 +39,11 @@ struct Provenance {
     std::string yaml(int indent = 0) const;
 };
 
-/// The sidecar of a CSV table: its provenance and its column names, as YAML, with those that are
-/// integers or flags (`integer_columns`, `flag_columns`) when there are any.
+/// The unit of each of `columns`, in their order ("" where `types` gives none).
+std::vector<std::string> units_of(const std::vector<std::string>& columns, const ColumnTypes& types);
+
+/// The sidecar of a CSV table: its provenance, its column names and each one's unit (`units`), as
+/// YAML, with those that are integers or flags (`integer_columns`, `flag_columns`) when there are any.
 std::string table_sidecar_yaml(const Provenance& provenance, const std::vector<std::string>& columns,
                                const ColumnTypes& types = {});
 

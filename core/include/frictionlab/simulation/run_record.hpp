@@ -27,7 +27,7 @@ struct RunRecord {
     const RunInfo& info;
     const std::vector<std::string>& command_line;  // the command as typed (argv)
     const std::vector<std::string>& overrides;     // the `--set key.path=value` list, in order
-    std::string status = "running";                // then interrupted, failed or completed
+    std::string status = "running";                // then interrupted, failed or done
     std::string error;                             // why it failed, or what interrupted it
     RunSummary summary;
     long long resumed_from_step = -1;  // run --resume: the checkpoint's step
@@ -47,12 +47,12 @@ struct RunRecord {
 struct RecordedRun {
     std::filesystem::path scene_file;    // as given to the run
     std::vector<std::string> overrides;  // its --set list
-    std::string status, scene_hash;      // running, interrupted, failed or completed
+    std::string status, scene_hash;      // running, interrupted, failed or done
     bool has_checkpoint = false;         // a checkpoint file is there (intact or not)
     RunSummary summary;                  // how far it got (without the integrator's statistics)
     double loading_start = 0;            // s of simulated time when loading started (loading_start())
     /// A run stopped before its end with a checkpoint to go on from.
-    bool resumable() const { return status != "completed" && has_checkpoint; }
+    bool resumable() const { return status != "done" && has_checkpoint; }
 };
 
 /// Reads `dir`/run.yaml; nothing if there is none or it is not FrictionLab's. Something else in its

@@ -41,6 +41,8 @@ struct Campaign {
     std::vector<std::int64_t> seeds;  // empty: the base scene's own seed only
     SourceLocation seeds_where;
     std::vector<CampaignCase> cases;  // in the order their runs come
+    /// A sweep's statistics leave out the runs whose events disagree with their own check.
+    bool leave_out_disagreeing = false;
 
     /// Every case with every seed (none where `seeds` is empty: the base scene's own), case by
     /// case, so that a case's runs are adjacent. Their names, values and scenes are left to the

@@ -23,6 +23,9 @@ const std::vector<EventStatistic>& event_statistics();
 struct EventStatistics {
     static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     std::vector<double> values = std::vector<double>(event_statistics().size(), nan);
+    /// The run's own check of its events (precursors_summary.yaml, theory.md §5a): whether they agree
+    /// with its loading curve and slip field; none where its summary has no verdict.
+    std::optional<bool> events_agree;
     double& operator[](const std::string& name);
     double at(const std::string& name) const;
 };
@@ -31,6 +34,10 @@ struct EventStatistics {
 /// no drops), with `load_start` the time loading began, s.
 EventStatistics read_event_statistics(const RuptureFiles& rupture, const std::filesystem::path& loading_curve,
                                       double load_start);
+
+/// The verdict of a run's check of its events in its precursors `summary` (event_check.verdict):
+/// true `agree`, false `disagree`; none without one.
+std::optional<bool> recorded_events_agree(const std::filesystem::path& summary);
 
 /// When loading began in the run written to `directory`, s of simulated time, as its run.yaml
 /// records it (loading_start(); 0 without a record).

@@ -19,10 +19,10 @@ struct CaseOutcome {
     /// Normal and friction force of each block at the end of the settling stage, over the mean
     /// normal force per block (so that profiles at different resolutions compare).
     std::vector<double> settled_normal, settled_friction;
-    double first_precursor_time = nan;       // start of the first non-global event, since loading began (s)
-    double first_precursor_force = nan;      // F_S at its start (N)
-    double global_static_coefficient = nan;  // F_S/F_N at the first global slip (theory.md B.20)
-    std::vector<double> event_slip;          // slip of each block over the first event (m)
+    double first_precursor_time_since_loading = nan;  // start of the first non-global event (s)
+    double first_precursor_force = nan;               // F_S at its start (N)
+    double global_slip_force_ratio = nan;             // F_S/F_N at the first global slip (theory.md B.20)
+    std::vector<double> event_slip;                   // slip of each block over the first event (m)
     /// The rupture events up to and including the second global slip, in time order: start since
     /// loading began (s), F_S at it (N) and length l/L.
     struct Event {
@@ -42,8 +42,8 @@ CaseOutcome read_case_outcome(const std::filesystem::path& dir, const RuptureFil
 /// for profiles. NaN where the case lacks what the reference has (named in `note`).
 struct CaseErrors {
     double settled_normal_force = CaseOutcome::nan, settled_friction_force = CaseOutcome::nan;
-    double first_precursor_time = CaseOutcome::nan, first_precursor_force = CaseOutcome::nan;
-    double global_static_coefficient = CaseOutcome::nan, event_slip = CaseOutcome::nan;
+    double first_precursor_time_since_loading = CaseOutcome::nan, first_precursor_force = CaseOutcome::nan;
+    double global_slip_force_ratio = CaseOutcome::nan, event_slip = CaseOutcome::nan;
     /// Over the events both have (in time order, up to the second global slip): the largest
     /// relative error of their start time and F_S, and the largest difference of l/L.
     double event_time = CaseOutcome::nan, event_force = CaseOutcome::nan, event_length = CaseOutcome::nan;

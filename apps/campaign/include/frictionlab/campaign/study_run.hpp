@@ -21,6 +21,7 @@ namespace frictionlab {
 struct StudyRow {
     std::string name, family;
     std::string label;               // the name, with the seed where the study has seeds
+    std::string run;                 // its directory below cases/: <name>, or <name>/seed_<seed>
     std::string scene_hash;          // of the run's resolved scene (seed included), as its run.yaml records it
     std::vector<std::string> knobs;  // one value per StudyResult::knob_columns ("" where it does not apply)
     RunSummary summary;

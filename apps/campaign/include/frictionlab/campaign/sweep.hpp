@@ -17,6 +17,10 @@ class Registry;
 /// A sweep is a campaign and nothing more: its grid and listed cases make its cases.
 struct Sweep : Campaign {};
 
+/// A case's name in the sweep's tables: its `name:`, else its values (a point of the grid), else
+/// `base` (the base scene alone, over seeds).
+std::string sweep_case_name(const CampaignCase& c);
+
 /// The sweep's own keys, with file:line:column errors; the base scene is not read yet.
 Sweep read_sweep(const std::filesystem::path& file, Diagnostics& diagnostics);
 

@@ -1,10 +1,10 @@
-#!/usr/bin/python3
 """The lattice size as a resolution: what a sweep over lattice sizes (one case per lattice, several
 seeds each) gives at each, with 95 % bootstrap intervals (frictionlab.ensembles), as a Markdown table
 and a figure.
 
     build/bin/frictionlab sweep configs/li2020/lattice_convergence.yaml -o out/convergence -j 2
-    share/scripts/lattice-convergence out/convergence [--figure F.png] [--write share/docs/lattice-resolution.md]
+    PYTHONPATH=build/python /usr/bin/python3 -m frictionlab.lattice_convergence out/convergence [--figure F.png]
+        [--write share/docs/lattice-resolution.md]
 
 The quantities: the settled normal-force profile (Fig. 5; from interface_history's row at the start
 of loading), the first precursor's F_S/F_N and l/L, the precursor count before the first global
@@ -13,19 +13,16 @@ the first global slip's crossing speed). Each lattice is compared with the fines
 their root-mean-square difference to the finest's mean profile. With --by case the runs are
 grouped by their case instead (a sweep that varies something else on one lattice,
 configs/li2020/junction_noise.yaml), each compared with the last case. With --write, the table
-replaces what stands between the <!-- BLOCK --> markers (--block, default lattice-convergence). Run
-from the repository root after building (it imports build/python)."""
+replaces what stands between the <!-- BLOCK --> markers (--block, default lattice-convergence)."""
 import argparse
 import os
-import re
 import sys
 
 import numpy as np
 import pandas as pd
 import yaml
 
-sys.path.insert(0, os.path.join(os.getcwd(), "build", "python"))
-from frictionlab import doc_blocks, ensembles  # noqa: E402
+from . import doc_blocks, ensembles
 
 # (column of the per-run table, label, format)
 QUANTITIES = [
@@ -39,9 +36,9 @@ QUANTITIES = [
 ]
 
 
-def read_run(directory, case):
-    """One run's lattice, events and settled profile."""
-    folder = os.path.join(directory, "cases", case)
+def read_run(directory, run):
+    """One run's lattice, events and settled profile (`run`: its directory below cases/)."""
+    folder = os.path.join(directory, "cases", run)
     with open(os.path.join(folder, "run.yaml")) as f:
         record = yaml.safe_load(f)
     bulk = record["scene"]["bulk"]
@@ -69,22 +66,21 @@ def first_of(events, global_slip):
 
 
 def per_run(directory, by="lattice"):
-    """One row per run: its group (lattice, or case without its seed), seed and quantities, and the
-    profiles by group; the groups in the order they are compared, the last the reference."""
+    """One row per run: its group (lattice, or case), seed and quantities, and the profiles by
+    group; the groups in the order they are compared, the last the reference."""
     statistics = pd.read_csv(os.path.join(directory, "run_statistics.csv"))
-    status = pd.read_csv(os.path.join(directory, "sweep.csv"), usecols=["case", "status"])
-    done = set(status[status["status"] == "done"]["case"])  # an interrupted sweep lists the rest too
-    statistics = statistics[statistics["case"].isin(done)]
+    status = pd.read_csv(os.path.join(directory, "sweep.csv"), usecols=["run", "status"])
+    done = set(status[status["status"] == "done"]["run"])  # an interrupted sweep lists the rest too
+    statistics = statistics[statistics["run"].isin(done)]
     rows, profiles = [], {}
     for order, s in statistics.iterrows():
-        bulk, events, blocks = read_run(directory, s["case"])
+        bulk, events, blocks = read_run(directory, s["run"])
         precursor, slip = first_of(events, False), first_of(events, True)
         if slip is not None and precursor is not None and precursor["t_start"] > slip["t_start"]:
             precursor = None  # the first precursor counts only before the first global slip
         x, profile = pressure_profile(blocks, float(bulk["length"]))
         lattice = f"{bulk['nx']} × {bulk['nz']}"
-        case = re.sub(r"_seed-\d+$", "", s["case"])
-        group = lattice if by == "lattice" else case
+        group = lattice if by == "lattice" else s["case"]
         profiles.setdefault(group, {})[s["seed"]] = (x, profile)
         rows.append({
             "lattice": group, "nx": int(bulk["nx"]) if by == "lattice" else order, "seed": s["seed"],
@@ -117,6 +113,11 @@ def mean_profile(by_seed):
 
 
 def interval(e, fmt):
+    """The estimate with its interval, or with why it has none (too few seeds)."""
+    if not np.isfinite(e.estimate):
+        return "–"
+    if e.interval:
+        return f"{e.estimate:{fmt}} ({e.interval})"
     return f"{e.estimate:{fmt}} [{e.low:{fmt}}, {e.high:{fmt}}]"
 
 
@@ -132,14 +133,9 @@ def table(runs):
         at = {l: runs[runs["lattice"] == l][column].to_numpy(dtype=float) for l in lattices}
         cells = [label.replace("the finest's", f"{finest}'s")]
         for l in lattices:
-            finite = at[l][np.isfinite(at[l])]
-            cells.append(interval(ensembles.mean(finite), fmt) if len(finite) >= 2 else "–")
+            cells.append(interval(ensembles.mean(at[l]), fmt))
         for l in lattices[:-1]:
-            try:
-                d = ensembles.difference(at[l], at[finest])
-            except ValueError:
-                cells.append("–")
-                continue
+            d = ensembles.difference(at[l], at[finest])
             text = interval(d, "+" + fmt)
             cells.append(f"**{text}**" if d.resolved and column != "profile_gap" else text)
         lines.append("| " + " | ".join(cells) + " |")
@@ -164,10 +160,10 @@ def figure(runs, profiles, path, title):
             values = runs[runs["lattice"] == lattice][column].to_numpy(dtype=float)
             finite = values[np.isfinite(values)]
             ax.plot(np.full(len(finite), k) + np.linspace(-0.15, 0.15, len(finite)), finite, ".", color="0.6")
-            if len(finite) >= 2:
-                m = ensembles.mean(finite)
-                ax.errorbar(k, m.estimate, yerr=[[m.estimate - m.low], [m.high - m.estimate]], fmt="o",
-                            color="C0", capsize=4)
+            m = ensembles.mean(finite)
+            if np.isfinite(m.estimate):  # with its interval where the seeds give one
+                bar = [[m.estimate - m.low], [m.high - m.estimate]] if not m.interval else None
+                ax.errorbar(k, m.estimate, yerr=bar, fmt="o", color="C0", capsize=4)
         ax.set_xticks(range(len(lattices)), lattices)
         ax.set_title(label, fontsize=9)
     ax = axes.flat[-1]  # the speed follows the stress the slip starts at, on every lattice alike
@@ -181,15 +177,16 @@ def figure(runs, profiles, path, title):
     fig.savefig(path, dpi=110)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python3 -m frictionlab.lattice_convergence",
+                                     description=__doc__.splitlines()[0])
     parser.add_argument("directory", help="output directory of the sweep over lattice sizes")
     parser.add_argument("--figure", help="where to write the figure (PNG)")
     parser.add_argument("--write", nargs="*", default=[], help="files whose <!-- BLOCK --> block to replace")
     parser.add_argument("--block", default="lattice-convergence", help="name of the block --write replaces")
     parser.add_argument("--by", choices=["lattice", "case"], default="lattice",
                         help="group the runs by lattice (compared with the finest) or by case (with the last)")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     runs, profiles = per_run(args.directory, args.by)
     text = table(runs)
     print(text, end="")
@@ -198,9 +195,10 @@ def main():
         title = (f"The same slider at {groups} lattice resolutions" if args.by == "lattice"
                  else f"{groups} cases of one sweep")
         figure(runs, profiles, args.figure, title)
+    hashes, seeds = doc_blocks.runs_of(args.directory)
     for doc in args.write:
         try:
-            doc_blocks.replace_block(doc, args.block, text)
+            doc_blocks.replace_block(doc, args.block, text, hashes, seeds)
         except ValueError as e:
             sys.exit(str(e))
 
