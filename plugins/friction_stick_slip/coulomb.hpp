@@ -16,6 +16,9 @@ namespace frictionlab {
 ///     slipping  F = -mu_d f_N tanh(v / v_r)                    (tanh: sign(v) made smooth, v_r tiny)
 ///     detached  F = 0                                          (f_N = 0)
 ///
+/// on a 2D body's interface; on a 3D body's, x, v and F are vectors of its plane and the law is
+/// isotropic, F = -mu_d f_N tanh(|v| / v_r) v/|v| while slipping (StickSlipLaw, theory.md §0).
+///
 /// k_t = sqrt(39.2e9 N/m^2 f_N) per block unless given. Re-stick (StickSlipLaw, which holds the
 /// block logic shared with slip_weakening): at a commit, when the velocity has reversed or fallen
 /// below stick_velocity after exceeding it, with the spring re-anchored to carry the kinetic force
@@ -41,7 +44,7 @@ public:
     double operator()(double normal, double /*slip*/) const { return mu_d_ * normal; }
     double kinetic_coefficient() const { return mu_d_; }
     void declare(Quantities&, const std::string& /*node_set*/, Index /*blocks*/) {}  // no field of its own
-    void publish(Index, const stick_slip::Block&, double /*slip*/) {}
+    void publish(Index, stick_slip::Mode, double /*slip*/) {}
     std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;
 
 private:

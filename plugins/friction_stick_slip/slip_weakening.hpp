@@ -42,7 +42,7 @@ public:
     }
     double kinetic_coefficient() const { return mu_d_; }
     void declare(Quantities& q, const std::string& node_set, Index blocks);
-    void publish(Index i, const stick_slip::Block& /*b*/, double slip) { (*slip_)[i] = slip; }
+    void publish(Index i, stick_slip::Mode /*mode*/, double slip) { (*slip_)[i] = slip; }
     std::string describe(const stick_slip::Settings&, const std::string& stiffness) const;
 
 private:

@@ -28,7 +28,50 @@ std::string stiffness_text(const Settings& settings) {
 
 }  // namespace stick_slip
 
+using stick_slip::Block;
 using stick_slip::stiffness;
+using stick_slip::Tangent;
+
+namespace {
+
+/// |v|: on one tangential axis the absolute value, as a 2D law has always taken it.
+template <int T>
+double magnitude(const Tangent<T>& v) {
+    if constexpr (T == 1)
+        return std::abs(v[0]);
+    else
+        return v.norm();
+}
+
+/// Node `node`'s position (velocity) along the tangential axes, from one array per axis.
+template <int T>
+Tangent<T> gather(const std::array<Eigen::Map<const Eigen::ArrayXd>, T>& along, Index node) {
+    Tangent<T> t;
+    for (int a = 0; a < T; ++a) t[a] = along[static_cast<std::size_t>(a)](node);
+    return t;
+}
+
+/// The arrays of positions (or velocities) along each tangential axis.
+template <int T>
+std::array<Eigen::Map<const Eigen::ArrayXd>, T> along(const StageView& s, const std::vector<int>& axes,
+                                                      bool velocities) {
+    if constexpr (T == 1) {
+        return {velocities ? s.velocities_along(axes[0]) : s.positions_along(axes[0])};
+    } else {
+        return {velocities ? s.velocities_along(axes[0]) : s.positions_along(axes[0]),
+                velocities ? s.velocities_along(axes[1]) : s.positions_along(axes[1])};
+    }
+}
+
+/// The earliest t >= 0 at which |a + b t| reaches `radius` (|a| < radius), +infinity if b = 0.
+double time_to_radius(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double radius) {
+    const double bb = b.squaredNorm(), ab = a.dot(b), room = radius * radius - a.squaredNorm();
+    if (!(bb > 0)) return std::numeric_limits<double>::infinity();
+    if (room <= 0) return 0;
+    return (std::sqrt(ab * ab + bb * room) - ab) / bb;
+}
+
+}  // namespace
 
 template <class Strength>
 StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
@@ -36,6 +79,7 @@ StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
     if (!ctx.body || !ctx.quantities)
         throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
     nodes_ = ctx.body->nodes(settings_.node_set);
+    axes_ = ctx.body->contact_frame.tangential;
     Quantities& q = *ctx.quantities;
     const Index n = static_cast<Index>(nodes_.size());
     const std::string& set = settings_.node_set;
@@ -47,98 +91,146 @@ StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
     characteristic_slip_ = &rupture_scales::publish_characteristic_slip(q, std::numeric_limits<double>::quiet_NaN());
     rupture_scales::publish_kinetic_coefficient(q, strength_.kinetic_coefficient());
     follow_characteristic_slip();
-    blocks_.resize(nodes_.size());
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        Block& b = blocks_[i];
-        b.x_start = b.anchor = ctx.body->x0()(nodes_[i]);
-    }
+    const auto start = [&](auto& blocks) {
+        blocks.resize(nodes_.size());
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+            for (int a = 0; a < tangential_axes(); ++a)
+                blocks[i].x_start[a] = blocks[i].anchor[a] = ctx.body->reference_position(nodes_[i], axes_[a]);
+    };
+    if (tangential_axes() == 1)
+        start(blocks_.template emplace<Blocks<1>>());
+    else
+        start(blocks_.template emplace<Blocks<2>>());
 }
 
 template <class Strength>
-double StickSlipLaw<Strength>::stage_slip(const Block& b, double x) const {
-    return b.mode == Mode::slipping ? b.slip + std::abs(x - b.x_start) : 0.0;
-}
-
-template <class Strength>
-double StickSlipLaw<Strength>::stage_force(const Block& b, double x, double v, double normal, double slip) const {
+template <int T>
+Tangent<T> StickSlipLaw<Strength>::stage_force(const Block<T>& b, const Tangent<T>& x, const Tangent<T>& v,
+                                               double normal, double slip) const {
     switch (b.mode) {
         case Mode::detached:
-            return 0;
+            return Tangent<T>::Zero();
         case Mode::stuck:
             return -b.stiffness * (x - b.anchor);
-        case Mode::slipping:
-            return -strength_(std::max(0.0, normal), slip) * std::tanh(v / settings_.regularisation_velocity);
+        case Mode::slipping: {
+            const double strength = strength_(std::max(0.0, normal), slip);
+            if constexpr (T == 1) {
+                return Tangent<T>(-strength * std::tanh(v[0] / settings_.regularisation_velocity));
+            } else {
+                const double speed = v.norm();
+                if (!(speed > 0)) return Tangent<T>::Zero();
+                // v / |v| first: along one axis it is +-1 exactly, and the force the 2D law's, bit for bit
+                const Tangent<T> direction = v / speed;
+                return -strength * std::tanh(speed / settings_.regularisation_velocity) * direction;
+            }
+        }
     }
-    return 0;
+    return Tangent<T>::Zero();
+}
+
+template <class Strength>
+template <int T>
+void StickSlipLaw<Strength>::add_forces_on(Blocks<T>& blocks, const StageView& s, ForceView& f) {
+    const auto x = along<T>(s, axes_, false), v = along<T>(s, axes_, true);
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const Index node = nodes_[k], i = static_cast<Index>(k);
+        const Block<T>& b = blocks[k];
+        const Tangent<T> position = gather<T>(x, node);
+        const double slip = b.mode == Mode::slipping ? b.slip + magnitude<T>(position - b.x_start) : 0.0;
+        const Tangent<T> force = stage_force<T>(b, position, gather<T>(v, node), (*normal_force_)[i], slip);
+        for (int a = 0; a < T; ++a) f.force(node, axes_[static_cast<std::size_t>(a)]) += force[a];
+        (*friction_force_)[i] = force[0];
+        (*slipping_)[i] = b.mode == Mode::slipping ? 1.0 : 0.0;
+        strength_.publish(i, b.mode, slip);
+    }
 }
 
 template <class Strength>
 void StickSlipLaw<Strength>::add_forces(const StageView& s, ForceView& f) {
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Index node = nodes_[k], i = static_cast<Index>(k);
-        const Block& b = blocks_[k];
-        const double slip = stage_slip(b, s.x[node]);
-        const double force = stage_force(b, s.x[node], s.vx[node], (*normal_force_)[i], slip);
-        f.fx[node] += force;
-        (*friction_force_)[i] = force;
-        (*slipping_)[i] = b.mode == Mode::slipping ? 1.0 : 0.0;
-        strength_.publish(i, b, slip);
-    }
+    std::visit([&](auto& blocks) { add_forces_on(blocks, s, f); }, blocks_);
 }
 
 template <class Strength>
 void StickSlipLaw<Strength>::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
+    const Blocks<1>& blocks = std::get<Blocks<1>>(blocks_);
     const double v_r = settings_.regularisation_velocity;
+    const auto x = s.positions_along(axes_[0]), v = s.velocities_along(axes_[0]);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Block& b = blocks_[k];
+        const Block<1>& b = blocks[k];
         if (b.mode != Mode::slipping) continue;
         const Index node = nodes_[k];
         const double normal = std::max(0.0, (*normal_force_)[static_cast<Index>(k)]);
-        const double c = std::cosh(s.vx[node] / v_r);  // inf far from 0: the slope is then 0
-        dfx_dvx[node] -= strength_(normal, stage_slip(b, s.x[node])) / (v_r * c * c);
+        const double c = std::cosh(v[node] / v_r);  // inf far from 0: the slope is then 0
+        dfx_dvx[node] -= strength_(normal, b.slip + std::abs(x[node] - b.x_start[0])) / (v_r * c * c);
     }
 }
 
 template <class Strength>
 bool StickSlipLaw<Strength>::quasi_static_regime(const StageView&) const {
-    return std::none_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.mode == Mode::slipping; });
+    return std::visit(
+        [](const auto& blocks) {
+            return std::none_of(blocks.begin(), blocks.end(), [](const auto& b) { return b.mode == Mode::slipping; });
+        },
+        blocks_);
 }
 
 template <class Strength>
 void StickSlipLaw<Strength>::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Index q = s.position_index(nodes_[k], 0);
-        if (blocks_[k].mode == Mode::stuck) stiffness.emplace_back(q, q, blocks_[k].stiffness);
+        if (mode(static_cast<Index>(k)) != Mode::stuck) continue;
+        const double k_t = std::visit([&](const auto& blocks) { return blocks[k].stiffness; }, blocks_);
+        for (const int axis : axes_) {
+            const Index q = s.position_index(nodes_[k], axis);
+            stiffness.emplace_back(q, q, k_t);
+        }
     }
 }
 
 template <class Strength>
-double StickSlipLaw<Strength>::foreseen_event_time(const StageView& s) const {
+template <int T>
+double StickSlipLaw<Strength>::foreseen_on(const Blocks<T>& blocks, const StageView& s) const {
     double next = std::numeric_limits<double>::infinity();
-    if (!events_) return next;
+    const auto x = along<T>(s, axes_, false), v = along<T>(s, axes_, true);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Block& b = blocks_[k];
-        const double v = s.vx[nodes_[k]];
-        if (b.mode != Mode::stuck || v == 0 || b.stiffness <= 0) continue;
-        // The spring force k_t (x - anchor) moves at k_t v towards +-mu_s f_N.
+        const Block<T>& b = blocks[k];
+        const Tangent<T> velocity = gather<T>(v, nodes_[k]);
+        if (b.mode != Mode::stuck || velocity.isZero(0) || b.stiffness <= 0) continue;
+        // The spring force k_t (x - anchor) moves at k_t v towards a magnitude of mu_s f_N.
         const double strength = settings_.mu_s * std::max(0.0, (*normal_force_)[static_cast<Index>(k)]);
-        const double force = b.stiffness * (s.x[nodes_[k]] - b.anchor);
-        const double room = v > 0 ? strength - force : strength + force;
-        next = std::min(next, s.t + std::max(0.0, room / (b.stiffness * std::abs(v))));
+        const Tangent<T> force = b.stiffness * (gather<T>(x, nodes_[k]) - b.anchor);
+        if constexpr (T == 1) {
+            const double room = velocity[0] > 0 ? strength - force[0] : strength + force[0];
+            next = std::min(next, s.t + std::max(0.0, room / (b.stiffness * std::abs(velocity[0]))));
+        } else {
+            next = std::min(next, s.t + time_to_radius(force, b.stiffness * velocity, strength));
+        }
     }
+    return next;
+}
+
+template <class Strength>
+double StickSlipLaw<Strength>::foreseen_event_time(const StageView& s) const {
+    if (!events_) return std::numeric_limits<double>::infinity();
+    const double next = std::visit([&](const auto& blocks) { return foreseen_on(blocks, s); }, blocks_);
     return std::min(next, drift_.foreseen());
 }
 
 template <class Strength>
 double StickSlipLaw<Strength>::potential_energy(const StageView& s) const {
-    double energy = 0;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Block& b = blocks_[k];
-        if (b.mode != Mode::stuck) continue;
-        const double stretch = s.x[nodes_[k]] - b.anchor;
-        energy += 0.5 * b.stiffness * stretch * stretch;
-    }
-    return energy;
+    return std::visit(
+        [&](const auto& blocks) {
+            constexpr int T = std::decay_t<decltype(blocks[0].anchor)>::RowsAtCompileTime;
+            const auto x = along<T>(s, axes_, false);
+            double energy = 0;
+            for (std::size_t k = 0; k < nodes_.size(); ++k) {
+                const auto& b = blocks[k];
+                if (b.mode != Mode::stuck) continue;
+                const double stretch = magnitude<T>(gather<T>(x, nodes_[k]) - b.anchor);
+                energy += 0.5 * b.stiffness * stretch * stretch;
+            }
+            return energy;
+        },
+        blocks_);
 }
 
 template <class Strength>
@@ -150,18 +242,31 @@ void StickSlipLaw<Strength>::begin_stage(const StageInfo& stage, const StageView
 
 template <class Strength>
 void StickSlipLaw<Strength>::begin_step(const StageView& s) {
+    std::visit(
+        [&](auto& blocks) {
+            constexpr int T = std::decay_t<decltype(blocks[0].anchor)>::RowsAtCompileTime;
+            const auto x = along<T>(s, axes_, false), v = along<T>(s, axes_, true);
+            for (std::size_t k = 0; k < nodes_.size(); ++k) {
+                blocks[k].x_start = gather<T>(x, nodes_[k]);
+                blocks[k].v_start = gather<T>(v, nodes_[k]);
+            }
+        },
+        blocks_);
+}
+
+template <class Strength>
+template <int T>
+void StickSlipLaw<Strength>::commit_blocks(Blocks<T>& blocks, const StageView& end) {
+    const auto x = along<T>(end, axes_, false), v = along<T>(end, axes_, true);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        blocks_[k].x_start = s.x[nodes_[k]];
-        blocks_[k].v_start = s.vx[nodes_[k]];
+        const Index node = nodes_[k];
+        commit_block<T>(blocks[k], gather<T>(x, node), gather<T>(v, node), (*normal_force_)[static_cast<Index>(k)]);
     }
 }
 
 template <class Strength>
 void StickSlipLaw<Strength>::commit(const StageView& end, double /*dt*/) {
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Index node = nodes_[k];
-        commit_block(blocks_[k], end.x[node], end.vx[node], (*normal_force_)[static_cast<Index>(k)]);
-    }
+    std::visit([&](auto& blocks) { commit_blocks(blocks, end); }, blocks_);
     drift_.commit(*normal_force_, end.t);
     follow_characteristic_slip();
 }
@@ -175,38 +280,43 @@ void StickSlipLaw<Strength>::follow_characteristic_slip() {
 }
 
 template <class Strength>
-void StickSlipLaw<Strength>::commit_block(Block& b, double x, double v, double normal) const {
+template <int T>
+void StickSlipLaw<Strength>::commit_block(Block<T>& b, const Tangent<T>& x, const Tangent<T>& v, double normal) const {
     const Mode during = b.mode;
-    if (during == Mode::slipping) b.slip += std::abs(x - b.x_start);
+    if (during == Mode::slipping) b.slip += magnitude<T>(x - b.x_start);
     const double k_step = b.stiffness;
     b.x_start = x;
     b.v_start = v;
 
     if (normal <= 0) {
-        b = Block{Mode::detached, 0, x, 0, 0, false, x, v};
+        b = Block<T>{Mode::detached, 0, x, 0, Tangent<T>::Zero(), false, x, v};
         return;
     }
     if (during == Mode::detached) {
         b.mode = Mode::stuck;  // contact forms unloaded
         b.anchor = x;
     } else if (during == Mode::stuck && events_) {
-        const double stretch = x - b.anchor;
-        if (std::abs(k_step * stretch) > settings_.mu_s * normal) {
+        const Tangent<T> stretch = x - b.anchor;
+        if (magnitude<T>(k_step * stretch) > settings_.mu_s * normal) {
             b.mode = Mode::slipping;
-            b.direction = stretch > 0 ? 1.0 : -1.0;
+            if constexpr (T == 1)
+                b.direction[0] = stretch[0] > 0 ? 1.0 : -1.0;
+            else
+                b.direction = stretch / stretch.norm();
             b.slip = 0;
-            b.reached_stick_velocity = std::abs(v) > settings_.stick_velocity;
+            b.reached_stick_velocity = magnitude<T>(v) > settings_.stick_velocity;
         }
     } else if (during == Mode::slipping && events_) {
-        const bool reversed = b.direction * v < 0;
-        const bool stopped = b.reached_stick_velocity && std::abs(v) < settings_.stick_velocity;
-        b.reached_stick_velocity = b.reached_stick_velocity || std::abs(v) > settings_.stick_velocity;
+        const bool reversed = b.direction.dot(v) < 0;
+        const double speed = magnitude<T>(v);
+        const bool stopped = b.reached_stick_velocity && speed < settings_.stick_velocity;
+        b.reached_stick_velocity = b.reached_stick_velocity || speed > settings_.stick_velocity;
         if (reversed || stopped) {
             // Continue the force the block felt at the end of the step (see the class comment).
-            const double force = stage_force(b, x, v, normal, b.slip);
+            const Tangent<T> force = stage_force<T>(b, x, v, normal, b.slip);
             b.mode = Mode::stuck;
             b.slip = 0;
-            b.direction = 0;
+            b.direction.setZero();
             b.reached_stick_velocity = false;
             b.stiffness = stiffness(settings_.tangential_stiffness, normal);
             b.anchor = x + force / b.stiffness;
@@ -224,17 +334,23 @@ void StickSlipLaw<Strength>::commit_block(Block& b, double x, double v, double n
 
 template <class Strength>
 void StickSlipLaw<Strength>::check_settled(const StageInfo& stage, const StageView& s) const {
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Block& b = blocks_[k];
-        if (b.mode != Mode::stuck) continue;
-        const double force = std::abs(b.stiffness * (s.x[nodes_[k]] - b.anchor));
-        const double threshold = settings_.mu_s * (*normal_force_)[static_cast<Index>(k)];
-        if (force <= threshold) continue;
-        throw RunError(fmt::format(
-            "{}: at the start of stage '{}', block {} (node {}) is stuck at |F| = {:.6g} N, above mu_s f_N = {:.6g} N; "
-            "settling did not reach a state the interface can hold (theory.md B.18)",
-            name_, stage.name, k, nodes_[k], force, threshold));
-    }
+    std::visit(
+        [&](const auto& blocks) {
+            constexpr int T = std::decay_t<decltype(blocks[0].anchor)>::RowsAtCompileTime;
+            const auto x = along<T>(s, axes_, false);
+            for (std::size_t k = 0; k < nodes_.size(); ++k) {
+                const auto& b = blocks[k];
+                if (b.mode != Mode::stuck) continue;
+                const double force = magnitude<T>(b.stiffness * (gather<T>(x, nodes_[k]) - b.anchor));
+                const double threshold = settings_.mu_s * (*normal_force_)[static_cast<Index>(k)];
+                if (force <= threshold) continue;
+                throw RunError(fmt::format(
+                    "{}: at the start of stage '{}', block {} (node {}) is stuck at |F| = {:.6g} N, above mu_s f_N = "
+                    "{:.6g} N; settling did not reach a state the interface can hold (theory.md B.18)",
+                    name_, stage.name, k, nodes_[k], force, threshold));
+            }
+        },
+        blocks_);
 }
 
 template class StickSlipLaw<CoulombStrength>;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "frictionlab/base/state_archive.hpp"
@@ -27,14 +28,21 @@ struct Settings {
     std::string node_set = "interface";
 };
 enum class Mode : std::uint8_t { detached, stuck, slipping };
+
+/// A vector in the interface plane, along the contact frame's tangential axes: one component on a
+/// 2D body's interface (x), two on a 3D body's (x, y).
+template <int T>
+using Tangent = Eigen::Matrix<double, T, 1>;
+
+template <int T>
 struct Block {
     Mode mode = Mode::detached;
-    double stiffness = 0;                 // k_t, N/m
-    double anchor = 0;                    // m, stuck: where the spring is unloaded
-    double slip = 0;                      // m, delta: slip since the block last stuck (slipping only)
-    double direction = 0;                 // s = +-1, slipping: the direction it broke in
-    bool reached_stick_velocity = false;  // slipping: |v| has exceeded stick_velocity
-    double x_start = 0, v_start = 0;      // m, m/s: at the start of the current step
+    double stiffness = 0;                       // k_t, N/m
+    Tangent<T> anchor = Tangent<T>::Zero();     // m, stuck: where the spring is unloaded
+    double slip = 0;                            // m, delta: slip since the block last stuck (slipping only)
+    Tangent<T> direction = Tangent<T>::Zero();  // s, a unit vector, slipping: the direction it broke in
+    bool reached_stick_velocity = false;        // slipping: |v| has exceeded stick_velocity
+    Tangent<T> x_start = Tangent<T>::Zero(), v_start = Tangent<T>::Zero();  // m, m/s: at the start of the step
     template <class Archive>
     void serialize(Archive& ar) {
         ar(mode, stiffness, anchor, slip, direction, reached_stick_velocity, x_start, v_start);
@@ -64,10 +72,11 @@ void add_settings(ParamSpec<P>& s) {
         .unit("m/s")
         .at_least(0);
     s.add("regularisation_velocity", &P::regularisation_velocity,
-          "v_r of the kinetic force -S tanh(v/v_r), a smooth sign(v).")
+          "v_r of the kinetic force -S tanh(|v|/v_r) v/|v|, a smooth sign(v).")
         .unit("m/s")
         .greater_than(0);
     s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
+    s.dimensions({2, 3});
 }
 template <class P>
 Settings settings_of(const P& p) {
@@ -80,13 +89,17 @@ Settings settings_of(const P& p) {
 /// contact) and tangential stiffness k_t (the given value, or sqrt(c f_N) with c = 39.2e9 N/m^2,
 /// Trømborg 2011 re-implementations, when it is 0):
 ///
-///     detached  f_N = 0                 no force
-///     stuck     F = -k_t (x - anchor)   held while |k_t (x - anchor)| <= mu_s f_N
-///     slipping  F = -S tanh(v / v_r)    S = kinetic_strength(f_N, delta) >= 0, of the derived law
+///     detached  f_N = 0                         no force
+///     stuck     F = -k_t (x - anchor)           held while |k_t (x - anchor)| <= mu_s f_N
+///     slipping  F = -S tanh(|v| / v_r) v/|v|    S = kinetic_strength(f_N, delta) >= 0, of the derived law
 ///
-/// F is the x-force on the block, delta the slip since the block last stuck, v_r the
-/// regularisation velocity: tanh(v/v_r) stands for sign(v) so that the stage force is a smooth
-/// function of the stage velocity (sign(v) jumps at v = 0 and an RK stage could straddle it).
+/// x, v, F and the anchor are vectors in the interface plane (the contact frame's tangential axes):
+/// one component, x, on a 2D body, where the slipping force is -S tanh(v / v_r); two, x and y, on a
+/// 3D body's interface, where the law is isotropic: the spring pulls towards the anchor, its
+/// threshold is on the force's magnitude, the kinetic force opposes the velocity (theory.md §0). delta is the slip
+/// since the block last stuck (the length of its path), v_r the regularisation velocity:
+/// tanh(|v|/v_r) stands for the step function so that the stage force is a smooth function of the
+/// stage velocity (the step jumps at v = 0 and an RK stage could straddle it).
 ///
 /// Step structure (theory.md B.17): modes, anchors, k_t and delta are frozen within a step. A
 /// stage force is a function of the stage x, v and f_N only; a slipping block's stage slip is
@@ -96,11 +109,11 @@ Settings settings_of(const P& p) {
 ///   1. delta += |x_end - x_n| for a slipping block;
 ///   2. contact: f_N <= 0 detaches the block; a detached block with f_N > 0 sticks, unloaded;
 ///   3. breaking: a stuck block with |k_t (x - anchor)| > mu_s f_N (strict) slips, in the direction
-///      s = sign(x - anchor) the spring resisted, with delta = 0;
+///      s = (x - anchor)/|x - anchor| the spring resisted, with delta = 0;
 ///   4. re-stick: a block slipping throughout the step sticks when its velocity has reversed
-///      (s v < 0), or has fallen below stick_velocity after exceeding it since it broke. The spring
+///      (s . v < 0), or has fallen below stick_velocity after exceeding it since it broke. The spring
 ///      is re-anchored so that it carries the force the block felt at the end of the step,
-///      F = -S tanh(v/v_r): the friction force is continuous through the re-stick and the spring
+///      F = -S tanh(|v|/v_r) v/|v|: the friction force is continuous through the re-stick and the spring
 ///      starts at the kinetic value, below mu_s f_N (S <= mu_s f_N), so it does not re-break at once.
 ///      We prefer this to re-anchoring unloaded (a common reading of Trømborg 2011): an unloaded re-stick
 ///      drops the force from mu_d f_N to 0 at an arbitrary instant and kicks the block forwards. The
@@ -113,16 +126,16 @@ Settings settings_of(const P& p) {
 /// no block breaks or re-sticks; contact and k_t still follow f_N. When events are switched on, a
 /// stuck block above mu_s f_N is a RunError, as in three_state_junctions.
 ///
-/// Stored energy: sum over stuck blocks of k_t (x - anchor)^2 / 2, so a stuck block's force is
+/// Stored energy: sum over stuck blocks of k_t |x - anchor|^2 / 2, so a stuck block's force is
 /// exactly -dE/dx. Slipping blocks store none (all their work is dissipated). The energy jumps at
-/// commits without work (breaking releases it; re-stick stores F^2 / (2 k_t), the model's own; a k_t
-/// change at fixed force changes it by F^2/2 (1/k_new - 1/k_old)).
+/// commits without work (breaking releases it; re-stick stores |F|^2 / (2 k_t), the model's own; a k_t
+/// change at fixed force changes it by |F|^2/2 (1/k_new - 1/k_old)).
 ///
 /// A Strength supplies what differs: its Params (flat, with the members of stick_slip::Settings),
 /// `type` and spec(); a constructor from Params that checks them; `double operator()(f_N, delta)`,
-/// the kinetic strength S >= 0; declare(quantities, node_set, blocks) and publish(i, block, delta)
-/// for its own field; kinetic_coefficient(), which the rupture detector reads (model/rupture_scales.hpp);
-/// describe(settings, stiffness text).
+/// the kinetic strength S >= 0; declare(quantities, node_set, blocks) and publish(i, mode, delta)
+/// for its own field; kinetic_coefficient(), which the rupture detector reads
+/// (model/rupture_scales.hpp); describe(settings, stiffness text).
 template <class Strength>
 class StickSlipLaw final : public FrictionLaw {
 public:
@@ -131,12 +144,12 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(blocks_, events_, drift_);
+        std::visit([&](auto& blocks) { ar(blocks); }, blocks_);
+        ar(events_, drift_);
     }
     using Params = typename Strength::Params;
     using Settings = stick_slip::Settings;
     using Mode = stick_slip::Mode;
-    using Block = stick_slip::Block;
 
     static constexpr std::string_view type = Strength::type;
     static ParamSpec<Params> spec() { return Strength::spec(); }
@@ -151,29 +164,50 @@ public:
     void begin_step(const StageView&) override;
     void commit(const StageView& end, double dt) override;
     double potential_energy(const StageView& s) const override;
-    /// Local in velocity: only a slipping block's force depends on its vx, with
+    /// Local in velocity on a 2D body: only a slipping block's force depends on its vx, with
     /// dF/dv = -(S / v_r) sech^2(v / v_r), a dashpot of up to S / v_r near v = 0 that imex_euler takes
-    /// implicitly (stuck and detached blocks: 0).
-    bool has_velocity_jacobian() const override { return true; }
+    /// implicitly (stuck and detached blocks: 0). On a 3D body the kinetic force couples the two
+    /// tangential velocities of a block, which the per-axis Jacobian cannot say: none is given.
+    bool has_velocity_jacobian() const override { return tangential_axes() == 1; }
     void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
     /// Quasi-static regime: no block slipping (a slipping block's force follows its velocity, and it
-    /// re-sticks on its velocity). A stuck block adds k_t to its x; the foreseen event is the first
-    /// stuck block whose spring reaches mu_s f_N at the blocks' velocities, f_N as last evaluated
-    /// (none while friction events are off).
+    /// re-sticks on its velocity). A stuck block adds k_t to each of its tangential axes; the
+    /// foreseen event is the first stuck block whose spring reaches mu_s f_N at the blocks'
+    /// velocities, f_N as last evaluated (none while friction events are off).
     bool quasi_static_regime(const StageView&) const override;
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
     double foreseen_event_time(const StageView& s) const override;
 
-    Index blocks() const { return static_cast<Index>(blocks_.size()); }
-    const Block& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }
+    Index blocks() const { return static_cast<Index>(nodes_.size()); }
+    /// 1 on a 2D body's interface, 2 on a 3D body's.
+    int tangential_axes() const { return static_cast<int>(axes_.size()); }
+    /// Block i of a law with T tangential axes.
+    template <int T>
+    const stick_slip::Block<T>& block(Index i) const {
+        return std::get<std::vector<stick_slip::Block<T>>>(blocks_)[static_cast<std::size_t>(i)];
+    }
+    Mode mode(Index i) const {
+        return std::visit([&](const auto& b) { return b[static_cast<std::size_t>(i)].mode; }, blocks_);
+    }
     const Settings& settings() const { return settings_; }
     /// Kinetic strength S (N, >= 0) of a slipping block at normal force f_N and slip delta.
     double kinetic_strength(double normal, double slip) const { return strength_(normal, slip); }
 
 private:
-    double stage_force(const Block& b, double x, double v, double normal, double slip) const;
-    double stage_slip(const Block& b, double x) const;
-    void commit_block(Block& b, double x, double v, double normal) const;
+    template <int T>
+    using Blocks = std::vector<stick_slip::Block<T>>;
+    template <int T>
+    stick_slip::Tangent<T> stage_force(const stick_slip::Block<T>& b, const stick_slip::Tangent<T>& x,
+                                       const stick_slip::Tangent<T>& v, double normal, double slip) const;
+    template <int T>
+    void commit_block(stick_slip::Block<T>& b, const stick_slip::Tangent<T>& x, const stick_slip::Tangent<T>& v,
+                      double normal) const;
+    template <int T>
+    void add_forces_on(Blocks<T>& blocks, const StageView& s, ForceView& f);
+    template <int T>
+    void commit_blocks(Blocks<T>& blocks, const StageView& end);
+    template <int T>
+    double foreseen_on(const Blocks<T>& blocks, const StageView& s) const;
     void check_settled(const StageInfo&, const StageView&) const;
     /// Publishes the slip an unloaded stuck spring takes before it breaks, mu_s f_N / k_t, at the
     /// blocks' mean normal force (NaN while none).
@@ -183,7 +217,8 @@ private:
     Settings settings_;
     Strength strength_;
     NodeSet nodes_;
-    std::vector<Block> blocks_;
+    std::vector<int> axes_;  // the contact frame's tangential axes, x first
+    std::variant<Blocks<1>, Blocks<2>> blocks_;
     const Eigen::ArrayXd* normal_force_;
     NormalForceDrift drift_;  // k_t follows f_N at commits: a quiet span ends before it drifts
     Eigen::ArrayXd* friction_force_;

@@ -169,6 +169,7 @@ TestLattice::TestLattice(const Params& p, const Context&) : p_(spec().checked(p)
     body_.width = ny() > 1 ? (ny() - 1) * a : a;
     body_.spacing = a;
     body_.bond_stiffness = p_.stiffness;
+    body_.wave_speed = a * std::sqrt(p_.stiffness / p_.mass);  // a chain's long-wave speed
     body_.contact_frame = ContactFrame::horizontal_base(dim);
     body_.bonds = bonds_;
 }

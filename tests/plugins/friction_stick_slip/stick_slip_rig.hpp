@@ -36,8 +36,8 @@ struct StickSlipRig {
     StageView view() const { return view_of(y, layout, t); }
     double x(Index i) const { return y[layout.position_index(i, 0)]; }
     double v(Index i) const { return y[layout.velocity_index(i, 0)]; }
-    const stick_slip::Block& block(Index i) const { return law->block(i); }
-    stick_slip::Mode mode(Index i) const { return law->block(i).mode; }
+    const stick_slip::Block<1>& block(Index i) const { return law->template block<1>(i); }
+    stick_slip::Mode mode(Index i) const { return law->mode(i); }
 
     void stage(bool friction_events) {
         StageInfo info{friction_events ? "load" : "settle", stage_index++, t, 1.0, friction_events};

@@ -49,7 +49,7 @@ TEST(Coulomb, StartsDetachedAndSticksUnloadedOnContact) {
     r.move(0, 0x1p-12, 0);
     r.press(exact_normal);
     EXPECT_EQ(r.mode(0), Mode::stuck);
-    EXPECT_EQ(r.block(0).anchor, 0x1p-12);
+    EXPECT_EQ(r.block(0).anchor[0], 0x1p-12);
     EXPECT_EQ(r.force(0), 0);
     EXPECT_EQ(r.stage_force(0, 0x1p-12 + 0x1p-14, 0), -exact_stiffness * 0x1p-14);
 }
@@ -79,14 +79,14 @@ TEST(Coulomb, HoldsAtStaticThresholdAndSlipsJustAbove) {
     EXPECT_EQ(r.stage_force(0, above, 0.1), -exact_stiffness * above);  // frozen within a step
     r.move(0, above, 0.1);
     EXPECT_EQ(r.mode(0), Mode::slipping);
-    EXPECT_EQ(r.block(0).direction, 1);
+    EXPECT_EQ(r.block(0).direction[0], 1);
 
     r.move(1, -at, -0.1);
     EXPECT_EQ(r.mode(1), Mode::stuck);
     EXPECT_EQ(r.force(1), 0.4 * exact_normal);
     r.move(1, -above, -0.1);
     EXPECT_EQ(r.mode(1), Mode::slipping);
-    EXPECT_EQ(r.block(1).direction, -1);
+    EXPECT_EQ(r.block(1).direction[0], -1);
 }
 
 TEST(Coulomb, KineticForceOpposesVelocityAndFollowsStageNormalForce) {
@@ -134,7 +134,7 @@ TEST(Coulomb, ResticksOnReversalWithTheKineticForceContinued) {
     EXPECT_EQ(before, 0.17 * exact_normal);
     r.move(0, x, v);
     EXPECT_EQ(r.mode(0), Mode::stuck);
-    EXPECT_EQ(r.block(0).anchor, x + before / exact_stiffness);
+    EXPECT_EQ(r.block(0).anchor[0], x + before / exact_stiffness);
     // Continuous up to the rounding of the anchor (x is not a short binary fraction here).
     EXPECT_NEAR(r.force(0), before, 1e-12);
     EXPECT_NEAR(r.stage_force(0, x - 0x1p-16, 0), before + exact_stiffness * 0x1p-16, 1e-12);  // a spring again
@@ -156,7 +156,7 @@ TEST(Coulomb, ResticksWhenSpeedFallsBelowStickVelocityOnlyAfterExceedingIt) {
     EXPECT_EQ(r.mode(0), Mode::stuck);
     EXPECT_DOUBLE_EQ(r.force(0), before);
     // Reloaded from the kinetic value, it breaks again only above mu_s f_N.
-    const double rebreak = r.block(0).anchor + threshold_position();
+    const double rebreak = r.block(0).anchor[0] + threshold_position();
     r.move(0, rebreak, 0);
     EXPECT_EQ(r.mode(0), Mode::stuck);
     r.move(0, std::nextafter(rebreak + 1e-9, 1.0), 0);

@@ -38,7 +38,7 @@ Rig pressed() {
 
 /// Breaks block 0 forwards just above mu_s f_N = 4 N; returns where.
 double break_forward(Rig& r, double v = 0.1) {
-    const double x = std::nextafter(r.block(0).anchor + 0.5 * exact_normal / exact_stiffness, 10.0);
+    const double x = std::nextafter(r.block(0).anchor[0] + 0.5 * exact_normal / exact_stiffness, 10.0);
     r.move(0, x, v);
     return x;
 }
@@ -87,10 +87,10 @@ TEST(SlipWeakening, RestickResetsSlipAndReloadsFromTheWeakenedForce) {
     EXPECT_EQ(r.force(0), 2);
     EXPECT_EQ((*r.services.quantities.find_field("slip")).values[0], 0);
     // Breaking again backwards restarts the weakening from mu_s f_N.
-    const double back = r.block(0).anchor - 0.5 * exact_normal / exact_stiffness - d_c / 64;
+    const double back = r.block(0).anchor[0] - 0.5 * exact_normal / exact_stiffness - d_c / 64;
     r.move(0, back, -0.1);
     ASSERT_EQ(r.mode(0), Mode::slipping);
-    EXPECT_EQ(r.block(0).direction, -1);
+    EXPECT_EQ(r.block(0).direction[0], -1);
     EXPECT_EQ(r.force(0), 4);
     EXPECT_EQ(r.stage_force(0, back - d_c / 4, -0.1), 3.5);
 }

@@ -1,0 +1,164 @@
+// The stick-slip laws on a 3D body's interface, a plane (theory.md §0): the stuck spring pulls its
+// block back towards the anchor as a vector, breaks when the force's magnitude exceeds mu_s f_N, in
+// the direction of the stretch; a slipping block feels its kinetic force against its velocity and
+// re-sticks when the velocity turns against the direction it broke in. Moving along x alone, a
+// block of a 3D body is the 2D law's, bit for bit.
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "coulomb.hpp"
+#include "slip_weakening.hpp"
+#include "stick_slip_rig.hpp"
+
+namespace frictionlab {
+namespace {
+
+using testing::exact_dt;
+using testing::exact_normal;
+using testing::exact_stiffness;
+using Mode = stick_slip::Mode;
+
+/// One interface block of a 3D body (axes x, y, z; the frame of a base below it), at the origin.
+template <class Law>
+struct PlaneRig {
+    explicit PlaneRig(const typename Law::Params& params) {
+        body.reference_position = Eigen::ArrayXXd::Zero(1, 3);
+        body.mass = Eigen::ArrayXd::Ones(1);
+        body.contact_frame = ContactFrame::horizontal_base(3);
+        body.node_sets["interface"] = {0};
+        normal = &services.quantities.field("normal_force", "interface", 1, "N", "test");
+        layout = StateLayout(1, 3, 0);
+        y = Eigen::VectorXd::Zero(layout.size());
+        law = std::make_unique<Law>(params, services.context(&body));
+    }
+    StageView view() const { return view_of(y, layout, t); }
+    /// One accepted step to position (x, y) and velocity (vx, vy) in the plane.
+    void move(Eigen::Vector2d position, Eigen::Vector2d velocity) {
+        law->begin_step(view());
+        for (int a = 0; a < 2; ++a)
+            y(layout.position_index(0, a)) = position[a], y(layout.velocity_index(0, a)) = velocity[a];
+        t += exact_dt;
+        law->commit(view(), exact_dt);
+    }
+    /// The force [x, y, z] on the block at the current state.
+    Eigen::Vector3d force() {
+        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
+        ForceView f = forces_of(dy, layout);
+        law->add_forces(view(), f);
+        return f.force.row(0).transpose().matrix();
+    }
+    /// Pressed with f_N = 8 N at the origin, settled, friction events on.
+    void press() {
+        law->begin_stage(StageInfo{"settle", 0, t, 1.0, false}, view());
+        *normal = Eigen::ArrayXd::Constant(1, exact_normal);
+        move({0, 0}, {0, 0});
+        law->begin_stage(StageInfo{"load", 1, t, 1.0, true}, view());
+    }
+    const stick_slip::Block<2>& block() const { return law->template block<2>(0); }
+
+    test_support::Services services;
+    Body body;
+    Eigen::ArrayXd* normal = nullptr;
+    StateLayout layout;
+    Eigen::VectorXd y;
+    double t = 0;
+    std::unique_ptr<Law> law;
+};
+
+Coulomb::Params exact() {
+    Coulomb::Params p;  // mu_s = 0.4, mu_d = 0.17: the threshold 3.2 N is |k_t u| at |u| = 3.2/1024 m
+    p.tangential_stiffness = exact_stiffness;
+    return p;
+}
+
+TEST(StickSlipInAPlane, TheStuckSpringPullsTowardsItsAnchor) {
+    PlaneRig<Coulomb> r(exact());
+    r.press();
+    ASSERT_EQ(r.law->tangential_axes(), 2);
+    r.move({0x1p-11, -0x1p-12}, {0, 0});
+    ASSERT_EQ(r.law->mode(0), Mode::stuck);
+    EXPECT_EQ(r.force(), Eigen::Vector3d(-exact_stiffness * 0x1p-11, exact_stiffness * 0x1p-12, 0));
+    // |u| = sqrt(5) 2^-12 is rounded: the energy is within a few ulps of the exact one
+    EXPECT_DOUBLE_EQ(r.law->potential_energy(r.view()), 0.5 * exact_stiffness * (0x1p-22 + 0x1p-24));
+    std::vector<Eigen::Triplet<double>> k;
+    r.law->add_stiffness(r.view(), k);
+    ASSERT_EQ(k.size(), 2u);  // k_t on x and on y
+    EXPECT_EQ(k[0].row(), r.layout.position_index(0, 0));
+    EXPECT_EQ(k[1].row(), r.layout.position_index(0, 1));
+    EXPECT_EQ(k[1].value(), exact_stiffness);
+}
+
+TEST(StickSlipInAPlane, ItBreaksOnTheForcesMagnitudeAlongTheStretch) {
+    // Along the diagonal at 0.8 of the threshold on each axis: below it axis by axis, 1.13 of it in
+    // magnitude. It breaks, in the direction of the stretch.
+    PlaneRig<Coulomb> r(exact());
+    r.press();
+    const double each = 0.8 * 0.4 * exact_normal / exact_stiffness;
+    r.move({each, each}, {0.1, 0.1});
+    ASSERT_EQ(r.law->mode(0), Mode::slipping);
+    EXPECT_NEAR(r.block().direction.x(), std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(r.block().direction.y(), std::sqrt(0.5), 1e-15);
+}
+
+TEST(StickSlipInAPlane, ASlippingBlockFeelsItsKineticForceAgainstItsVelocity) {
+    PlaneRig<Coulomb> r(exact());
+    r.press();
+    r.move({4e-3, 0}, {0.3, 0.4});  // broken along x, now moving along (3, 4)/5 at 0.5 m/s
+    ASSERT_EQ(r.law->mode(0), Mode::slipping);
+    const Eigen::Vector3d f = r.force();
+    const double kinetic = 0.17 * exact_normal * std::tanh(0.5 / 1e-6);
+    EXPECT_NEAR(f.x(), -kinetic * 0.6, 1e-14);
+    EXPECT_NEAR(f.y(), -kinetic * 0.8, 1e-14);
+    EXPECT_EQ(f.z(), 0.0);
+    // Turning against the direction it broke in (+x), it sticks, its spring carrying the force it felt.
+    r.move({4e-3, 1e-3}, {-0.1, 0.2});
+    ASSERT_EQ(r.law->mode(0), Mode::stuck);
+    const Eigen::Vector2d felt =
+        -0.17 * exact_normal * std::tanh(std::sqrt(0.05) / 1e-6) * Eigen::Vector2d(-0.1, 0.2) / std::sqrt(0.05);
+    EXPECT_NEAR(r.force().x(), felt.x(), 1e-12);
+    EXPECT_NEAR(r.force().y(), felt.y(), 1e-12);
+}
+
+TEST(StickSlipInAPlane, ItForeseesTheMagnitudeReachingTheThreshold) {
+    // From (u, 0) moving at v along y: |k_t (u, v t)| = mu_s f_N at t = sqrt(u_s^2 - u^2) / v.
+    PlaneRig<Coulomb> r(exact());
+    r.press();
+    const double u_s = 0.4 * exact_normal / exact_stiffness, u = 0.6 * u_s, v = 1e-3;
+    r.move({u, 0}, {0, v});
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()) - r.t, std::sqrt(u_s * u_s - u * u) / v, 1e-12);
+}
+
+/// The forces and the slip weakening's slip along x of a block of a 2D and of a 3D body, moved alike
+/// along x through stick, break, slip and re-stick: the same bits.
+template <class Law>
+void same_as_the_2d_law(const typename Law::Params& p) {
+    testing::StickSlipRig<Law> planar(p, 1);
+    planar.stage(false);
+    planar.press(exact_normal);
+    planar.stage(true);
+    PlaneRig<Law> solid(p);
+    solid.press();
+    const double path[][2] = {{1e-3, 0.0}, {3.5e-3, 0.2}, {3.6e-3, 0.1}, {3.7e-3, 1e-6}, {3.65e-3, -0.01}};
+    for (const auto& [x, v] : path) {
+        planar.move(0, x, v);
+        solid.move({x, 0}, {v, 0});
+        ASSERT_EQ(planar.mode(0), solid.law->mode(0)) << x;
+        EXPECT_EQ(planar.force(0), solid.force().x()) << x;
+        EXPECT_EQ(solid.force().y(), 0.0) << x;
+        EXPECT_EQ(planar.block(0).anchor[0], solid.block().anchor.x()) << x;
+        EXPECT_EQ(planar.block(0).slip, solid.block().slip) << x;
+    }
+}
+
+TEST(StickSlipInAPlane, AlongXAloneItIsThe2dLawBitForBit) {
+    same_as_the_2d_law<Coulomb>(exact());
+    SlipWeakening::Params p;
+    p.tangential_stiffness = exact_stiffness;
+    p.critical_slip = 1e-4;
+    same_as_the_2d_law<SlipWeakening>(p);
+}
+
+}  // namespace
+}  // namespace frictionlab
