@@ -5,19 +5,21 @@
 #include <benchmark/benchmark.h>
 #include <spdlog/logger.h>
 
-#include "spring_lattice_2d.hpp"
+#include "frictionlab/model/kinds.hpp"
+
+#include "shipped_plugins.hpp"
 
 namespace frictionlab {
 namespace {
 
 struct Bench {
     Bench(int nx, int nz, const std::string& springs, const std::string& damping_mode) {
-        SpringLattice2d::Params p =
-            SpringLattice2d::spec().build({{"springs", springs}, {"damping_mode", damping_mode}});
-        p.nx = nx;
-        p.nz = nz;
-        p.height = p.length / (nx - 1) * (nz - 1);
-        lattice = std::make_unique<SpringLattice2d>(p, Context{log, 0, nullptr, &quantities, &aux, "bench"});
+        constexpr double length = 0.1;  // the paper's slider, at the spacing nx gives
+        const ParamValues p{{"springs", springs},     {"damping_mode", damping_mode},
+                            {"nx", std::int64_t{nx}}, {"nz", std::int64_t{nz}},
+                            {"length", length},       {"height", length / (nx - 1) * (nz - 1)}};
+        lattice = bench::shipped_registry().create<BulkModel>("spring_lattice_2d", p,
+                                                              Context{log, 0, nullptr, &quantities, &aux, "bench"});
         effects = lattice->effects(Context{log, 0, &lattice->body(), &quantities, &aux, "bench"});
         const Body& body = lattice->body();
         layout = StateLayout(body.size(), body.dimension(), 0);
@@ -35,7 +37,7 @@ struct Bench {
     spdlog::logger log{"bench"};
     Quantities quantities;
     AuxAllocator aux;
-    std::unique_ptr<SpringLattice2d> lattice;
+    std::unique_ptr<BulkModel> lattice;
     std::vector<std::unique_ptr<Effect>> effects;
     StateLayout layout;
     Eigen::VectorXd y, dy;

@@ -24,10 +24,11 @@
 #include "frictionlab/base/diagnostics.hpp"
 #include "frictionlab/base/parallel_chunks.hpp"
 #include "frictionlab/model/junction_counts.hpp"
-#include "frictionlab/plugins/search.hpp"
 #include "frictionlab/plugins/registry.hpp"
 #include "frictionlab/scene/scene.hpp"
 #include "frictionlab/simulation/simulation.hpp"
+
+#include "shipped_plugins.hpp"
 
 namespace frictionlab {
 namespace {
@@ -42,9 +43,6 @@ struct SceneFixture {
         overrides.push_back(fmt::format("integrator={{type: rk4, dt: {}}}", dt));
         Diagnostics diagnostics;
         auto document = SceneDocument::load(scene_file, overrides, diagnostics);
-        // FRICTIONLAB_PLUGIN_PATH first, as for the program: it lets one binary time another build's plugins.
-        const char* env = std::getenv("FRICTIONLAB_PLUGIN_PATH");
-        load_plugins(registry, plugin_directories({}, {}, env ? env : "", FRICTIONLAB_PLUGIN_DIR), log);
         scene = document.validate(registry, diagnostics);
         if (!diagnostics.empty()) throw std::runtime_error(diagnostics.format());
         sim = std::make_unique<Simulation>(scene, registry, log);
@@ -66,7 +64,7 @@ struct SceneFixture {
     double dt() const { return sim->integrator().nominal_dt(); }
 
     spdlog::logger log{"bench_step"};  // no sinks: silent
-    Registry registry;
+    Registry& registry = bench::shipped_registry();
     Scene scene;
     std::unique_ptr<Simulation> sim;
 };

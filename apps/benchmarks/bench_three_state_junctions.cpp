@@ -9,9 +9,11 @@
 #include <spdlog/logger.h>
 
 #include "frictionlab/model/context.hpp"
+#include "frictionlab/model/junction_counts.hpp"
+#include "frictionlab/model/kinds.hpp"
 #include "frictionlab/model/stage.hpp"
 
-#include "three_state_junctions.hpp"
+#include "shipped_plugins.hpp"
 
 namespace frictionlab {
 namespace {
@@ -33,7 +35,7 @@ struct Interface {
         dy = Eigen::VectorXd::Zero(layout.size());
         normal = &quantities.field("normal_force", "interface", blocks, "N", "bench");
         Context ctx{log, 1, &body, &quantities, nullptr, "friction"};
-        law = std::make_unique<ThreeStateJunctions>(ThreeStateJunctions::Params{}, ctx);
+        law = bench::shipped_registry().create<FrictionLaw>("three_state_junctions", {}, ctx);
         settle();
     }
 
@@ -66,7 +68,7 @@ struct Interface {
     StateLayout layout;
     Eigen::VectorXd y, dy;
     double t = 0;
-    std::unique_ptr<ThreeStateJunctions> law;
+    std::unique_ptr<FrictionLaw> law;
 };
 
 void add_forces(benchmark::State& state, Interface& s) {
@@ -76,13 +78,10 @@ void add_forces(benchmark::State& state, Interface& s) {
         s.law->add_forces(v, f);
         benchmark::DoNotOptimize(s.dy.data());
     }
-    Index junctions = 0, active = 0;
-    for (Index i = 0; i < blocks; ++i) {
-        junctions += s.law->block(i).size();
-        active += s.law->block(i).size() - s.law->block(i).pinned();
-    }
-    state.counters["junctions"] = static_cast<double>(junctions);
-    state.counters["non_pinned"] = static_cast<double>(active);
+    const auto counts = JunctionCounts::find(s.quantities, blocks);  // as the law publishes them
+    const double non_pinned = counts->sliding->sum() + counts->dislocated->sum();
+    state.counters["junctions"] = counts->pinned->sum() + non_pinned;
+    state.counters["non_pinned"] = non_pinned;
 }
 
 void BM_AddForcesLoading(benchmark::State& state) {

@@ -1,6 +1,6 @@
 #include "three_state_junctions.hpp"
 
-#include "frictionlab/model/friction_rules.hpp"
+#include "frictionlab/model/junction_settings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,8 +43,6 @@ std::string angle_rule(const Params& p) {
         m);
 }
 
-std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
-
 }  // namespace
 
 ParamSpec<Params> ThreeStateJunctions::spec() {
@@ -71,13 +69,7 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
           "Tangential stiffness k_s of one junction; 0 = Mindlin, 8 G* rbar with G = E/(2(1+nu)), G* = G/(2(2-nu)).")
         .unit("N/m")
         .at_least(0);
-    s.add("mu_s", &Params::mu_s, "Static coefficient of one micro-contact: a pinned junction breaks when |f| > mu_s p.")
-        .unit("1")
-        .greater_than(0);
-    s.add("mu_d", &Params::mu_d, "Sliding coefficient of one micro-contact: a sliding junction carries mu_d p.")
-        .unit("1")
-        .at_least(0)
-        .also_known_as("mu_k");
+    junction_settings::add_coefficients(s, "p", "sliding");
     s.add("sliding_time_mean", &Params::sliding_time_mean, "Mean t_s of the sliding-state duration (Gaussian, t > 0).")
         .unit("s")
         .greater_than(0);
@@ -108,10 +100,9 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
              "'slip_and_repin' slips at once and re-pins carrying s mu_d p, as a junction that slid comes to rest; "
              "'hold' keeps it pinned at any force (the run is refused if one is still above mu_s p when loading "
              "starts).");
-    s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
+    junction_settings::add_interface(
+        s, "junction forces along x: the breaking test and the clamps order them on one axis");
     s.rule("initial_angle", angle_rule);
-    s.rule("mu_d", order_rule);
-    s.dimensions({2}, "junction forces along x: the breaking test and the clamps order them on one axis");
     return s;
 }
 

@@ -1,6 +1,6 @@
 #include "two_state_junctions.hpp"
 
-#include "frictionlab/model/friction_rules.hpp"
+#include "frictionlab/model/junction_settings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +21,6 @@ using Params = TwoStateJunctions::Params;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-std::string order_rule(const Params& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); }
-
 }  // namespace
 
 ParamSpec<Params> TwoStateJunctions::spec() {
@@ -35,13 +33,7 @@ ParamSpec<Params> TwoStateJunctions::spec() {
           "Number N_s of junctions on every interface block (fixed).")
         .unit("1")
         .at_least(1);
-    s.add("mu_s", &Params::mu_s, "Static coefficient: a pinned junction breaks when |f| > mu_s f_N / N_s.")
-        .unit("1")
-        .greater_than(0);
-    s.add("mu_d", &Params::mu_d, "Dynamic coefficient: a slipping junction carries mu_d f_N / N_s.")
-        .unit("1")
-        .at_least(0)
-        .also_known_as("mu_k");
+    junction_settings::add_coefficients(s, "f_N / N_s", "slipping");
     s.add("junction_stiffness", &Params::junction_stiffness,
           "Stiffness k_bar of one pinned junction on a block at the mean normal force; k_i = k_bar sqrt(f_N,i/<f_N>).")
         .unit("N/m")
@@ -52,9 +44,7 @@ ParamSpec<Params> TwoStateJunctions::spec() {
     s.add("slipping_time_sd", &Params::slipping_time_sd, "Standard deviation sigma_R of the slipping duration.")
         .unit("s")
         .at_least(0);
-    s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
-    s.rule("mu_d", order_rule);
-    s.dimensions({2}, "junction forces along x: the breaking test orders them on one axis");
+    junction_settings::add_interface(s, "junction forces along x: the breaking test orders them on one axis");
     return s;
 }
 

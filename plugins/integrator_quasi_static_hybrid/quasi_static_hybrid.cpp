@@ -161,7 +161,7 @@ void QuasiStaticHybrid::restore_state(StateIn& in) {
 
 double QuasiStaticHybrid::step(System& system, double max_dt) {
     const auto start = Clock::now();
-    if (quiet_) {
+    if (phase_.quiet) {
         double h = 0;
         const long long steps_before = system.step_index();
         if (quiet_step(system, max_dt, h)) {
@@ -171,9 +171,9 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
             statistics_.quiet_wall += Clock::now() - start;
             return h;
         }
-        quiet_ = false;
+        phase_.quiet = false;
         ++statistics_.switches_to_dynamic;
-        log_.debug("quasi_static_hybrid: dynamic from t = {:.9g} s: {}", system.time(), why_dynamic_);
+        log_.debug("quasi_static_hybrid: dynamic from t = {:.9g} s: {}", system.time(), phase_.why_dynamic);
         calm_.restart(system.time(), p_.check_interval);
         // The run asked for a step to its next observation, which only a quiet step lands on: the
         // step is given back undone, so that the dynamic phase's steps never depend on the cadences.
@@ -187,7 +187,7 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
     if (!creep) ++statistics_.dynamic_steps;
     if (calm_.check_due(system.time(), p_.check_interval)) {
         if (may_turn_quiet(system, creep)) {
-            quiet_ = true, ++statistics_.switches_to_quiet, short_steps_ = 0;
+            phase_.quiet = true, ++statistics_.switches_to_quiet, phase_.short_steps = 0;
             log_.debug("quasi_static_hybrid: quiet from t = {:.9g} s", system.time());
         }
     }
@@ -198,8 +198,8 @@ double QuasiStaticHybrid::step(System& system, double max_dt) {
 bool QuasiStaticHybrid::creep_step(System& system, double max_dt) {
     if (p_.creep_step == 0) return false;
     const double speed = system.layout().velocities(system.y()).lpNorm<Eigen::Infinity>();
-    creeping_ = speed <= (creeping_ ? 1 : creep_resume) * p_.creep_speed;
-    return creeping_ && creep_.step(system, max_dt);
+    phase_.creeping = speed <= (phase_.creeping ? 1 : creep_resume) * p_.creep_speed;
+    return phase_.creeping && creep_.step(system, max_dt);
 }
 
 bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
@@ -219,9 +219,9 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
         // The steady velocities of this time, which the current ones must be close to: to a
         // hundredth of quiet_speed, at the ringing positions (the projection balances them).
         calm_.checks_since_full = 0;
-        y_ = system.y();
-        if (solver_.steady_velocity_within(system, t, y_, check_accuracy * p_.quiet_speed)) {
-            calm_.steady = layout.velocities(y_);
+        phase_.forming = system.y();
+        if (solver_.steady_velocity_within(system, t, phase_.forming, check_accuracy * p_.quiet_speed)) {
+            calm_.steady = layout.velocities(phase_.forming);
             calm = (velocities - calm_.steady).lpNorm<Eigen::Infinity>() <= p_.quiet_speed;
         } else {
             calm_.steady.resize(0), calm = false;  // no quasi-static state to compare with
@@ -230,8 +230,8 @@ bool QuasiStaticHybrid::may_turn_quiet(System& system, bool after_creep) {
     if (!calm_.held_for(p_.quiet_hold, t, calm)) return false;
     // Turning quiet: the first quiet step starts from the quasi-static state of this time (the
     // projection), equilibrium with the steady velocities held.
-    projected_ = quasi_static_state(system, t);
-    return projected_;
+    phase_.projected = quasi_static_state(system, t);
+    return phase_.projected;
 }
 
 bool QuasiStaticHybrid::keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after,
@@ -248,40 +248,41 @@ bool QuasiStaticHybrid::no_scheduled_event(const System& system) {
 bool QuasiStaticHybrid::quasi_static_state(System& system, double t) {
     // The dashpots carry C v: with the steady velocities found, the balance is solved again with
     // them held, else the next step would start with a shift K^-1 C (v_new - v_old) to make up.
-    return solver_.equilibrium(system, t, y_) && solver_.steady_velocity(system, t, y_) &&
-           solver_.equilibrium(system, t, y_);
+    return solver_.equilibrium(system, t, phase_.forming) && solver_.steady_velocity(system, t, phase_.forming) &&
+           solver_.equilibrium(system, t, phase_.forming);
 }
 
-bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) {
-    // y_ holds the static response to the jump, the system the state before it. Events the effects
+bool QuasiStaticHybrid::transient_reaches_event(const System& system, double t) const {
+    // phase_.forming holds the static response to the jump, the system the state before it. Events the effects
     // foresee anyway (a count change due from the normal force's rate) are not the transient's:
     // only one the path brings earlier than the state at rest counts.
     const StateLayout& layout = system.layout();
-    mean_ = system.y();
-    layout.velocities(mean_).setZero();
-    const double at_rest = system.foreseen_event_time(view_of(mean_, layout, t));
-    layout.velocities(mean_) = (layout.positions(y_) - layout.positions(mean_)) / transient_path_time;
-    const double on_path = system.foreseen_event_time(view_of(mean_, layout, t));
+    Eigen::VectorXd path = system.y();  // the state with the velocities of the transient's path
+    layout.velocities(path).setZero();
+    const double at_rest = system.foreseen_event_time(view_of(path, layout, t));
+    layout.velocities(path) = (layout.positions(phase_.forming) - layout.positions(path)) / transient_path_time;
+    const double on_path = system.foreseen_event_time(view_of(path, layout, t));
     return on_path < at_rest && on_path - t <= transient_overshoot * transient_path_time;
 }
 
 bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // Within a solved span the response is linear in time: an observation inside it is on the line
     // between the span's ends, and nothing is committed on the way (span_step).
-    if (span_.open && !projected_) return span_step(system, max_dt, h);
+    if (span_.open && !phase_.projected) return span_step(system, max_dt, h);
     span_.open = false;
-    // From the projected state just after turning quiet (y_ then holds it), else from the accepted one.
-    if (!projected_) y_ = system.y();
-    const bool projected = std::exchange(projected_, false);
+    // From the projected state just after turning quiet (phase_.forming then holds it), else from the accepted one.
+    if (!phase_.projected) phase_.forming = system.y();
+    const bool projected = std::exchange(phase_.projected, false);
     const StateLayout& layout = system.layout();
     const double t = system.time();
-    if (!system.quasi_static_regime(view_of(y_, layout, t))) return refuse("an effect left its quasi-static regime");
+    if (!system.quasi_static_regime(view_of(phase_.forming, layout, t)))
+        return refuse("an effect left its quasi-static regime");
     if (p_.jumps == Jumps::dynamic && !no_scheduled_event(system)) return refuse("a scheduled event is pending");
     // The last commit may have made a jump (a junction broke, entered the dislocated state or was
     // removed): its static response comes first. If its new loads bring another junction to its
     // threshold, the next step is a short one to it.
     bool jumped = false;
-    if (!projected && !solver_.in_equilibrium(system, t, y_, jump_residual * p_.position_tolerance)) {
+    if (!projected && !solver_.in_equilibrium(system, t, phase_.forming, jump_residual * p_.position_tolerance)) {
         jumped = true;
         if (!quasi_static_state(system, t)) return refuse("no static solution");
         if (p_.jumps == Jumps::checked && transient_reaches_event(system, t))
@@ -291,8 +292,8 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     // Scheduled events at or before t have been judged by the last commit.
     const double scheduled = system.next_event_time();
     double event = std::min(scheduled > t ? scheduled : std::numeric_limits<double>::infinity(),
-                            system.foreseen_event_time(view_of(y_, layout, t)));
-    span_.start = y_;
+                            system.foreseen_event_time(view_of(phase_.forming, layout, t)));
+    span_.start = phase_.forming;
     system.begin_step();  // the effects' step-start references (B.17) for the solves of the span
     // The events are foreseen at the start's velocities; the span's own mean velocity (q1 - q0)/H
     // may foresee an earlier one (the drive changed at a stage start, junction counts changed the
@@ -305,21 +306,24 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
         length = std::min(
             {system.stage_end() - t, p_.max_quiet_step, std::max(event + p_.event_overshoot - t, event_slack * p_.dt)});
         const double t1 = t + length;
-        y_ = span_.start;
-        layout.positions(y_) += length * layout.velocities(span_.start);  // the linear response as the first guess
-        if (!solver_.equilibrium(system, t1, y_)) return refuse("no static solution");
+        phase_.forming = span_.start;
+        layout.positions(phase_.forming) +=
+            length * layout.velocities(span_.start);  // the linear response as the first guess
+        if (!solver_.equilibrium(system, t1, phase_.forming)) return refuse("no static solution");
         // From a balanced start the response to the drive is (near) linear: its secant over the
         // span is the steady velocity (a jump or the turn to quiet solved for it at the start).
         // Over a span shorter than the dynamic step (to an event) the secant would carry Newton's
         // tolerance divided by the span: the velocities then stay as they were.
-        if (length >= p_.dt) layout.velocities(y_) = (layout.positions(y_) - layout.positions(span_.start)) / length;
+        if (length >= p_.dt)
+            layout.velocities(phase_.forming) =
+                (layout.positions(phase_.forming) - layout.positions(span_.start)) / length;
         // Where that round-off stays below quiet_speed, the secant also tells a change of the drive.
-        if (length * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(span_.start, y_, layout))
+        if (length * p_.quiet_speed >= p_.position_tolerance && !keeps_pace(span_.start, phase_.forming, layout))
             return refuse(
                 "the steady velocities changed at once (a drive started or changed): the masses lag, and ring");
-        mean_ = span_.start;
-        layout.velocities(mean_) = (layout.positions(y_) - layout.positions(span_.start)) / length;
-        const double foreseen = system.foreseen_event_time(view_of(mean_, layout, t));
+        Eigen::VectorXd path = span_.start;  // the span's start with the velocities of its line
+        layout.velocities(path) = (layout.positions(phase_.forming) - layout.positions(span_.start)) / length;
+        const double foreseen = system.foreseen_event_time(view_of(path, layout, t));
         if (foreseen + p_.event_overshoot + event_slack * p_.dt >= t1) break;
         log_.trace("quasi_static_hybrid: span from {:.12g} to {:.12g} redone to {:.12g} (event was {:.12g}, jump {})",
                    t, t1, foreseen, event, jumped);
@@ -327,9 +331,9 @@ bool QuasiStaticHybrid::quiet_step(System& system, double max_dt, double& h) {
     }
     // Events closer together than the dynamic step (a cascade of breaks spreading, the clocks of
     // many junctions running out): the dynamic scheme takes them as the reference does, cheaper.
-    short_steps_ = length < p_.dt ? short_steps_ + 1 : 0;
-    if (short_steps_ > max_short_steps) return refuse("events closer together than the dynamic step");
-    span_.end.swap(y_);
+    phase_.short_steps = length < p_.dt ? phase_.short_steps + 1 : 0;
+    if (phase_.short_steps > max_short_steps) return refuse("events closer together than the dynamic step");
+    span_.end.swap(phase_.forming);
     span_.start_time = t, span_.end_time = t + length, span_.open = true;
     ++statistics_.quiet_spans;
     return span_step(system, max_dt, h);
@@ -351,8 +355,8 @@ bool QuasiStaticHybrid::span_step(System& system, double max_dt, double& h) {
     // no commit). The first one begins the path from the span's start, the accepted state still.
     h = max_dt;
     if (!system.on_straight_path()) system.begin_straight_path(t1, span_.end);
-    span_.state_at(t + h, y_, system.layout());
-    system.move_along_path(t + h, y_);
+    span_.state_at(t + h, phase_.forming, system.layout());
+    system.move_along_path(t + h, phase_.forming);
     return true;
 }
 

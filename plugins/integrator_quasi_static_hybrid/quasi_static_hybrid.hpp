@@ -8,6 +8,7 @@
 #include "calm_detector.hpp"
 #include "creep_stepper.hpp"
 #include "equilibrium_solver.hpp"
+#include "hybrid_phase.hpp"
 #include "phase_statistics.hpp"
 #include "quiet_span.hpp"
 
@@ -82,7 +83,7 @@ public:
     void restore_state(StateIn& in) override;
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(solver_, creep_, quiet_, creeping_, projected_, y_, short_steps_, span_, calm_, statistics_);
+        ar(solver_, creep_, phase_, span_, calm_, statistics_);
     }
     double nominal_dt() const override { return p_.dt; }
     double stability_radius() const override { return dynamic_->stability_radius(); }
@@ -97,10 +98,10 @@ public:
     /// the dynamic phase's steps (explicit and creep) are observed at the step end nearest each
     /// observation, as a fixed-step scheme is, so that observing (a rupture's front sampled every
     /// microsecond) does not change them. A quiet step found impossible returns 0, nothing done.
-    bool steps_to_observations() const override { return quiet_; }
+    bool steps_to_observations() const override { return phase_.quiet; }
     std::vector<std::pair<std::string, double>> statistics() const override;
 
-    bool quiet() const { return quiet_; }
+    bool quiet() const { return phase_.quiet; }
     const PhaseStatistics& phase_statistics() const { return statistics_; }
     const CreepStepper::Counts& creep_counts() const { return creep_.counts(); }
 
@@ -115,19 +116,19 @@ private:
     /// The dynamic phase's check: whether the run may turn quiet now (with its hysteresis). After a
     /// creep step (`after_creep`), the velocities judged are the step's mean ones.
     bool may_turn_quiet(System& system, bool after_creep);
-    /// y_ made the quasi-static state of time t: balanced with its steady velocities held.
+    /// The phase's `forming` state made the quasi-static state of time t: balanced with its steady velocities held.
     bool quasi_static_state(System& system, double t);
     /// Whether the velocities of `after` are within quiet_speed (and a percent of themselves) of
     /// those of `before`: a quasi-static state may follow a change of the drive only as fast as
     /// inertia lets it.
     bool keeps_pace(const Eigen::VectorXd& before, const Eigen::VectorXd& after, const StateLayout& layout) const;
-    /// Whether the transient of the jump from the system's state to y_ could trigger an event.
-    bool transient_reaches_event(const System& system, double t);
+    /// Whether the transient of the jump from the system's state to the phase's `forming` one could trigger an event.
+    bool transient_reaches_event(const System& system, double t) const;
     /// Whether no effect has a scheduled event pending (no junction clock runs).
     static bool no_scheduled_event(const System& system);
     /// A quiet step refused (false: nothing done), with its reason kept for the log of the switch.
     bool refuse(const char* reason) {
-        why_dynamic_ = reason;
+        phase_.why_dynamic = reason;
         return false;
     }
 
@@ -136,16 +137,10 @@ private:
     std::unique_ptr<Integrator> dynamic_;
     EquilibriumSolver solver_;
     CreepStepper creep_;
-    bool quiet_ = false;
-    bool creeping_ = false;   // below creep_speed (with the hysteresis)
-    bool projected_ = false;  // y_ holds the quasi-static state the first quiet step starts from
-    int short_steps_ = 0;     // quiet steps in a row shorter than dt
+    HybridPhase phase_;
     QuietSpan span_;
     CalmDetector calm_;
     PhaseStatistics statistics_;
-    Eigen::VectorXd y_;             // the quiet solution being formed
-    Eigen::VectorXd mean_;          // a state with the velocities of a path, for the events they foresee
-    const char* why_dynamic_ = "";  // why the last quiet step was refused, for the log
 };
 
 }  // namespace frictionlab
