@@ -19,8 +19,9 @@ namespace {
 
 using frictionlab::RunView;
 
-/// max_i sqrt(vx_i^2 + vz_i^2) over every node: a quick way to see when the slider slips and when it
-/// has settled. Columns: time (s), step, max_speed (m/s).
+/// max_i |v_i| over every node: a quick way to see when the slider slips and when it has settled.
+/// Columns: time (s), step, max_speed (m/s). It reads the velocities as the N x d array the state
+/// view gives, so it works on a body of any dimension, and says so.
 class MaxSpeedCsv final : public frictionlab::Observer {
 public:
     // Defaults live here, and only here.
@@ -37,6 +38,9 @@ public:
         s.add("file_name", &Params::file_name, "Name of the table in the run's output directory.");
         s.rule("file_name", [](const Params& p) { return frictionlab::output_file_name_problem(p.file_name); });
         frictionlab::add_table_format_param(s, &Params::format);
+        // The bodies it works on: 2D and 3D (a type that declares nothing works in 2D only, and
+        // `check` refuses a 3D scene naming it).
+        s.dimensions({2, 3});
         return s;
     }
 
@@ -55,7 +59,8 @@ public:
 
     void observe(const RunView& view) override {
         const auto& s = view.state;
-        const double max_speed = s.vx.size() == 0 ? 0.0 : (s.vx.square() + s.vz.square()).sqrt().maxCoeff();
+        // s.velocity is [nodes, dimension]: row i is node i's velocity, whatever the dimension.
+        const double max_speed = s.velocity.rows() == 0 ? 0.0 : s.velocity.matrix().rowwise().norm().maxCoeff();
         table_->row({s.t, static_cast<double>(view.step), max_speed});
     }
 

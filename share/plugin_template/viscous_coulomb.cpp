@@ -1,10 +1,13 @@
 // An out-of-tree FrictionLab plugin with one friction law: Coulomb friction smoothed near zero slip
-// velocity, F_i = -mu f_N,i tanh(v_i / v_r) on each interface block. A friction law is an Effect:
+// velocity, F_i = -mu f_N,i tanh(|v_i| / v_r) v_i / |v_i| on each interface block, v_i the block's
+// velocity in the interface (its tangential axes: x on a 2D body, x and y on a 3D one; the body's
+// contact frame says which axes they are). A friction law is an Effect:
 // add_forces() is a pure function of the stage state (the integrator calls it several times per
 // step); discrete transitions, if a law has any, go in commit(), once per accepted step.
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -36,6 +39,7 @@ public:
             .unit("m/s")
             .greater_than(0);
         s.add("node_set", &Params::node_set, "The bulk's node set in contact with the base.");
+        s.dimensions({2, 3});  // it acts along the contact frame's tangential axes, one or two
         return s;
     }
 
@@ -44,6 +48,7 @@ public:
         if (!ctx.body || !ctx.quantities)
             throw frictionlab::InputError("viscous_coulomb: needs the bulk model's body and the run's quantities");
         nodes_ = ctx.body->nodes(p_.node_set);
+        tangential_ = ctx.body->contact_frame.tangential;
         const Index n = static_cast<Index>(nodes_.size());
         // The base contact (a loader, evaluated before the friction law) publishes the normal force
         // of each interface block; declaring it needed gives this law read access to it, and a scene
@@ -59,15 +64,24 @@ public:
     void add_forces(const frictionlab::StageView& s, frictionlab::ForceView& f) override {
         for (std::size_t k = 0; k < nodes_.size(); ++k) {
             const Index node = nodes_[k];
-            const double force = -p_.mu * (*normal_force_)(k)*std::tanh(s.vx(node) / p_.regularisation_velocity);
-            (*friction_force_)(k) = force;  // published for observers
-            f.fx(node) += force;
+            double speed = 0;  // |v| in the interface plane
+            for (const int axis : tangential_) speed += s.velocity(node, axis) * s.velocity(node, axis);
+            speed = std::sqrt(speed);
+            if (!(speed > 0)) {
+                (*friction_force_)(k) = 0;
+                continue;
+            }
+            const double magnitude = p_.mu * (*normal_force_)(k)*std::tanh(speed / p_.regularisation_velocity);
+            for (const int axis : tangential_) f.force(node, axis) -= magnitude * (s.velocity(node, axis) / speed);
+            // published for observers: the force along the sliding direction (the frame's first axis)
+            (*friction_force_)(k) = -magnitude * (s.velocity(node, tangential_.front()) / speed);
         }
     }
 
 private:
     Params p_;
     frictionlab::NodeSet nodes_;
+    std::vector<int> tangential_;  // the axes of the interface plane
     const Eigen::ArrayXd* normal_force_ = nullptr;
     Eigen::ArrayXd* friction_force_ = nullptr;
 };

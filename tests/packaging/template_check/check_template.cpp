@@ -1,12 +1,14 @@
 // check_template <observer_max_speed_csv.so> <output directory>
 // Loads the plugin built from share/plugin_template through the installed library, runs its
 // observer on a two-node state whose largest speed is known (|(3, 4)| = 5 m/s) and checks the table,
-// written by the framework's table writer with the run's provenance beside it.
+// written by the framework's table writer with the run's provenance beside it; then on a 3D body
+// (|(2, 3, 6)| = 7 m/s), as the type says it works in 2D and 3D.
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <spdlog/logger.h>
 
@@ -37,6 +39,8 @@ int main(int argc, char** argv) {
         if (!info) return fail("the plugin did not register observer type 'max_speed_csv'");
         if (info->params.size() != 2 || info->params[0].key != "file_name" || info->params[1].key != "format")
             return fail("observer 'max_speed_csv' should declare two keys, file_name and format");
+        if (info->dimensions != std::vector<int>{2, 3})
+            return fail("observer 'max_speed_csv' should work in 2D and 3D, not " + info->dimensions_text());
 
         spdlog::logger log("check_template");  // no sinks: quiet
         fl::Body body;
@@ -85,6 +89,32 @@ int main(int argc, char** argv) {
         provenance << sidecar.rdbuf();
         if (provenance.str().find("scene_hash: c0ffee") == std::string::npos)
             return fail("no provenance beside the table: '" + provenance.str() + "'");
+        {  // a 3D body of two nodes: the largest speed is |(2, 3, 6)| = 7 m/s
+            fl::Body solid;
+            solid.reference_position = Eigen::ArrayXXd::Zero(2, 3);
+            solid.reference_position(1, 0) = 1.0;
+            solid.mass = Eigen::ArrayXd::Ones(2);
+            solid.contact_frame = fl::ContactFrame::horizontal_base(3);
+            fl::Quantities solid_quantities;
+            fl::System solid_system(solid, 0);
+            Eigen::VectorXd& y3 = solid_system.initial_state();
+            solid_system.layout().velocities(y3) << 2.0, 0.5, 3.0, 0.5, 6.0, 0.5;
+            fl::Context solid_ctx{log, 0, &solid, &solid_quantities, nullptr, "observers[0]"};
+            auto observer =
+                registry.create<fl::Observer>("max_speed_csv", {{"file_name", std::string("speed_3d.csv")}}, solid_ctx);
+            const fl::RunView view{solid_system, solid, solid_system.state(), solid_quantities, stage, 1, output,
+                                   run_info,     log};
+            observer->begin(view);
+            observer->observe(view);
+            observer->end(view);
+        }
+        std::ifstream in3(output / "speed_3d.csv");
+        std::string header3, row3;
+        std::getline(in3, header3);
+        std::getline(in3, row3);
+        const double speed3 = std::stod(row3.substr(row3.rfind(',') + 1));
+        if (std::abs(speed3 - 7.0) > 1e-12)
+            return fail("on a 3D body: unexpected row '" + row3 + "', expected speed 7");
     } catch (const std::exception& e) {
         return fail(e.what());
     }
