@@ -434,12 +434,12 @@ TEST_F(Docs, TheGlossaryNamesEveryColumnAndArrayARunWritesWithItsUnit) {
 TEST_F(Docs, TheGlossaryNamesEveryColumnOfTheCampaignTablesWithItsUnit) {
     // A one-case sweep and a two-case study of the tiny scenes the sweep and study tests use, loading
     // for a millisecond: their tables, not their physics.
-    std::ofstream(dir_ / "sweep.yaml") << "scene: " << (source / "tests/sweep/tiny_scene.yaml").string()
+    std::ofstream(dir_ / "sweep.yaml") << "scene: " << (source / "tests/campaign/sweep/tiny_scene.yaml").string()
                                        << "\ncases:\n  - name: short\n    set: [\"stages[1].duration=1.0e-3\"]\n"
                                        << "seeds: [1]\n";
     const auto sweep = frictionlab("sweep -q sweep.yaml -o sweep_out -j 1", dir_);
     ASSERT_EQ(sweep.code, 0) << sweep.output;
-    std::ofstream(dir_ / "study.yaml") << "scene: " << (source / "tests/study/tiny_scene.yaml").string()
+    std::ofstream(dir_ / "study.yaml") << "scene: " << (source / "tests/campaign/study/tiny_scene.yaml").string()
                                        << "\nreference:\n  set: [\"stages[1].duration=1.0e-3\"]\n"
                                        << "cases:\n  - name: coarse\n    set: [\"stages[1].duration=1.0e-3\", "
                                           "\"integrator.dt=4.0e-7\"]\n";

@@ -52,11 +52,11 @@ def quiet_run(tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def real_sweep(cli, source_dir, tmp_path_factory):
-    """tests/sweep/tiny_sweep.yaml run here: two loading rates x seeds 1 and 2, drawn by
+    """tests/campaign/sweep/tiny_sweep.yaml run here: two loading rates x seeds 1 and 2, drawn by
     `frictionlab plot DIR`."""
     out = tmp_path_factory.mktemp("sweep") / "out"
-    for args in (["sweep", "-q", os.path.join(source_dir, "tests", "sweep", "tiny_sweep.yaml"), "-o", str(out)],
-                 ["plot", str(out)]):
+    sweep = os.path.join(source_dir, "tests", "campaign", "sweep", "tiny_sweep.yaml")
+    for args in (["sweep", "-q", sweep, "-o", str(out)], ["plot", str(out)]):
         result = subprocess.run([cli, *args], capture_output=True, text=True)
         assert result.returncode == 0, result.stdout + result.stderr
     return str(out)
@@ -64,11 +64,12 @@ def real_sweep(cli, source_dir, tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def real_study(cli, source_dir, tmp_path_factory):
-    """An ensemble study of tests/study/tiny_scene.yaml over two seeds run here: the reference (RK4
-    at 0.2 us), the same at half its step, and at twice it. `frictionlab study` draws its figures."""
+    """An ensemble study of tests/campaign/study/tiny_scene.yaml over two seeds run here: the reference
+    (RK4 at 0.2 us), the same at half its step, and at twice it. `frictionlab study` draws its figures."""
     folder = tmp_path_factory.mktemp("study")
+    scene = os.path.join(source_dir, "tests", "campaign", "study", "tiny_scene.yaml")
     (folder / "study.yaml").write_text(
-        f"title: tiny ensemble figures\nscene: {os.path.join(source_dir, 'tests', 'study', 'tiny_scene.yaml')}\n"
+        f"title: tiny ensemble figures\nscene: {scene}\n"
         "observe_every: 1.0e-5\nprofile_every: 1.0e-4\nseeds: 2\n"
         "reference:\n  set: [integrator.dt=2.0e-7]\nhalf_step:\n  set: [integrator.dt=1.0e-7]\n"
         "cases:\n  - name: rk4_coarse\n    set: [integrator.dt=4.0e-7]\n")

@@ -83,7 +83,7 @@ def test_the_module_and_a_sweeps_table_give_the_same_interval(cli, source_dir, t
     # One interval method: sweep_statistics.csv's bounds are ensembles.mean of run_statistics.csv's
     # values, to the last digit written.
     sweep = tmp_path / "five.yaml"
-    sweep.write_text(f"scene: {source_dir}/tests/sweep/tiny_scene.yaml\n"
+    sweep.write_text(f"scene: {source_dir}/tests/campaign/sweep/tiny_scene.yaml\n"
                      "seeds: [1, 2, 3, 4, 5]\n")
     done = subprocess.run([cli, "sweep", "-q", str(sweep), "-o", str(tmp_path / "out"), "-j", "2"],
                           capture_output=True, text=True)

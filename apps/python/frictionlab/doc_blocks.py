@@ -53,7 +53,7 @@ BLOCKS: Dict[str, Block] = {
                                           "python3 -m frictionlab.lattice_convergence (lattice-resolution.md)"),
     "junction-noise": Block(LATTICE + ("configs/li2020/junction_noise.yaml",),
                             "python3 -m frictionlab.lattice_convergence (lattice-resolution.md)"),
-    "event-matrix": Block(("configs/headline.yaml", "configs/peer_laws", "tests/model/test_event_conformance.cpp",
+    "event-matrix": Block(("configs/headline.yaml", "configs/peer_laws", "tests/scenes/test_event_conformance.cpp",
                            "share/scripts/event-matrix-table"),
                           "share/scripts/event-matrix-table (theory.md §5a says how)"),
 }

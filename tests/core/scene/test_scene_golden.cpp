@@ -1,6 +1,6 @@
 // Golden diagnostics: every bad_scenes/NN_name.yaml (with overrides from NN_name.set, one per
 // line, if present) must give exactly the diagnostics in NN_name.expected. The tests run from
-// tests/core so messages name the files as a user in that folder would see them.
+// tests/core/scene so messages name the files as a user in that folder would see them.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path here = fs::path(FRICTIONLAB_SOURCE_DIR) / "tests" / "core";
+const fs::path here = fs::path(FRICTIONLAB_SOURCE_DIR) / "tests" / "core" / "scene";
 
 class WorkingDirectory {
 public:

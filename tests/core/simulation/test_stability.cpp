@@ -141,7 +141,7 @@ TEST(Stability, TheEdgeOfADenseSpectrumIsResolved) {
     // 400 masses: the stiffest modes lie ~5e-5 apart (relative), as the top of a fine lattice's
     // spectrum does. Power iteration's growth put the underdamped chain's top 1.5 % high (the pair
     // is not normal); the Ritz values resolve it, and the step map's limit is not claimed above the
-    // closed form. (tests/model holds the estimate to runs on a 161 x 33 lattice.)
+    // closed form. (tests/scenes holds the estimate to runs on a 161 x 33 lattice.)
     for (const double c : {30.0, 0.1}) {
         Chain chain(5.0, c, 0, 400);
         const StabilityEstimate e = estimate_stability(chain.system, rk4_radius);
