@@ -54,3 +54,11 @@ def test_a_block_whose_runs_wrote_anything_else_is_refused_and_left_as_it_was(tr
         carried_blocks.carry("li2020-claims", [readme], old, new)
     assert open(readme).read() == before
     assert carried_blocks.main(["li2020-claims", readme, "--old", old, "--new", new]) == 1
+
+
+def test_a_block_whose_runs_left_an_output_unwritten_is_refused(tree, tmp_path):
+    readme = str(tree / "README.md")
+    old, new = sweep(str(tmp_path / "old")), sweep(str(tmp_path / "new"))
+    os.remove(os.path.join(new, "cases", "base_seed-2", "loading_curve.csv"))
+    with pytest.raises(ValueError, match=r"base_seed-2: loading_curve.csv \(not written again\)"):
+        carried_blocks.carry("li2020-claims", [readme], old, new)

@@ -74,27 +74,32 @@ def _hdf5_agree(a: str, b: str) -> bool:
     return True
 
 
+def _outputs(case: str) -> List[str]:
+    """The outputs of a case's run, as paths below it: not its logs or figures."""
+    return sorted(os.path.relpath(os.path.join(folder, name), case)
+                  for folder, _, names in os.walk(case) if os.path.basename(folder) != "logs"
+                  for name in names if not name.endswith(NOT_OUTPUTS))
+
+
 def differences(old_case: str, new_case: str) -> List[str]:
     """The outputs of a case run again (`new_case`) that are not what its first run wrote, as
     paths below the case; empty if every output agrees."""
-    found = []
-    for folder, _, names in os.walk(new_case):
-        for name in sorted(names):
-            new = os.path.join(folder, name)
-            rel = os.path.relpath(new, new_case)
-            old = os.path.join(old_case, rel)
-            if name.endswith(NOT_OUTPUTS) or os.path.basename(folder) == "logs":
-                continue
-            if not os.path.exists(old):
-                found.append(f"{rel} (not in the first run)")
-            elif name in ("run.yaml", "case.yaml"):
-                if not _records_agree(old, new):
-                    found.append(rel)
-            elif name.endswith(".h5"):
-                if not _hdf5_agree(old, new):
-                    found.append(rel)
-            elif not filecmp.cmp(old, new, shallow=False):
+    new_outputs = _outputs(new_case)
+    found = [f"{rel} (not written again)" for rel in sorted(set(_outputs(old_case)) - set(new_outputs))]
+    for rel in new_outputs:
+        name = os.path.basename(rel)
+        new = os.path.join(new_case, rel)
+        old = os.path.join(old_case, rel)
+        if not os.path.exists(old):
+            found.append(f"{rel} (not in the first run)")
+        elif name in ("run.yaml", "case.yaml"):
+            if not _records_agree(old, new):
                 found.append(rel)
+        elif name.endswith(".h5"):
+            if not _hdf5_agree(old, new):
+                found.append(rel)
+        elif not filecmp.cmp(old, new, shallow=False):
+            found.append(rel)
     return found
 
 
