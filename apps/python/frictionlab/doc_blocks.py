@@ -8,7 +8,8 @@ the commit, the runs' scene hashes and seeds, and a fingerprint of everything it
 (BLOCKS: the physics sources, its scenes, its analysis code). tests/python/test_doc_blocks.py fails
 for a block whose fingerprint no longer matches the tree, naming the command that regenerates it.
 The fingerprint ignores comments and white space, so that rewording or reformatting a source does
-not call for new runs, and any other change does."""
+not call for new runs, and any other change does; a change shown to move no output may carry a block
+over instead (frictionlab.carried_blocks, its stamp then saying so)."""
 import hashlib
 import os
 import re
