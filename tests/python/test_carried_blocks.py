@@ -2,6 +2,7 @@
 text kept, its stamp this tree's with the commit it was made at and the cases checked; and refused,
 changing nothing, when a case run again wrote anything else."""
 import os
+import subprocess
 
 import pytest
 
@@ -25,9 +26,11 @@ def sweep(folder, loading_curve="time,driving_force\n0,0\n1,2\n", wall=1.0):
 @pytest.fixture
 def tree(tmp_path):
     """A source tree whose README holds a stamped block, then a change of code."""
-    for folder in ("core/src", "plugins/law", "configs"):
+    for folder in ("core/src", "plugins/law", "configs/li2020"):
         (tmp_path / folder).mkdir(parents=True)
     (tmp_path / "CMakeLists.txt").write_text("project(x)\n")
+    (tmp_path / "plugins/law/law.hpp").write_text('struct Law { static constexpr std::string_view type = "law"; };\n')
+    (tmp_path / "configs/li2020/campaign_scene.yaml").write_text("friction: {type: law}\n")
     (tmp_path / "plugins/law/law.cpp").write_text("double force(double x) { return 2 * x; }\n")
     (tmp_path / "README.md").write_text("<!-- li2020-claims -->\n- 2.81 per unit theta\n<!-- /li2020-claims -->\n")
     doc_blocks.replace_block(str(tmp_path / "README.md"), "li2020-claims", "- 2.81 per unit theta\n", ["a1", "b2"], "1-2")
@@ -62,3 +65,74 @@ def test_a_block_whose_runs_left_an_output_unwritten_is_refused(tree, tmp_path):
     os.remove(os.path.join(new, "cases", "base_seed-2", "loading_curve.csv"))
     with pytest.raises(ValueError, match=r"base_seed-2: loading_curve.csv \(not written again\)"):
         carried_blocks.carry("li2020-claims", [readme], old, new)
+
+
+def git(tree, *args):
+    return subprocess.run(["git", "-C", str(tree), "-c", "user.name=t", "-c", "user.email=t@t", *args],
+                          check=True, capture_output=True, text=True).stdout.strip()
+
+
+@pytest.fixture
+def repository(tmp_path):
+    """A repository whose block was stamped by an older fingerprint rule (one that counted every
+    plugin, the other law too), committed; then a plugin the block cannot load was added and the rule
+    became today's."""
+    for folder in ("core/src", "plugins/law", "plugins/other_law", "configs/li2020", "apps/python/frictionlab"):
+        (tmp_path / folder).mkdir(parents=True)
+    (tmp_path / "CMakeLists.txt").write_text("project(x)\n")
+    (tmp_path / "plugins/law/law.hpp").write_text('struct Law { static constexpr std::string_view type = "law"; };\n')
+    (tmp_path / "plugins/law/law.cpp").write_text("double force(double x) { return 2 * x; }\n")
+    (tmp_path / "plugins/other_law/other_law.hpp").write_text('static constexpr std::string_view type = "other";\n')
+    (tmp_path / "configs/li2020/campaign_scene.yaml").write_text("friction: {type: law}\n")
+    rule = open(doc_blocks.__file__).read()
+    older_rule = rule.replace('PHYSICS = ("core/src", "core/include", "apps/campaign")',
+                              'PHYSICS = ("core/src", "core/include", "apps/campaign", "plugins")')
+    assert older_rule != rule
+    (tmp_path / "apps/python/frictionlab/doc_blocks.py").write_text(older_rule)
+    (tmp_path / "README.md").write_text("<!-- li2020-claims fingerprint=x -->\n- 2.81\n<!-- /li2020-claims -->\n")
+    git(tmp_path, "init", "-q")
+    git(tmp_path, "add", ".")
+    git(tmp_path, "commit", "-qm", "made")
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("rule_then", tmp_path / "apps/python/frictionlab/doc_blocks.py")
+    rule_then = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(rule_then)
+    readme = tmp_path / "README.md"
+    made = git(tmp_path, "rev-parse", "--short", "HEAD")
+    stamp = f"fingerprint={rule_then.fingerprint(str(tmp_path), 'li2020-claims')} commit={made} seeds=1-10"
+    readme.write_text(readme.read_text().replace("fingerprint=x", stamp))
+    (tmp_path / "plugins/bulk_3d").mkdir()
+    (tmp_path / "plugins/bulk_3d/bulk_3d.hpp").write_text('static constexpr std::string_view type = "bulk_3d";\n')
+    (tmp_path / "apps/python/frictionlab/doc_blocks.py").write_text(rule)
+    git(tmp_path, "add", ".")
+    git(tmp_path, "commit", "-qm", "a 3D bulk, and the rule counts the plugins a block names")
+    return tmp_path, made
+
+
+def test_a_block_whose_sources_did_not_change_is_carried_without_runs(repository):
+    tree, made = repository
+    readme = str(tree / "README.md")
+    assert doc_blocks.stale(str(tree), [readme]), "the new rule gives another fingerprint"
+    stamp = carried_blocks.carry_same_sources("li2020-claims", [readme])
+    assert doc_blocks.stale(str(tree), [readme]) == []
+    assert f"seeds=1-10 carried_from={made} checked=sources" in stamp
+    assert "- 2.81\n<!-- /li2020-claims -->" in open(readme).read()
+
+
+def test_a_block_whose_sources_changed_is_not_carried_without_runs(repository):
+    tree, made = repository
+    readme = str(tree / "README.md")
+    (tree / "plugins/law/law.cpp").write_text("double force(double x) { return 3 * x; }\n")
+    before = open(readme).read()
+    with pytest.raises(ValueError, match=f"changed since {made}.*\n  plugins/law/law.cpp"):
+        carried_blocks.carry_same_sources("li2020-claims", [readme])
+    assert open(readme).read() == before
+    assert carried_blocks.main(["li2020-claims", readme, "--same-sources"]) == 1
+
+
+def test_a_block_that_was_not_current_where_it_was_stamped_is_not_carried(repository):
+    tree, made = repository
+    readme = tree / "README.md"
+    readme.write_text(readme.read_text().replace("fingerprint=", "fingerprint=0"))
+    with pytest.raises(ValueError, match=f"was not current at {made}"):
+        carried_blocks.carry_same_sources("li2020-claims", [str(readme)])

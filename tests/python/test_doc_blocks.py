@@ -23,12 +23,18 @@ def test_every_generated_block_was_made_from_this_tree(source_dir):
 
 @pytest.fixture
 def tree(tmp_path):
-    """A source tree with one plugin source, one scene and a document with two generated blocks."""
-    for folder in ("core/src", "plugins/law", "configs"):
+    """A source tree with two plugins, scenes that name one of them and a document with two generated
+    blocks."""
+    for folder in ("core/src", "plugins/law", "plugins/other_law", "configs/li2020"):
         (tmp_path / folder).mkdir(parents=True)
     (tmp_path / "CMakeLists.txt").write_text("project(x)\n")
+    for plugin in ("law", "other_law"):
+        (tmp_path / f"plugins/{plugin}/{plugin}.hpp").write_text(
+            f'struct Law {{ static constexpr std::string_view type = "{plugin}"; }};\n')
     (tmp_path / "plugins/law/law.cpp").write_text("// the law\ndouble force(double x) { return 2 * x; }\n")
-    (tmp_path / "configs/headline.yaml").write_text("# a scene\nseed: 1\n")
+    (tmp_path / "plugins/other_law/other_law.cpp").write_text("double force(double x) { return x; }\n")
+    (tmp_path / "configs/headline.yaml").write_text("# a scene\nseed: 1\nfriction: {type: law}\n")
+    (tmp_path / "configs/li2020/campaign_scene.yaml").write_text("friction: {type: law}\n")
     (tmp_path / "README.md").write_text("Speeds: <!-- crossing-speeds -->1 m/s<!-- /crossing-speeds -->.\n\n"
                                         "<!-- li2020-claims -->\nold\n<!-- /li2020-claims -->\n")
     return tmp_path
@@ -63,8 +69,21 @@ def test_a_change_of_code_or_scene_makes_a_block_stale_and_rewording_does_not(tr
     assert "share/scripts/update-readme-figures --headline-only" in problems[0]
     doc_blocks.replace_block(readme, "crossing-speeds", "579 m/s")
     doc_blocks.replace_block(readme, "li2020-claims", "- newer\n")
-    (tree / "configs/headline.yaml").write_text("# a scene\nseed: 2\n")
+    (tree / "configs/headline.yaml").write_text("# a scene\nseed: 2\nfriction: {type: law}\n")
     assert len(doc_blocks.stale(str(tree), [readme])) == 1, "its scene changed"
+
+
+def test_a_block_depends_on_the_plugins_its_scenes_name_and_on_no_other(tree):
+    readme = str(tree / "README.md")
+    doc_blocks.replace_block(readme, "crossing-speeds", "578 ± 32 m/s")
+    assert doc_blocks.plugin_folders(str(tree), ["configs/headline.yaml"]) == ["plugins/law"]
+    (tree / "plugins/other_law/other_law.cpp").write_text("double force(double x) { return 4 * x; }\n")
+    (tree / "plugins/new_bulk").mkdir()
+    (tree / "plugins/new_bulk/new_bulk.hpp").write_text('static constexpr std::string_view type = "new_bulk";\n')
+    assert all("crossing-speeds" not in p for p in doc_blocks.stale(str(tree), [readme])), \
+        "another law changed and a new plugin came: neither can run in the headline"
+    (tree / "configs/headline.yaml").write_text("# a scene\nseed: 1\nfriction: {type: other_law}\n")
+    assert any("crossing-speeds" in p for p in doc_blocks.stale(str(tree), [readme])), "now it loads the other law"
 
 
 def test_an_unstamped_or_unknown_block_is_named(tree):

@@ -1,9 +1,21 @@
 """Carrying a generated block over a change that moves no output (python3 -m frictionlab.carried_blocks).
 
-A block's fingerprint covers every physics source (frictionlab.doc_blocks), so a refactor that
-changes no number (the dimension-generic core, a renamed member) stales every block, and
-regenerating some takes an hour of runs. A block may instead be carried to the new tree when runs
-made with it wrote what the same runs of the block's own sweep wrote, file for file:
+A block's fingerprint covers the physics sources it depends on (frictionlab.doc_blocks), so a
+refactor that changes no number (the dimension-generic core, a renamed member) stales the blocks,
+and regenerating some takes an hour of runs. A block may instead be carried to the new tree in one
+of two ways.
+
+When nothing it depends on changed since the commit its stamp records (the change was elsewhere,
+or in what the fingerprint rule counts), no run is needed:
+
+    python3 -m frictionlab.carried_blocks NAME --same-sources DOC [DOC ...]
+
+It checks that the block was current at that commit by that commit's own rule, and that this
+tree's rule gives that commit's tree and this one the same fingerprint; the stamp then says
+checked=sources.
+
+Otherwise, when runs made with the new tree wrote what the same runs of the block's own sweep
+wrote, file for file:
 
     python3 -m frictionlab.carried_blocks NAME --old OLD_SWEEP --new NEW_SWEEP DOC [DOC ...]
 
@@ -20,7 +32,9 @@ import argparse
 import filecmp
 import os
 import re
+import subprocess
 import sys
+import tempfile
 from typing import Iterable, List
 
 import yaml
@@ -119,6 +133,16 @@ def carry(name: str, documents: Iterable[str], old_sweep: str, new_sweep: str) -
     if problems:
         raise ValueError("the outputs differ, the block must be regenerated:\n  " + "\n  ".join(problems))
     runs = len(os.listdir(os.path.join(old_sweep, "cases")))
+    return _restamp(name, documents, f"{len(cases)}/{runs}")
+
+
+def _stamp_fields(stamp: str) -> dict:
+    return dict(field.split("=", 1) for field in stamp.split())
+
+
+def _restamp(name: str, documents: Iterable[str], checked: str) -> str:
+    """Gives block `name` in `documents` this tree's fingerprint and commit, keeping the scenes and
+    seeds it was made from and saying what carried it; returns the first new stamp."""
     stamps = []
     for document in documents:
         with open(document) as f:
@@ -126,12 +150,12 @@ def carry(name: str, documents: Iterable[str], old_sweep: str, new_sweep: str) -
         opening = re.search(doc_blocks.OPENING.format(name=re.escape(name)), text)
         if not opening:
             continue
-        old = dict(field.split("=", 1) for field in opening["stamp"].split())
+        old = _stamp_fields(opening["stamp"])
         kept = " ".join(f"{k}={old[k]}" for k in ("scene", "scenes", "seeds") if k in old)
         made_at = old.get("carried_from", old.get("commit", "unknown"))
         root = doc_blocks.repository_root(document)
         stamp = (f"fingerprint={doc_blocks.fingerprint(root, name)} commit={doc_blocks.commit(root, name)} "
-                 f"{kept} carried_from={made_at} checked={len(cases)}/{runs}").replace("  ", " ")
+                 f"{kept} carried_from={made_at} checked={checked}").replace("  ", " ")
         with open(document, "w") as f:
             f.write(text[:opening.start()] + f"<!-- {name} {stamp} -->" + text[opening.end():])
         stamps.append(stamp)
@@ -140,15 +164,64 @@ def carry(name: str, documents: Iterable[str], old_sweep: str, new_sweep: str) -
     return stamps[0]
 
 
+def _tree_at(root: str, commit: str, into: str) -> None:
+    archive = subprocess.run(["git", "-C", root, "archive", commit], capture_output=True)
+    if archive.returncode != 0:
+        raise ValueError(f"commit {commit} is not in this repository: {archive.stderr.decode().strip()}")
+    subprocess.run(["tar", "-x", "-C", into], input=archive.stdout, check=True)
+
+
+def carry_same_sources(name: str, documents: Iterable[str]) -> str:
+    """Restamps block `name` when nothing it depends on changed since the commit its stamp records:
+    that commit's own fingerprint rule, or this one, gives the stamp's fingerprint on that commit's
+    tree (the block was current there), and this tree's rule gives the same fingerprint on that tree and on this one
+    (its sources, comments and spacing aside, are the same). No run is needed: the runs would run the
+    same code on the same scenes. Raises ValueError naming the files that differ, changing nothing."""
+    import importlib.util
+    documents = list(documents)
+    stamps = [_stamp_fields(m["stamp"]) for d in documents for m in
+              [re.search(doc_blocks.OPENING.format(name=re.escape(name)), open(d).read())] if m]
+    if not stamps:
+        raise ValueError(f"no <!-- {name} --> block in {', '.join(documents)}")
+    root = doc_blocks.repository_root(documents[0])
+    commit, recorded = stamps[0].get("commit", ""), stamps[0].get("fingerprint", "")
+    if not commit or commit == "unknown" or commit.endswith("+changes"):
+        raise ValueError(f"<!-- {name} --> was stamped at {commit or 'no commit'}: no committed tree to compare with")
+    with tempfile.TemporaryDirectory() as then:
+        _tree_at(root, commit, then)
+        spec = importlib.util.spec_from_file_location("doc_blocks_then",
+                                                      os.path.join(then, "apps/python/frictionlab/doc_blocks.py"))
+        rule_then = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(rule_then)
+        # Current there by the rule of that commit, or by this one (a stamp made while the rule changed).
+        rules = ([rule_then.fingerprint] if name in rule_then.BLOCKS else []) + [doc_blocks.fingerprint]
+        if all(rule(then, name) != recorded for rule in rules):
+            raise ValueError(f"<!-- {name} --> was not current at {commit} (fingerprint {recorded}): regenerate it")
+        if doc_blocks.fingerprint(then, name) != doc_blocks.fingerprint(root, name):
+            files_then, files_now = doc_blocks.dependencies(then, name), doc_blocks.dependencies(root, name)
+            changed = sorted(set(files_then) ^ set(files_now)) + [
+                rel for rel in sorted(set(files_then) & set(files_now))
+                if doc_blocks.without_comments(rel, doc_blocks._read(then, rel))
+                != doc_blocks.without_comments(rel, doc_blocks._read(root, rel))]
+            raise ValueError(f"what <!-- {name} --> depends on changed since {commit}, the block must be carried "
+                             f"with runs or regenerated:\n  " + "\n  ".join(changed))
+    return _restamp(name, documents, "sources")
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python3 -m frictionlab.carried_blocks", description=__doc__.split("\n")[0])
     parser.add_argument("name", help="the block (frictionlab.doc_blocks.BLOCKS)")
     parser.add_argument("documents", nargs="+", help="the files that hold it")
-    parser.add_argument("--old", required=True, help="the sweep the block was made from")
-    parser.add_argument("--new", required=True, help="the same sweep's cases run again with this tree")
+    parser.add_argument("--old", help="the sweep the block was made from")
+    parser.add_argument("--new", help="the same sweep's cases run again with this tree")
+    parser.add_argument("--same-sources", action="store_true",
+                        help="carry without runs when nothing the block depends on changed since its stamp's commit")
     args = parser.parse_args(argv)
+    if args.same_sources == bool(args.old or args.new) or (not args.same_sources and not (args.old and args.new)):
+        parser.error("give either --old and --new, or --same-sources")
     try:
-        print(carry(args.name, args.documents, args.old, args.new))
+        print(carry_same_sources(args.name, args.documents) if args.same_sources else
+              carry(args.name, args.documents, args.old, args.new))
     except ValueError as e:
         print(f"error: {e}", file=sys.stderr)
         return 1

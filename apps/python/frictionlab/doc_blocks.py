@@ -5,7 +5,8 @@ event-matrix-table).
 
 A published number must not go stale in silence: each block's opening marker records what made it,
 the commit, the runs' scene hashes and seeds, and a fingerprint of everything its numbers depend on
-(BLOCKS: the physics sources, its scenes, its analysis code). tests/python/test_doc_blocks.py fails
+(BLOCKS: the core's physics sources, the plugins whose types its inputs name, its scenes, its
+analysis code). tests/python/test_doc_blocks.py fails
 for a block whose fingerprint no longer matches the tree, naming the command that regenerates it.
 The fingerprint ignores comments and white space, so that rewording or reformatting a source does
 not call for new runs, and any other change does; a change shown to move no output may carry a block
@@ -16,9 +17,14 @@ import re
 import subprocess
 from typing import Dict, Iterable, List, NamedTuple, Optional, Sequence
 
-# What every block's numbers depend on: the code that simulates and tabulates.
-PHYSICS = ("core/src", "core/include", "plugins", "apps/campaign")
+# What every block's numbers depend on: the code that simulates and tabulates. Of the plugins, a
+# block depends on those whose types its inputs name (plugin_folders): a plugin no scene of it can
+# load does not move its numbers.
+PHYSICS = ("core/src", "core/include", "apps/campaign")
+PLUGINS = "plugins"
 SOURCE_SUFFIXES = (".cpp", ".hpp", ".h", ".py", ".yaml")
+# How a plugin's type declares the name a scene gives it.
+TYPE_NAME = re.compile(r'static\s+constexpr\s+std::string_view\s+type\s*=\s*"([a-z0-9_]+)"')
 
 
 class Block(NamedTuple):
@@ -42,7 +48,7 @@ BLOCKS: Dict[str, Block] = {
                         "python3 -m frictionlab.li2020_claims FIG7 FIG8 --write share/docs/campaigns.md"),
     "fig7-means": Block(LI2020_CAMPAIGNS + ("apps/python/frictionlab/li2020_claims.py",),
                         "python3 -m frictionlab.li2020_claims FIG7 FIG8 --write share/docs/campaigns.md"),
-    "li2020-reproduction": Block(("configs", "apps/python/frictionlab/reproduce",
+    "li2020-reproduction": Block(("configs/headline.yaml", "configs/li2020", "apps/python/frictionlab/reproduce",
                                   "apps/python/frictionlab/li2020_claims.py", "apps/python/frictionlab/ensembles.py"),
                                  "frictionlab reproduce li2020 -o out/li2020 -j 2 --write-docs"),
     "tromborg2014-reproduction": Block(("configs/tromborg2014", "apps/python/frictionlab/reproduce",
@@ -94,12 +100,39 @@ def without_comments(path: str, text: str) -> str:
     return re.sub(r"\s+", "", text)
 
 
+def _read(root: str, rel: str) -> str:
+    with open(os.path.join(root, rel), encoding="utf-8", errors="replace") as f:
+        return f.read()
+
+
+def plugin_folders(root: str, inputs: Iterable[str]) -> List[str]:
+    """The plugin folders (plugins/NAME) declaring a type that the files of `inputs` name as a word:
+    those a block's scenes, sweeps and tests can load. Naming more than is loaded costs only an
+    early regeneration; a plugin that is not named cannot run in the block's runs."""
+    words = set()
+    for rel in files_below(root, inputs):
+        words.update(re.findall(r"[a-z0-9_]+", _read(root, rel)))
+    folders = []
+    plugins = os.path.join(root, PLUGINS)
+    for folder in sorted(os.listdir(plugins)) if os.path.isdir(plugins) else []:
+        rel = os.path.join(PLUGINS, folder)
+        types = {t for f in files_below(root, (rel,)) if f.endswith((".hpp", ".h")) for t in TYPE_NAME.findall(_read(root, f))}
+        if types & words:
+            folders.append(rel)
+    return folders
+
+
+def dependencies(root: str, name: str) -> List[str]:
+    """Every file the block's numbers depend on: the physics, the plugins its inputs name, its inputs."""
+    inputs = tuple(BLOCKS[name].inputs)
+    return files_below(root, tuple(PHYSICS) + tuple(plugin_folders(root, inputs)) + inputs)
+
+
 def fingerprint(root: str, name: str) -> str:
-    """12 hex digits of the SHA-256 of the block's inputs and the physics, comments and spacing left out."""
+    """12 hex digits of the SHA-256 of the block's dependencies, comments and spacing left out."""
     digest = hashlib.sha256()
-    for rel in files_below(root, tuple(PHYSICS) + tuple(BLOCKS[name].inputs)):
-        with open(os.path.join(root, rel), encoding="utf-8", errors="replace") as f:
-            digest.update(rel.encode() + b"\0" + without_comments(rel, f.read()).encode() + b"\0")
+    for rel in dependencies(root, name):
+        digest.update(rel.encode() + b"\0" + without_comments(rel, _read(root, rel)).encode() + b"\0")
     return digest.hexdigest()[:12]
 
 
@@ -109,8 +142,8 @@ def commit(root: str, name: str) -> str:
     def git(*args):
         return subprocess.run(["git", "-C", root, *args], capture_output=True, text=True).stdout.strip()
     head = git("rev-parse", "--short", "HEAD") or "unknown"
-    inputs = [p for p in tuple(PHYSICS) + tuple(BLOCKS[name].inputs) if os.path.exists(os.path.join(root, p))]
-    return head + ("+changes" if head != "unknown" and git("status", "--porcelain", "--", *inputs) else "")
+    inputs = dependencies(root, name)
+    return head + ("+changes" if head != "unknown" and inputs and git("status", "--porcelain", "--", *inputs) else "")
 
 
 def seed_range(seeds: Iterable) -> str:
