@@ -12,22 +12,30 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 
 Vec3 bond_vector(const StageView& s, const CubicBond& b) {
-    return {s.position(b.j, 0) - s.position(b.i, 0), s.position(b.j, 1) - s.position(b.i, 1),
-            s.position(b.j, 2) - s.position(b.i, 2)};
+    return Vec3{s.position(b.j, 0) - s.position(b.i, 0), s.position(b.j, 1) - s.position(b.i, 1),
+                s.position(b.j, 2) - s.position(b.i, 2)} +
+           b.image;
 }
 
 }  // namespace
 
-CubicLatticeSprings::CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape)
-    : bonds_(std::move(bonds)), shape_(std::move(shape)) {}
+CubicLatticeSprings::CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape, Law law)
+    : bonds_(std::move(bonds)), shape_(std::move(shape)), law_(law) {}
+
+Vec3 CubicLatticeSprings::force(const CubicBond& b, const Vec3& d) const {
+    if (law_ == Law::small_strain) {
+        const Vec3 e = b.rest / b.rest_length;
+        return b.stiffness * (d - b.rest).dot(e) * e;
+    }
+    return b.stiffness * (1 - b.rest_length / d.norm()) * d;
+}
 
 void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) {
     for (const CubicBond& b : bonds_) {
-        const Vec3 d = bond_vector(s, b);
-        const double t = b.stiffness * (1 - b.rest_length / d.norm());
+        const Vec3 force_on_i = force(b, bond_vector(s, b));
         for (int a = 0; a < 3; ++a) {
-            f.force(b.i, a) += t * d(a);
-            f.force(b.j, a) -= t * d(a);
+            f.force(b.i, a) += force_on_i(a);
+            f.force(b.j, a) -= force_on_i(a);
         }
     }
 }
@@ -35,7 +43,9 @@ void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) {
 double CubicLatticeSprings::potential_energy(const StageView& s) const {
     double energy = 0;
     for (const CubicBond& b : bonds_) {
-        const double stretch = bond_vector(s, b).norm() - b.rest_length;
+        const Vec3 d = bond_vector(s, b);
+        const double stretch =
+            law_ == Law::small_strain ? (d - b.rest).dot(b.rest) / b.rest_length : d.norm() - b.rest_length;
         energy += 0.5 * b.stiffness * stretch * stretch;
     }
     return energy;
@@ -45,8 +55,10 @@ void CubicLatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::T
     for (const CubicBond& b : bonds_) {
         const Vec3 d = bond_vector(s, b);
         const double r = d.norm(), k = b.stiffness, l = b.rest_length;
-        const Eigen::Matrix3d g =
-            k * (1 - l / r) * Eigen::Matrix3d::Identity() + k * l / (r * r * r) * d * d.transpose();
+        const Eigen::Matrix3d g = law_ == Law::small_strain
+                                      ? Eigen::Matrix3d(k / (l * l) * b.rest * b.rest.transpose())
+                                      : Eigen::Matrix3d(k * (1 - l / r) * Eigen::Matrix3d::Identity() +
+                                                        k * l / (r * r * r) * d * d.transpose());
         for (int u = 0; u < 3; ++u)
             for (int w = 0; w < 3; ++w) {
                 const Index iu = s.position_index(b.i, u), iw = s.position_index(b.i, w);

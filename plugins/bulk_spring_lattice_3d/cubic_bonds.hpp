@@ -6,39 +6,55 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "frictionlab/model/effect.hpp"
 
 namespace frictionlab {
 
-/// One central spring from node i to node j: rest length l, stiffness k.
+/// One central spring from node i to node j, stiffness k, at rest the vector `rest` (length l).
+/// Across a periodic width j may be the image of a node on the other side: `image` is what takes
+/// x_j - x_i to the bond's vector (rest minus the nodes' reference difference; zero inside).
 struct CubicBond {
     Index i, j;
     double rest_length;
     double stiffness;
+    Eigen::Vector3d rest = Eigen::Vector3d::Zero();
+    Eigen::Vector3d image = Eigen::Vector3d::Zero();
 };
 
-/// Geometric central springs (Li2020 Eq. 1 in 3D): the force on node i from node j is
-///     F_ij = k (1 - l/r) d,   d = x_j - x_i,  r = |d|,
-/// exact for large rotations; energy k (r - l)^2 / 2 per bond.
+/// Central springs (Li2020 Eq. 1 in 3D), as in 2D either
+///   geometric:     F_ij = k (1 - l/r) d,      d = x_j - x_i (+ image),  r = |d|,
+///                  exact for large rotations, energy k (r - l)^2 / 2 per bond; or
+///   small strain:  F_ij = k ((d - rest) . e) e,  e = rest / l,
+///                  the same law linearised about the rest state (only for small rotations).
 class CubicLatticeSprings final : public Effect {
 public:
-    CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape);
+    enum class Law { geometric, small_strain };
+    CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape, Law law);
 
     bool checkpointable() const override { return true; }  // no state beyond the state vector
-    std::string describe() const override { return "cubic lattice springs " + shape_ + " (geometric)"; }
+    std::string describe() const override {
+        return "cubic lattice springs " + shape_ + (law_ == Law::geometric ? " (geometric)" : " (small strain)");
+    }
     std::string key() const override { return "lattice_springs"; }
     void add_forces(const StageView& s, ForceView& f) override;
     double potential_energy(const StageView& s) const override;
     /// Elastic at every state, no discrete state: the stiffness is exact (Newton on the geometric nonlinearity).
     bool quasi_static_regime(const StageView&) const override { return true; }
-    /// K = -dF/dq: per bond G = k (1 - l/r) I + (k l / r^3) d d^T on both nodes' diagonal blocks, -G off them.
+    /// K = -dF/dq: per bond G = k (1 - l/r) I + (k l / r^3) d d^T (small strain: k e e^T) on both
+    /// nodes' diagonal blocks, -G off them.
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
     const std::vector<CubicBond>& bonds() const { return bonds_; }
 
 private:
+    /// The force on node i from the bond at d = x_j - x_i + image.
+    Eigen::Vector3d force(const CubicBond& b, const Eigen::Vector3d& d) const;
+
     std::vector<CubicBond> bonds_;
     std::string shape_;  // "nx x ny x nz", for describe()
+    Law law_;
 };
 
 /// A dashpot eta on every bond, along the full relative velocity: eta (v_j - v_i) on node i (the

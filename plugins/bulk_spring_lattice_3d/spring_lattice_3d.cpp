@@ -22,9 +22,11 @@ ParamSpec<SpringLattice3d::Params> SpringLattice3d::spec() {
                       "shared equally by all nodes at reference_spacing (at another spacing the nodes keep that "
                       "lattice's density)");
     s.add("nx", &Params::nx, "Number of nodes along x (the length).").unit("1").at_least(2);
-    s.add("ny", &Params::ny, "Number of nodes along y (the width); a one-layer lattice is not offered yet.")
+    s.add("ny", &Params::ny,
+          "Number of nodes along y (the width): at least 2 between free side faces, at least 1 across a periodic "
+          "width (one layer: the plane-strain slice of an unbounded slider).")
         .unit("1")
-        .at_least(2);
+        .at_least(1);
     s.add("nz", &Params::nz, "Number of nodes along z (the height); L/(nx-1) = B/(ny-1) = H/(nz-1) must hold.")
         .unit("1")
         .at_least(2);
@@ -39,6 +41,20 @@ ParamSpec<SpringLattice3d::Params> SpringLattice3d::spec() {
           "the per-block values at every spacing.")
         .unit("m")
         .at_least(0);
+    s.choice("across", &Params::across, {{"bounded", Across::bounded}, {"periodic", Across::periodic}},
+             "Across the width: bounded (two free side faces, spacing B/(ny-1)) or periodic (the last layer bonded "
+             "to the first, spacing B/ny: one period of a slider unbounded across, in plane strain; with the "
+             "small-strain springs one layer moves as spring_lattice_2d of width a and E' = 16E/15).");
+    s.choice(
+        "springs", &Params::springs,
+        {{"geometric", CubicLatticeSprings::Law::geometric}, {"small_strain", CubicLatticeSprings::Law::small_strain}},
+        "Spring law: geometric (exact for large rotations) or small_strain (linearised about the rest "
+        "state, only for small rotations), as spring_lattice_2d's.");
+    s.rule("ny", [](const Params& p) -> std::string {
+        if (p.across == Across::bounded && p.ny < 2)
+            return "a lattice bounded across its width needs ny >= 2 (or across: periodic for one layer)";
+        return {};
+    });
     s.rule("nz", spacing_mismatch);
     s.rule("nx", too_large);
     s.dimensions({3}, "a simple-cubic lattice in x, y and z");
@@ -54,13 +70,14 @@ std::string SpringLattice3d::too_large(const Params& p) {
 }
 
 std::string SpringLattice3d::spacing_mismatch(const Params& p) {
-    if (p.nx < 2 || p.ny < 2 || p.nz < 2) return {};  // the per-key bounds report this
-    const double along_x = p.length / (p.nx - 1), along_y = p.width / (p.ny - 1), along_z = p.height / (p.nz - 1);
+    const int gaps_y = p.across == Across::periodic ? p.ny : p.ny - 1;
+    if (p.nx < 2 || gaps_y < 1 || p.nz < 2) return {};  // the per-key bounds report this
+    const double along_x = p.length / (p.nx - 1), along_y = p.width / gaps_y, along_z = p.height / (p.nz - 1);
     const double largest = std::max({along_x, along_y, along_z}), smallest = std::min({along_x, along_y, along_z});
     if (largest - smallest <= 1e-9 * largest) return {};
     return fmt::format(
-        "the lattice cells must be cubes: length/(nx-1) = {:.6g} m, width/(ny-1) = {:.6g} m, height/(nz-1) = {:.6g} m",
-        along_x, along_y, along_z);
+        "the lattice cells must be cubes: length/(nx-1) = {:.6g} m, width/{} = {:.6g} m, height/(nz-1) = {:.6g} m",
+        along_x, p.across == Across::periodic ? "ny" : "(ny-1)", along_y, along_z);
 }
 
 SpringLattice3d::NodeScales SpringLattice3d::node_scales(const Params& p) {
@@ -70,16 +87,19 @@ SpringLattice3d::NodeScales SpringLattice3d::node_scales(const Params& p) {
     // At the reference spacing (to the cubic-cell check's tolerance) exactly the per-block values.
     if (reference <= 0 || std::abs(spacing - reference) <= 1e-9 * reference)
         return {per_block, std::sqrt(stiffness * per_block)};
-    const double reference_nodes = (p.length / reference + 1) * (p.width / reference + 1) * (p.height / reference + 1);
+    const double across = p.width / reference + (p.across == Across::periodic ? 0 : 1);
+    const double reference_nodes = (p.length / reference + 1) * across * (p.height / reference + 1);
     const double reference_mass = p.mass / reference_nodes, ratio = spacing / reference;
     const double reference_stiffness = 0.4 * p.youngs_modulus * reference;
     return {reference_mass * ratio * ratio * ratio, std::sqrt(reference_stiffness * reference_mass) * ratio};
 }
 
-SpringLattice3d::SpringLattice3d(const Params& p, const Context& ctx) : nx_(p.nx), ny_(p.ny), nz_(p.nz) {
+SpringLattice3d::SpringLattice3d(const Params& p, const Context& ctx)
+    : nx_(p.nx), ny_(p.ny), nz_(p.nz), across_(p.across), springs_(p.springs) {
     spec().checked(p);
     const double a = p.length / (p.nx - 1);
     const Index n = nx_ * ny_ * nz_;
+    // Across a periodic width the layers sit at iy a, iy < ny; the period B = ny a closes the ring.
     body_.reference_position.resize(n, 3);  // x, y, z
     for (Index iz = 0; iz < nz_; ++iz)
         for (Index iy = 0; iy < ny_; ++iy)
@@ -95,15 +115,16 @@ SpringLattice3d::SpringLattice3d(const Params& p, const Context& ctx) : nx_(p.nx
     body_.height = p.height;
     body_.width = p.width;
     body_.spacing = a;
-    body_.bond_stiffness = 0.4 * p.youngs_modulus * a;  // k = 2Ea/5
+    k_ = 0.4 * p.youngs_modulus * a;  // k = 2Ea/5
+    body_.bond_stiffness = 2 * k_;    // the 2D lattice's K that a layer is in plane strain (header)
     body_.reference_spacing = p.reference_spacing;
     body_.contact_frame = ContactFrame::horizontal_base(3);
-    body_.wave_speed = a * std::sqrt(body_.bond_stiffness / scales.mass);  // c_S = sqrt(C44/rho) = a sqrt(k/m)
+    body_.wave_speed = a * std::sqrt(k_ / scales.mass);  // c_S = sqrt(C44/rho) = a sqrt(k/m)
     eta_ = std::sqrt(p.damping_factor) * scales.damping_scale;
     build_node_sets();
     build_bonds();
-    ctx.log.debug("{}: {}x{}x{} lattice, a = {:.4g} m, m = {:.4g} kg, k = {:.4g} N/m, eta = {:.4g} N s/m", ctx.name,
-                  nx_, ny_, nz_, a, node_mass(), body_.bond_stiffness, eta_);
+    ctx.log.debug("{}: {}x{}x{} lattice{}, a = {:.4g} m, m = {:.4g} kg, k = {:.4g} N/m, eta = {:.4g} N s/m", ctx.name,
+                  nx_, ny_, nz_, across_ == Across::periodic ? " (periodic across)" : "", a, node_mass(), k_, eta_);
 }
 
 void SpringLattice3d::build_node_sets() {
@@ -137,23 +158,34 @@ void SpringLattice3d::build_bonds() {
         {0, 1, 1},
         {0, 1, -1}  // face diagonals, sqrt(2) a
     }};
-    const double a = body_.spacing, k = body_.bond_stiffness;
+    // Across a periodic width a bond leaving one side ends on the image of a node of the other; one
+    // layer's bond across the width to itself is force-free and left out.
+    const double a = body_.spacing;
+    const bool periodic = across_ == Across::periodic;
     bonds_.reserve(static_cast<std::size_t>(9 * body_.size()));
     for (Index iz = 0; iz < nz_; ++iz)
         for (Index iy = 0; iy < ny_; ++iy)
             for (Index ix = 0; ix < nx_; ++ix)
                 for (const auto& [dx, dy, dz] : half_neighbours) {
-                    const Index jx = ix + dx, jy = iy + dy, jz = iz + dz;
+                    const Index jx = ix + dx, jz = iz + dz;
+                    Index jy = iy + dy;
+                    if (periodic) jy = (jy + ny_) % ny_;
                     if (jx < 0 || jx >= nx_ || jy < 0 || jy >= ny_ || jz < 0 || jz >= nz_) continue;
-                    const int axes = std::abs(dx) + std::abs(dy) + std::abs(dz);
-                    bonds_.push_back({node(ix, iy, iz), node(jx, jy, jz), axes == 1 ? a : std::sqrt(2.0) * a, k});
-                    body_.bonds.push_back({bonds_.back().i, bonds_.back().j});
+                    const Index i = node(ix, iy, iz), j = node(jx, jy, jz);
+                    if (i == j) continue;
+                    const Eigen::Vector3d rest = a * Eigen::Vector3d(dx, dy, dz);
+                    const Eigen::Vector3d image =
+                        rest - (body_.reference_position.row(j) - body_.reference_position.row(i)).matrix().transpose();
+                    bonds_.push_back({i, j, rest.norm(), k_, rest, image});
+                    if (image.isZero()) body_.bonds.push_back({i, j});  // for pictures: not across the period
                 }
 }
 
 std::vector<std::unique_ptr<Effect>> SpringLattice3d::effects(const Context&) {
     std::vector<std::unique_ptr<Effect>> out;
-    out.push_back(std::make_unique<CubicLatticeSprings>(bonds_, fmt::format("{}x{}x{}", nx_, ny_, nz_)));
+    out.push_back(std::make_unique<CubicLatticeSprings>(
+        bonds_, fmt::format("{}x{}x{}{}", nx_, ny_, nz_, across_ == Across::periodic ? " periodic across" : ""),
+        springs_));
     if (eta_ > 0) out.push_back(std::make_unique<CubicBondDamping>(bonds_, eta_));
     return out;
 }

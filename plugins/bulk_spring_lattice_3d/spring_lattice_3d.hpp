@@ -44,20 +44,38 @@ namespace frictionlab {
 /// B H = a^2 (ny - 1)(nz - 1) (23.4 a^2 against 16 a^2 at 3 x 9). A thin lattice is far from its
 /// continuum: the default is a coarse first resolution, not a converged slider.
 ///
-/// Not yet: a one-layer lattice (ny = 1), cells for pictures (Body::cells is planar), the small-strain
-/// law and the bond-projected dashpots of the 2D lattice, threads.
+/// The 2D lattice as a limit. Across a periodic width (across: periodic, B = ny a, one period of an
+/// unbounded slider) a state that does not vary across the width is plane strain, and each layer of
+/// nodes is then the 2D lattice of width a with E' = E/(1 - nu^2) = 16E/15: the straight bond and
+/// the two face diagonals that leave it across the width act as one straight bond 2k = 3 a E'/4 = K,
+/// the in-plane diagonals as K/2. With the small-strain law this holds exactly (the diagonals'
+/// forces across the width cancel pair by pair), so one layer (ny = 1) moves as the 2D lattice to
+/// round-off; the geometric law differs at second order in the strain. Body::bond_stiffness, which
+/// loaders scale with (the base contact's K_b = K/2), is this K = 2k = 4Ea/5, so they reduce to the
+/// 2D ones too. The dashpots do not: per layer the full-vector dashpots add up to 3 eta along each
+/// straight bond (its own and the two diagonals across the width) against eta on the diagonals,
+/// where the 2D lattice has eta on both.
+///
+/// Not yet: cells for pictures (Body::cells is planar), the bond-projected dashpots of the 2D
+/// lattice, threads.
 class SpringLattice3d final : public BulkModel {
 public:
+    /// Across the width: two free side faces, or periodic (node iy = ny - 1 bonded to iy = 0 as to
+    /// a neighbour, the width B = ny a one period of an unbounded slider: plane strain).
+    enum class Across { bounded, periodic };
     struct Params : SliderParams {
         int nx = 41;
         int ny = 3;
         int nz = 9;
         double damping_factor = 0.5;        // c in eta = sqrt(c k m)
         double reference_spacing = 2.5e-3;  // a_ref, m; 0: per-block m and eta at every spacing
+        Across across = Across::bounded;
+        CubicLatticeSprings::Law springs = CubicLatticeSprings::Law::geometric;
     };
     static constexpr std::string_view type = "spring_lattice_3d";
     static ParamSpec<Params> spec();
-    /// Why the lattice cells are not cubes, or "" if they are (L/(nx-1) = B/(ny-1) = H/(nz-1) to 1e-9).
+    /// Why the lattice cells are not cubes, or "" if they are (L/(nx-1) = B/(ny-1) = H/(nz-1) to 1e-9;
+    /// B/ny across a periodic width).
     static std::string spacing_mismatch(const Params& p);
     /// Why the lattice is too large to build (with the memory it would take), or "".
     static std::string too_large(const Params& p);
@@ -79,8 +97,8 @@ public:
     Index nz() const { return nz_; }
     Index node(Index ix, Index iy, Index iz) const { return ix + nx_ * (iy + ny_ * iz); }
     double node_mass() const { return body_.mass(0); }
-    /// k, N/m.
-    double spring_stiffness() const { return body_.bond_stiffness; }
+    /// k, N/m: every spring's stiffness. Body::bond_stiffness, what loaders scale with, is 2k (see above).
+    double spring_stiffness() const { return k_; }
     /// eta, N s/m; 0 when damping is off.
     double damping_coefficient() const { return eta_; }
     const std::vector<CubicBond>& bonds() const { return bonds_; }
@@ -92,7 +110,9 @@ private:
     Index nx_, ny_, nz_;
     Body body_;
     std::vector<CubicBond> bonds_;
-    double eta_ = 0;
+    double k_ = 0, eta_ = 0;
+    Across across_;
+    CubicLatticeSprings::Law springs_;
 };
 
 }  // namespace frictionlab

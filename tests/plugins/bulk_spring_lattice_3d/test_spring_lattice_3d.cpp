@@ -19,10 +19,12 @@ TEST(SpringLattice3d, DefaultsAreTheSliderOf2dAtItsSpacingWithCubicCells) {
     ASSERT_EQ(b.size(), 41 * 3 * 9);
     EXPECT_EQ(b.dimension(), 3);
     EXPECT_DOUBLE_EQ(b.spacing, 0.0025);
-    EXPECT_DOUBLE_EQ(b.bond_stiffness, 0.4 * 3e9 * 0.0025);  // k = 2Ea/5
+    const double k = f.lattice.spring_stiffness();
+    EXPECT_DOUBLE_EQ(k, 0.4 * 3e9 * 0.0025);  // k = 2Ea/5
+    EXPECT_EQ(b.bond_stiffness, 2 * k);       // the 2D lattice's K of a layer in plane strain, 3 a E'/4
     EXPECT_TRUE((b.mass == 0.0118 / (41 * 3 * 9)).all());
-    EXPECT_NEAR(f.lattice.damping_coefficient(), std::sqrt(0.5 * b.bond_stiffness * b.mass(0)), 1e-12);
-    EXPECT_NEAR(b.wave_speed, b.spacing * std::sqrt(b.bond_stiffness / b.mass(0)), 1e-9);  // c_S
+    EXPECT_NEAR(f.lattice.damping_coefficient(), std::sqrt(0.5 * k * b.mass(0)), 1e-12);
+    EXPECT_NEAR(b.wave_speed, b.spacing * std::sqrt(k / b.mass(0)), 1e-9);  // c_S
     EXPECT_EQ(b.contact_frame.normal, 2);
     EXPECT_EQ(b.contact_frame.tangential, (std::vector<int>{0, 1}));
     for (Index iz = 0; iz < 9; ++iz)
@@ -69,7 +71,7 @@ TEST(SpringLattice3d, BondsJoinEveryNearestAndFaceDiagonalNeighbourOnce) {
         EXPECT_TRUE(seen.insert({std::min(bond.i, bond.j), std::max(bond.i, bond.j)}).second);
         const double d = (b.reference_position.row(bond.j) - b.reference_position.row(bond.i)).matrix().norm();
         EXPECT_NEAR(d, bond.rest_length, 1e-15);
-        EXPECT_EQ(bond.stiffness, b.bond_stiffness);
+        EXPECT_EQ(bond.stiffness, f.lattice.spring_stiffness());
         straight += std::abs(bond.rest_length - b.spacing) < 1e-12;
     }
     EXPECT_EQ(straight, nearest);
@@ -97,20 +99,63 @@ TEST(SpringLattice3d, NonCubicCellsAreRefusedWithTheThreeSpacings) {
     EXPECT_NE(SpringLattice3d::spacing_mismatch(p).find("0.00222222"), std::string::npos);
     EXPECT_EQ(SpringLattice3d::spacing_mismatch({}), "");
     const auto rules = SpringLattice3d::spec().erased_rules();
-    ASSERT_EQ(rules.size(), 2u);
-    EXPECT_EQ(rules[0].key, "nz");
-    EXPECT_FALSE(rules[0].check({{"ny", std::int64_t{4}}}).empty());
-    EXPECT_TRUE(rules[0].check({}).empty());
-    EXPECT_EQ(rules[1].key, "nx");
+    ASSERT_EQ(rules.size(), 3u);
+    EXPECT_EQ(rules[1].key, "nz");
+    EXPECT_FALSE(rules[1].check({{"ny", std::int64_t{4}}}).empty());
+    EXPECT_TRUE(rules[1].check({}).empty());
+    EXPECT_EQ(rules[2].key, "nx");
     EXPECT_FALSE(
-        rules[1].check({{"nx", std::int64_t{200}}, {"ny", std::int64_t{200}}, {"nz", std::int64_t{200}}}).empty());
+        rules[2].check({{"nx", std::int64_t{200}}, {"ny", std::int64_t{200}}, {"nz", std::int64_t{200}}}).empty());
 }
 
-TEST(SpringLattice3d, OneLayerIsRefused) {
+TEST(SpringLattice3d, OneLayerBetweenSideFacesIsRefusedAndAcrossAPeriodicWidthIsAccepted) {
     SpringLattice3d::Params p;
     p.ny = 1;
     test_support::Services s;
     EXPECT_THROW(SpringLattice3d(p, s.context()), InputError);
+    const auto rules = SpringLattice3d::spec().erased_rules();
+    ASSERT_EQ(rules[0].key, "ny");
+    EXPECT_NE(rules[0].check({{"ny", std::int64_t{1}}}).find("across: periodic"), std::string::npos);
+    p.across = SpringLattice3d::Across::periodic;
+    p.width = 0.0025;  // B = ny a
+    EXPECT_EQ(SpringLattice3d::spacing_mismatch(p), "");
+    const SpringLattice3d one(p, s.context());
+    EXPECT_EQ(one.body().size(), 41 * 9);
+    EXPECT_DOUBLE_EQ(one.body().mass(0), 0.0118 / (41 * 9));
+}
+
+/// Across a periodic width every node has its 18 neighbours across the width, the last layer's
+/// through the images of the first's; at rest, and under a uniform strain that does not vary across
+/// the width, no node between the end and top faces feels a force.
+TEST(SpringLattice3d, APeriodicWidthBondsTheLastLayerToTheFirst) {
+    const Index nx = 5, ny = 3, nz = 4;
+    const double a = 1e-3;
+    SpringLattice3d::Params p = cubic_lattice(nx, ny, nz, a);
+    p.across = SpringLattice3d::Across::periodic;
+    p.width = ny * a;
+    Lattice3dFixture f(p);
+    const Index nearest = (nx - 1) * ny * nz + nx * ny * nz + nx * ny * (nz - 1);
+    const Index diagonal = 2 * ((nx - 1) * ny * nz + (nx - 1) * ny * (nz - 1) + nx * ny * (nz - 1));
+    ASSERT_EQ(static_cast<Index>(f.lattice.bonds().size()), nearest + diagonal);
+    Index across_the_period = 0;
+    for (const CubicBond& bond : f.lattice.bonds()) {
+        const Eigen::Vector3d reference =
+            (f.body().reference_position.row(bond.j) - f.body().reference_position.row(bond.i)).matrix().transpose();
+        EXPECT_LT((reference + bond.image - bond.rest).norm(), 1e-15);
+        if (!bond.image.isZero()) {
+            ++across_the_period;
+            EXPECT_NEAR(std::abs(bond.image(1)), ny * a, 1e-15);
+        }
+    }
+    EXPECT_EQ(across_the_period, nx * nz + 2 * (nx - 1) * nz + 2 * nx * (nz - 1));
+    EXPECT_LT(f.forces(f.springs(), f.reference_state()).cwiseAbs().maxCoeff(), 1e-18);
+    const Eigen::VectorXd y = f.displaced([](const Eigen::Vector3d& x) { return Eigen::Vector3d(1e-4 * x(0), 0, 0); });
+    const Eigen::VectorXd F = f.forces(f.springs(), y);
+    for (Index iz = 1; iz + 1 < nz; ++iz)
+        for (Index iy = 0; iy < ny; ++iy)
+            for (Index ix = 1; ix + 1 < nx; ++ix)
+                for (int axis = 0; axis < 3; ++axis)
+                    EXPECT_NEAR(f.force(F, f.node(ix, iy, iz), axis), 0, 1e-9 * f.lattice.spring_stiffness() * a);
 }
 
 TEST(SpringLattice3d, AnotherSpacingKeepsTheDensityAndTheViscosityOfTheReferenceLattice) {
