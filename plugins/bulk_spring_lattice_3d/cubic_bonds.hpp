@@ -1,0 +1,80 @@
+#pragma once
+// The bonds of the simple-cubic lattice and the two effects that act on them: central geometric
+// springs and the dashpots on the same bonds. Plain loops over one list of bonds: this first 3D
+// lattice is written for clarity, not yet for speed (no bond families, no threads).
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "frictionlab/model/effect.hpp"
+
+namespace frictionlab {
+
+/// One central spring from node i to node j, stiffness k, at rest the vector `rest` (length l).
+/// Across a periodic width j may be the image of a node on the other side: `image` is what takes
+/// x_j - x_i to the bond's vector (rest minus the nodes' reference difference; zero inside).
+struct CubicBond {
+    Index i, j;
+    double rest_length;
+    double stiffness;
+    Eigen::Vector3d rest = Eigen::Vector3d::Zero();
+    Eigen::Vector3d image = Eigen::Vector3d::Zero();
+};
+
+/// Central springs (Li2020 Eq. 1 in 3D), as in 2D either
+///   geometric:     F_ij = k (1 - l/r) d,      d = x_j - x_i (+ image),  r = |d|,
+///                  exact for large rotations, energy k (r - l)^2 / 2 per bond; or
+///   small strain:  F_ij = k ((d - rest) . e) e,  e = rest / l,
+///                  the same law linearised about the rest state (only for small rotations).
+class CubicLatticeSprings final : public Effect {
+public:
+    enum class Law { geometric, small_strain };
+    CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape, Law law);
+
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
+    std::string describe() const override {
+        return "cubic lattice springs " + shape_ + (law_ == Law::geometric ? " (geometric)" : " (small strain)");
+    }
+    std::string key() const override { return "lattice_springs"; }
+    void add_forces(const StageView& s, ForceView& f) override;
+    double potential_energy(const StageView& s) const override;
+    /// Elastic at every state, no discrete state: the stiffness is exact (Newton on the geometric nonlinearity).
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    /// K = -dF/dq: per bond G = k (1 - l/r) I + (k l / r^3) d d^T (small strain: k e e^T) on both
+    /// nodes' diagonal blocks, -G off them.
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
+
+    const std::vector<CubicBond>& bonds() const { return bonds_; }
+
+private:
+    /// The force on node i from the bond at d = x_j - x_i + image.
+    Eigen::Vector3d force(const CubicBond& b, const Eigen::Vector3d& d) const;
+
+    std::vector<CubicBond> bonds_;
+    std::string shape_;  // "nx x ny x nz", for describe()
+    Law law_;
+};
+
+/// A dashpot eta on every bond, along the full relative velocity: eta (v_j - v_i) on node i (the
+/// 2D lattice's full_vector mode, theory.md B.4). Linear in the velocities, independent of the
+/// positions: no stiffness. It also resists rigid rotation (a small artefact of this reading).
+class CubicBondDamping final : public Effect {
+public:
+    CubicBondDamping(const std::vector<CubicBond>& bonds, double eta);
+
+    bool checkpointable() const override { return true; }
+    std::string describe() const override;
+    std::string key() const override { return "bond_damping"; }
+    void add_forces(const StageView& s, ForceView& f) override;
+    bool quasi_static_regime(const StageView&) const override { return true; }
+
+    double coefficient() const { return eta_; }
+
+private:
+    std::vector<std::array<Index, 2>> pairs_;
+    double eta_;
+};
+
+}  // namespace frictionlab
