@@ -1,13 +1,15 @@
 #pragma once
-// The bonds of the simple-cubic lattice and the two effects that act on them: central geometric
-// springs and the dashpots on the same bonds. Plain loops over one list of bonds: this first 3D
-// lattice is written for clarity, not yet for speed (no bond families, no threads).
+// The bonds of the simple-cubic lattice and the two effects that act on them: central springs and
+// the dashpots on the same bonds. Forces are computed by bond family (cubic_families.hpp): in
+// parallel, and the same bits at any thread count.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "cubic_families.hpp"
 #include "frictionlab/model/effect.hpp"
 
 namespace frictionlab {
@@ -31,7 +33,7 @@ struct CubicBond {
 class CubicLatticeSprings final : public Effect {
 public:
     enum class Law { geometric, small_strain };
-    CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape, Law law);
+    CubicLatticeSprings(std::shared_ptr<const CubicFamilies> families, double stiffness, std::string shape, Law law);
 
     bool checkpointable() const override { return true; }  // no state beyond the state vector
     std::string describe() const override {
@@ -49,12 +51,12 @@ public:
     const std::vector<CubicBond>& bonds() const { return bonds_; }
 
 private:
-    /// The force on node i from the bond at d = x_j - x_i + image.
-    Eigen::Vector3d force(const CubicBond& b, const Eigen::Vector3d& d) const;
-
-    std::vector<CubicBond> bonds_;
+    std::shared_ptr<const CubicFamilies> families_;
+    std::vector<CubicBond> bonds_;  // the same bonds as a list: energy and stiffness
+    double stiffness_;
     std::string shape_;  // "nx x ny x nz", for describe()
     Law law_;
+    CubicPairForces pair_;  // scratch of add_forces()
 };
 
 /// A dashpot eta on every bond, along the full relative velocity: eta (v_j - v_i) on node i (the
@@ -62,7 +64,7 @@ private:
 /// positions: no stiffness. It also resists rigid rotation (a small artefact of this reading).
 class CubicBondDamping final : public Effect {
 public:
-    CubicBondDamping(const std::vector<CubicBond>& bonds, double eta);
+    CubicBondDamping(std::shared_ptr<const CubicFamilies> families, double eta);
 
     bool checkpointable() const override { return true; }
     std::string describe() const override;
@@ -73,8 +75,9 @@ public:
     double coefficient() const { return eta_; }
 
 private:
-    std::vector<std::array<Index, 2>> pairs_;
+    std::shared_ptr<const CubicFamilies> families_;
     double eta_;
+    CubicPairForces pair_;  // scratch of add_forces()
 };
 
 }  // namespace frictionlab

@@ -142,7 +142,7 @@ TEST(SpringLattice3d, APeriodicWidthBondsTheLastLayerToTheFirst) {
         const Eigen::Vector3d reference =
             (f.body().reference_position.row(bond.j) - f.body().reference_position.row(bond.i)).matrix().transpose();
         EXPECT_LT((reference + bond.image - bond.rest).norm(), 1e-15);
-        if (!bond.image.isZero()) {
+        if (std::abs(bond.image(1)) > a / 2) {
             ++across_the_period;
             EXPECT_NEAR(std::abs(bond.image(1)), ny * a, 1e-15);
         }
