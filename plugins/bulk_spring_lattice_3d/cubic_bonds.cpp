@@ -66,24 +66,35 @@ void small_strain_forces(const double* x, const double* y, const double* z, cons
     }
 }
 
-/// Family f's dashpot forces eta (v_q - v_p) on the nodes [from, to) that start a bond.
+/// Family f's dashpot forces eta (v_q - v_p) on the nodes [from, to) that start a bond: onto the
+/// springs' forces of the same bonds (`onto`), or in their place.
 FRICTIONLAB_HOT_KERNEL
 void dashpot_forces(const double* vx, const double* vy, const double* vz, const Index* end, Index from, Index to,
-                    double eta, double* fx, double* fy, double* fz) {
+                    double eta, bool onto, double* fx, double* fy, double* fz) {
     for (Index p = from; p < to; ++p) {
         const Index q = end[p];
-        if (q < 0) {
-            fx[p] = fy[p] = fz[p] = 0;
-            continue;
-        }
-        fx[p] = eta * (vx[q] - vx[p]), fy[p] = eta * (vy[q] - vy[p]), fz[p] = eta * (vz[q] - vz[p]);
+        const bool bond = q >= 0;
+        const double gx = bond ? eta * (vx[q] - vx[p]) : 0, gy = bond ? eta * (vy[q] - vy[p]) : 0,
+                     gz = bond ? eta * (vz[q] - vz[p]) : 0;
+        if (onto)
+            fx[p] += gx, fy[p] += gy, fz[p] += gz;
+        else
+            fx[p] = gx, fy[p] = gy, fz[p] = gz;
     }
 }
 
 }  // namespace
 
-void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) {
+void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) { add_bond_forces(s, nullptr, f); }
+
+void CubicLatticeSprings::add_forces_with_dashpots(const StageView& s, const CubicBondDamping& dashpots, ForceView& f) {
+    add_bond_forces(s, &dashpots, f);
+}
+
+void CubicLatticeSprings::add_bond_forces(const StageView& s, const CubicBondDamping* dashpots, ForceView& f) {
     const double *x = s.positions_along(0).data(), *y = s.positions_along(1).data(), *z = s.positions_along(2).data();
+    const double *vx = s.velocities_along(0).data(), *vy = s.velocities_along(1).data(),
+                 *vz = s.velocities_along(2).data();
     const CubicFamilies& c = *families_;
     for_each_family_chunk(c.nodes(), [&](int family, Index from, Index to) {
         double *fx = pair_.along(family, 0), *fy = pair_.along(family, 1), *fz = pair_.along(family, 2);
@@ -93,6 +104,7 @@ void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) {
         else
             geometric_forces(x, y, z, c.ends(family), c.image_y(family), from, to, stiffness_, c.rest_length(family),
                              fx, fy, fz);
+        if (dashpots) dashpot_forces(vx, vy, vz, c.ends(family), from, to, dashpots->coefficient(), true, fx, fy, fz);
     });
     pair_.add_to(c, f);
 }
@@ -140,10 +152,23 @@ void CubicBondDamping::add_forces(const StageView& s, ForceView& f) {
                  *vz = s.velocities_along(2).data();
     const CubicFamilies& c = *families_;
     for_each_family_chunk(c.nodes(), [&](int family, Index from, Index to) {
-        dashpot_forces(vx, vy, vz, c.ends(family), from, to, eta_, pair_.along(family, 0), pair_.along(family, 1),
-                       pair_.along(family, 2));
+        dashpot_forces(vx, vy, vz, c.ends(family), from, to, eta_, false, pair_.along(family, 0),
+                       pair_.along(family, 1), pair_.along(family, 2));
     });
     pair_.add_to(c, f);
 }
+
+}  // namespace frictionlab
+
+namespace frictionlab {
+
+CubicBonds::CubicBonds(std::unique_ptr<CubicLatticeSprings> springs, std::unique_ptr<CubicBondDamping> dashpots)
+    : springs_(std::move(springs)), dashpots_(std::move(dashpots)) {}
+
+std::string CubicBonds::describe() const {
+    return springs_->describe() + " with " + dashpots_->describe() + " (one pass over the bonds)";
+}
+
+void CubicBonds::add_forces(const StageView& s, ForceView& f) { springs_->add_forces_with_dashpots(s, *dashpots_, f); }
 
 }  // namespace frictionlab

@@ -153,10 +153,14 @@ void SpringLattice3d::build_bonds() {
 
 std::vector<std::unique_ptr<Effect>> SpringLattice3d::effects(const Context&) {
     std::vector<std::unique_ptr<Effect>> out;
-    out.push_back(std::make_unique<CubicLatticeSprings>(
+    auto springs = std::make_unique<CubicLatticeSprings>(
         families_, k_, fmt::format("{}x{}x{}{}", nx_, ny_, nz_, across_ == Across::periodic ? " periodic across" : ""),
-        springs_));
-    if (eta_ > 0) out.push_back(std::make_unique<CubicBondDamping>(families_, eta_));
+        springs_);
+    if (eta_ > 0)
+        out.push_back(
+            std::make_unique<CubicBonds>(std::move(springs), std::make_unique<CubicBondDamping>(families_, eta_)));
+    else
+        out.push_back(std::move(springs));
     return out;
 }
 
