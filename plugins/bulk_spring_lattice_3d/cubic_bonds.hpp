@@ -1,16 +1,20 @@
 #pragma once
-// The bonds of the simple-cubic lattice and the two effects that act on them: central geometric
-// springs and the dashpots on the same bonds. Plain loops over one list of bonds: this first 3D
-// lattice is written for clarity, not yet for speed (no bond families, no threads).
+// The bonds of the simple-cubic lattice and the two effects that act on them: central springs and
+// the dashpots on the same bonds. Forces are computed by bond family (cubic_families.hpp): in
+// parallel, and the same bits at any thread count.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "cubic_families.hpp"
 #include "frictionlab/model/effect.hpp"
 
 namespace frictionlab {
+
+class CubicBondDamping;
 
 /// One central spring from node i to node j, stiffness k, at rest the vector `rest` (length l).
 /// Across a periodic width j may be the image of a node on the other side: `image` is what takes
@@ -31,7 +35,7 @@ struct CubicBond {
 class CubicLatticeSprings final : public Effect {
 public:
     enum class Law { geometric, small_strain };
-    CubicLatticeSprings(std::vector<CubicBond> bonds, std::string shape, Law law);
+    CubicLatticeSprings(std::shared_ptr<const CubicFamilies> families, double stiffness, std::string shape, Law law);
 
     bool checkpointable() const override { return true; }  // no state beyond the state vector
     std::string describe() const override {
@@ -42,6 +46,9 @@ public:
     double potential_energy(const StageView& s) const override;
     /// Elastic at every state, no discrete state: the stiffness is exact (Newton on the geometric nonlinearity).
     bool quasi_static_regime(const StageView&) const override { return true; }
+    /// The springs' forces and those of `dashpots` on the same bonds, in one pass over the bonds: their
+    /// sum as add_forces() of each would give it, up to rounding.
+    void add_forces_with_dashpots(const StageView& s, const CubicBondDamping& dashpots, ForceView& f);
     /// K = -dF/dq: per bond G = k (1 - l/r) I + (k l / r^3) d d^T (small strain: k e e^T) on both
     /// nodes' diagonal blocks, -G off them.
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
@@ -49,12 +56,14 @@ public:
     const std::vector<CubicBond>& bonds() const { return bonds_; }
 
 private:
-    /// The force on node i from the bond at d = x_j - x_i + image.
-    Eigen::Vector3d force(const CubicBond& b, const Eigen::Vector3d& d) const;
+    void add_bond_forces(const StageView& s, const CubicBondDamping* dashpots, ForceView& f);
 
-    std::vector<CubicBond> bonds_;
+    std::shared_ptr<const CubicFamilies> families_;
+    std::vector<CubicBond> bonds_;  // the same bonds as a list: energy and stiffness
+    double stiffness_;
     std::string shape_;  // "nx x ny x nz", for describe()
     Law law_;
+    CubicPairForces pair_;  // scratch of add_forces()
 };
 
 /// A dashpot eta on every bond, along the full relative velocity: eta (v_j - v_i) on node i (the
@@ -62,7 +71,7 @@ private:
 /// positions: no stiffness. It also resists rigid rotation (a small artefact of this reading).
 class CubicBondDamping final : public Effect {
 public:
-    CubicBondDamping(const std::vector<CubicBond>& bonds, double eta);
+    CubicBondDamping(std::shared_ptr<const CubicFamilies> families, double eta);
 
     bool checkpointable() const override { return true; }
     std::string describe() const override;
@@ -73,8 +82,35 @@ public:
     double coefficient() const { return eta_; }
 
 private:
-    std::vector<std::array<Index, 2>> pairs_;
+    std::shared_ptr<const CubicFamilies> families_;
     double eta_;
+    CubicPairForces pair_;  // scratch of add_forces()
+};
+
+/// The springs and the dashpots on the same bonds as one effect of the pipeline, evaluated in one
+/// pass over the bond families (one sum onto the nodes instead of two). Its two parts stay separate
+/// physical effects for energy bookkeeping and the stable-step estimate (Effect::parts()).
+class CubicBonds final : public Effect {
+public:
+    CubicBonds(std::unique_ptr<CubicLatticeSprings> springs, std::unique_ptr<CubicBondDamping> dashpots);
+
+    bool checkpointable() const override { return true; }  // no state beyond the state vector
+    std::string describe() const override;
+    std::string key() const override { return "lattice_bonds"; }
+    void add_forces(const StageView& s, ForceView& f) override;
+    double potential_energy(const StageView& s) const override { return springs_->potential_energy(s); }
+    std::vector<Effect*> parts() override { return {springs_.get(), dashpots_.get()}; }
+    bool quasi_static_regime(const StageView&) const override { return true; }
+    void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override {
+        springs_->add_stiffness(s, stiffness);
+    }
+
+    CubicLatticeSprings& springs() { return *springs_; }
+    CubicBondDamping& dashpots() { return *dashpots_; }
+
+private:
+    std::unique_ptr<CubicLatticeSprings> springs_;
+    std::unique_ptr<CubicBondDamping> dashpots_;
 };
 
 }  // namespace frictionlab

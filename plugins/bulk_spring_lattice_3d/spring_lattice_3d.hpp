@@ -57,7 +57,7 @@ namespace frictionlab {
 /// where the 2D lattice has eta on both.
 ///
 /// Not yet: cells for pictures (Body::cells is planar), the bond-projected dashpots of the 2D
-/// lattice, threads.
+/// lattice.
 class SpringLattice3d final : public BulkModel {
 public:
     /// Across the width: two free side faces, or periodic (node iy = ny - 1 bonded to iy = 0 as to
@@ -109,6 +109,7 @@ private:
 
     Index nx_, ny_, nz_;
     Body body_;
+    std::shared_ptr<const CubicFamilies> families_;
     std::vector<CubicBond> bonds_;
     double k_ = 0, eta_ = 0;
     Across across_;

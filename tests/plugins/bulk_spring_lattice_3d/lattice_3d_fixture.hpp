@@ -31,7 +31,13 @@ struct Lattice3dFixture {
     Index nodes() const { return body().size(); }
     StateLayout layout() const { return {nodes(), 3, 0}; }
     Index node(Index ix, Index iy, Index iz) const { return lattice.node(ix, iy, iz); }
-    CubicLatticeSprings& springs() const { return static_cast<CubicLatticeSprings&>(*effects.at(0)); }
+    /// The springs: the lattice's one effect if undamped, else the first part of its bonds.
+    CubicLatticeSprings& springs() const {
+        if (auto* bonds = dynamic_cast<CubicBonds*>(effects.at(0).get())) return bonds->springs();
+        return static_cast<CubicLatticeSprings&>(*effects.at(0));
+    }
+    /// The dashpots of a damped lattice.
+    CubicBondDamping& dashpots() const { return dynamic_cast<CubicBonds&>(*effects.at(0)).dashpots(); }
 
     /// The state at the reference positions, at rest.
     Eigen::VectorXd reference_state() const {

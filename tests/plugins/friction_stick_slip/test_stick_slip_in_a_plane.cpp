@@ -130,6 +130,40 @@ TEST(StickSlipInAPlane, ItForeseesTheMagnitudeReachingTheThreshold) {
     EXPECT_NEAR(r.law->foreseen_event_time(r.view()) - r.t, std::sqrt(u_s * u_s - u * u) / v, 1e-12);
 }
 
+/// The kinetic force's direction is stiff. Sliding at V along x, a lateral velocity w meets
+/// -S w/|v| ~ -(S/V) w: a damping S/V that grows without bound as the sliding slows, and that an
+/// explicit scheme must resolve. RK4 damps it while S dt/(m V) < 2.785 (its stability bound on the
+/// negative real axis) and amplifies it above, though the force itself never does work on the block:
+/// theory.md §0 says what this does to a 3D slider in slow slip. Here a block of mass 1 kg is pushed
+/// along x by exactly its kinetic force S, and its lateral velocity followed over 8 RK4 steps, while
+/// it is small enough for the linear reading (a growing one saturates once |w| ~ V: the block then
+/// slides faster and the damping S/|v| falls below the bound).
+double lateral_growth(double damping_times_dt) {
+    PlaneRig<Coulomb> r(exact());
+    r.press();
+    const double S = 0.17 * exact_normal, dt = 1e-3, V = S * dt / damping_times_dt, w0 = 1e-9 * V;
+    Eigen::Vector2d x(4e-3, 0), v(V, w0);
+    r.move(x, v);  // broken along x, sliding at V with a small lateral velocity
+    const auto acceleration = [&](const Eigen::Vector2d& velocity) {
+        for (int a = 0; a < 2; ++a) r.y(r.layout.velocity_index(0, a)) = velocity[a];
+        return Eigen::Vector2d(S + r.force().x(), r.force().y());  // m = 1
+    };
+    for (int step = 0; step < 8; ++step) {
+        const Eigen::Vector2d k1 = acceleration(v), k2 = acceleration(v + 0.5 * dt * k1),
+                              k3 = acceleration(v + 0.5 * dt * k2), k4 = acceleration(v + dt * k3);
+        v += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        x += dt * v;
+        r.move(x, v);
+        EXPECT_EQ(r.law->mode(0), Mode::slipping);
+    }
+    return std::abs(v.y()) / w0;
+}
+
+TEST(StickSlipInAPlane, ExplicitSchemesMustResolveTheLateralDampingOfTheKineticForce) {
+    EXPECT_LT(lateral_growth(2.0), 1e-3);  // S dt/(m V) = 2: each step multiplies w by 1/3
+    EXPECT_GT(lateral_growth(3.5), 1e+3);  // 3.5: each step by -1.9 (RK4's amplification there)
+}
+
 /// The forces and the slip weakening's slip along x of a block of a 2D and of a 3D body, moved alike
 /// along x through stick, break, slip and re-stick: the same bits.
 template <class Law>
