@@ -24,7 +24,6 @@ Vec3 bond_vector(const StageView& s, const CubicBond& b) {
 CubicLatticeSprings::CubicLatticeSprings(std::shared_ptr<const CubicFamilies> families, double stiffness,
                                          std::string shape, Law law)
     : families_(std::move(families)),
-      bonds_(families_->bonds(stiffness)),
       stiffness_(stiffness),
       shape_(std::move(shape)),
       law_(law),
@@ -111,17 +110,17 @@ void CubicLatticeSprings::add_bond_forces(const StageView& s, const CubicBondDam
 
 double CubicLatticeSprings::potential_energy(const StageView& s) const {
     double energy = 0;
-    for (const CubicBond& b : bonds_) {
+    families_->for_each_bond(stiffness_, [&](const CubicBond& b) {
         const Vec3 d = bond_vector(s, b);
         const double stretch =
             law_ == Law::small_strain ? (d - b.rest).dot(b.rest) / b.rest_length : d.norm() - b.rest_length;
         energy += 0.5 * b.stiffness * stretch * stretch;
-    }
+    });
     return energy;
 }
 
 void CubicLatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
-    for (const CubicBond& b : bonds_) {
+    families_->for_each_bond(stiffness_, [&](const CubicBond& b) {
         const Vec3 d = bond_vector(s, b);
         const double r = d.norm(), k = b.stiffness, l = b.rest_length;
         const Eigen::Matrix3d g = law_ == Law::small_strain
@@ -137,11 +136,11 @@ void CubicLatticeSprings::add_stiffness(const StageView& s, std::vector<Eigen::T
                 stiffness.emplace_back(iu, jw, -g(u, w));
                 stiffness.emplace_back(ju, iw, -g(u, w));
             }
-    }
+    });
 }
 
 CubicBondDamping::CubicBondDamping(std::shared_ptr<const CubicFamilies> families, double eta)
-    : families_(std::move(families)), eta_(eta), pair_(families_->nodes()) {}
+    : families_(std::move(families)), eta_(eta) {}
 
 std::string CubicBondDamping::describe() const {
     return fmt::format("cubic bond damping eta={:.3g} N s/m (full vector)", eta_);
@@ -151,11 +150,12 @@ void CubicBondDamping::add_forces(const StageView& s, ForceView& f) {
     const double *vx = s.velocities_along(0).data(), *vy = s.velocities_along(1).data(),
                  *vz = s.velocities_along(2).data();
     const CubicFamilies& c = *families_;
+    if (!pair_) pair_.emplace(c.nodes());  // only when evaluated apart from the springs (energy bookkeeping)
     for_each_family_chunk(c.nodes(), [&](int family, Index from, Index to) {
-        dashpot_forces(vx, vy, vz, c.ends(family), from, to, eta_, false, pair_.along(family, 0),
-                       pair_.along(family, 1), pair_.along(family, 2));
+        dashpot_forces(vx, vy, vz, c.ends(family), from, to, eta_, false, pair_->along(family, 0),
+                       pair_->along(family, 1), pair_->along(family, 2));
     });
-    pair_.add_to(c, f);
+    pair_->add_to(c, f);
 }
 
 }  // namespace frictionlab

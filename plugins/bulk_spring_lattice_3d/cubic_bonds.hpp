@@ -4,6 +4,7 @@
 // parallel, and the same bits at any thread count.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,13 +54,10 @@ public:
     /// nodes' diagonal blocks, -G off them.
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
-    const std::vector<CubicBond>& bonds() const { return bonds_; }
-
 private:
     void add_bond_forces(const StageView& s, const CubicBondDamping* dashpots, ForceView& f);
 
     std::shared_ptr<const CubicFamilies> families_;
-    std::vector<CubicBond> bonds_;  // the same bonds as a list: energy and stiffness
     double stiffness_;
     std::string shape_;  // "nx x ny x nz", for describe()
     Law law_;
@@ -84,7 +82,7 @@ public:
 private:
     std::shared_ptr<const CubicFamilies> families_;
     double eta_;
-    CubicPairForces pair_;  // scratch of add_forces()
+    std::optional<CubicPairForces> pair_;  // scratch of add_forces(), made when first evaluated alone
 };
 
 /// The springs and the dashpots on the same bonds as one effect of the pipeline, evaluated in one
@@ -112,5 +110,16 @@ private:
     std::unique_ptr<CubicLatticeSprings> springs_;
     std::unique_ptr<CubicBondDamping> dashpots_;
 };
+
+template <class Visit>
+void CubicFamilies::for_each_bond(double stiffness, Visit&& visit) const {
+    for (int f = 0; f < count; ++f) {
+        const auto [rx, ry, rz] = rest(f);
+        for (Index p = 0; p < nodes_; ++p)
+            if (const Index q = end(f, p); q >= 0)
+                visit(CubicBond{p, q, rest_length(f), stiffness, Eigen::Vector3d(rx, ry, rz),
+                                Eigen::Vector3d(0, image_y(f)[p], 0)});
+    }
+}
 
 }  // namespace frictionlab

@@ -50,13 +50,7 @@ double CubicFamilies::rest_length(int f) const {
 
 std::vector<CubicBond> CubicFamilies::bonds(double stiffness) const {
     std::vector<CubicBond> out;
-    for (int f = 0; f < count; ++f) {
-        const auto [rx, ry, rz] = rest(f);
-        for (Index p = 0; p < nodes_; ++p)
-            if (const Index q = end(f, p); q >= 0)
-                out.push_back({p, q, rest_length(f), stiffness, Eigen::Vector3d(rx, ry, rz),
-                               Eigen::Vector3d(0, image_y(f)[p], 0)});
-    }
+    for_each_bond(stiffness, [&](const CubicBond& b) { out.push_back(b); });
     return out;
 }
 

@@ -35,7 +35,10 @@ public:
     /// The rest vector a (dx, dy, dz) of family f.
     std::array<double, 3> rest(int f) const;
     double rest_length(int f) const;
-    /// Every bond once, family by family, node by node, as a list (for energies, stiffness, tests).
+    /// Calls visit(bond) for every bond once, family by family, node by node (energies, stiffness).
+    template <class Visit>
+    void for_each_bond(double stiffness, Visit&& visit) const;
+    /// The same bonds as a list.
     std::vector<CubicBond> bonds(double stiffness) const;
 
 private:

@@ -101,7 +101,8 @@ public:
     double spring_stiffness() const { return k_; }
     /// eta, N s/m; 0 when damping is off.
     double damping_coefficient() const { return eta_; }
-    const std::vector<CubicBond>& bonds() const { return bonds_; }
+    /// Every bond once, as a list (built on each call).
+    std::vector<CubicBond> bonds() const { return families_->bonds(k_); }
 
 private:
     void build_node_sets();
@@ -110,7 +111,6 @@ private:
     Index nx_, ny_, nz_;
     Body body_;
     std::shared_ptr<const CubicFamilies> families_;
-    std::vector<CubicBond> bonds_;
     double k_ = 0, eta_ = 0;
     Across across_;
     CubicLatticeSprings::Law springs_;

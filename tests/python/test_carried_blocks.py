@@ -23,15 +23,20 @@ def sweep(folder, loading_curve="time,driving_force\n0,0\n1,2\n", wall=1.0):
     return folder
 
 
+def source_tree(root):
+    """The core, one law plugin (type `law`) and the li2020 campaign scene that names it."""
+    for folder in ("core/src", "plugins/law", "configs/li2020"):
+        (root / folder).mkdir(parents=True)
+    (root / "CMakeLists.txt").write_text("project(x)\n")
+    (root / "plugins/law/law.hpp").write_text('struct Law { static constexpr std::string_view type = "law"; };\n')
+    (root / "plugins/law/law.cpp").write_text("double force(double x) { return 2 * x; }\n")
+    (root / "configs/li2020/campaign_scene.yaml").write_text("friction: {type: law}\n")
+
+
 @pytest.fixture
 def tree(tmp_path):
     """A source tree whose README holds a stamped block, then a change of code."""
-    for folder in ("core/src", "plugins/law", "configs/li2020"):
-        (tmp_path / folder).mkdir(parents=True)
-    (tmp_path / "CMakeLists.txt").write_text("project(x)\n")
-    (tmp_path / "plugins/law/law.hpp").write_text('struct Law { static constexpr std::string_view type = "law"; };\n')
-    (tmp_path / "configs/li2020/campaign_scene.yaml").write_text("friction: {type: law}\n")
-    (tmp_path / "plugins/law/law.cpp").write_text("double force(double x) { return 2 * x; }\n")
+    source_tree(tmp_path)
     (tmp_path / "README.md").write_text("<!-- li2020-claims -->\n- 2.81 per unit theta\n<!-- /li2020-claims -->\n")
     doc_blocks.replace_block(str(tmp_path / "README.md"), "li2020-claims", "- 2.81 per unit theta\n", ["a1", "b2"], "1-2")
     (tmp_path / "plugins/law/law.cpp").write_text("double force(double x) { return x + x; }\n")
@@ -77,13 +82,10 @@ def repository(tmp_path):
     """A repository whose block was stamped by an older fingerprint rule (one that counted every
     plugin, the other law too), committed; then a plugin the block cannot load was added and the rule
     became today's."""
-    for folder in ("core/src", "plugins/law", "plugins/other_law", "configs/li2020", "apps/python/frictionlab"):
+    source_tree(tmp_path)
+    for folder in ("plugins/other_law", "apps/python/frictionlab"):
         (tmp_path / folder).mkdir(parents=True)
-    (tmp_path / "CMakeLists.txt").write_text("project(x)\n")
-    (tmp_path / "plugins/law/law.hpp").write_text('struct Law { static constexpr std::string_view type = "law"; };\n')
-    (tmp_path / "plugins/law/law.cpp").write_text("double force(double x) { return 2 * x; }\n")
     (tmp_path / "plugins/other_law/other_law.hpp").write_text('static constexpr std::string_view type = "other";\n')
-    (tmp_path / "configs/li2020/campaign_scene.yaml").write_text("friction: {type: law}\n")
     rule = open(doc_blocks.__file__).read()
     older_rule = rule.replace('PHYSICS = ("core/src", "core/include", "apps/campaign")',
                               'PHYSICS = ("core/src", "core/include", "apps/campaign", "plugins")')

@@ -2,6 +2,7 @@
 // A 3D lattice with its effects, a way to evaluate an effect at a given state, and cubic lattices
 // of a given size and density.
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "frictionlab/model/state.hpp"
@@ -54,6 +55,18 @@ struct Lattice3dFixture {
             const Eigen::Vector3d x = body().reference_position.row(i).matrix().transpose() - centre;
             const Eigen::Vector3d d = u(x);
             for (int a = 0; a < 3; ++a) y(layout().position_index(i, a)) += d(a);
+        }
+        return y;
+    }
+    /// The rest state with every position moved by `scatter` and every velocity set to 1e-2 m/s, each
+    /// times a standard normal draw (seeded: the same state every time).
+    Eigen::VectorXd jostled(double scatter, unsigned seed) const {
+        std::mt19937_64 rng(seed);
+        std::normal_distribution<double> noise(0.0, 1.0);
+        Eigen::VectorXd y = reference_state();
+        for (Index d = 0; d < layout().dof(); ++d) {
+            y(d) += scatter * noise(rng);
+            y(layout().dof() + d) = 1e-2 * noise(rng);
         }
         return y;
     }

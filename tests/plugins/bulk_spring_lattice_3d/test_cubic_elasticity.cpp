@@ -123,8 +123,11 @@ TEST(CubicElasticity, RigidMotionsGiveNoForce) {
         1e-18 * unit * spacing);
 }
 
-TEST(CubicElasticity, StiffnessIsTheDerivativeOfTheForces) {
-    Lattice3dFixture f(cubic_lattice(3, 3, 3, spacing));
+/// For either spring law (the small-strain one's stiffness is k e e^T, constant).
+void expect_stiffness_is_the_derivative_of_the_forces(CubicLatticeSprings::Law law) {
+    SpringLattice3d::Params p = cubic_lattice(3, 3, 3, spacing);
+    p.springs = law;
+    Lattice3dFixture f(p);
     std::mt19937_64 rng(3);
     std::normal_distribution<double> jitter(0.0, 0.05 * spacing);  // large enough for the geometric terms
     Eigen::VectorXd y = f.reference_state();
@@ -146,6 +149,11 @@ TEST(CubicElasticity, StiffnessIsTheDerivativeOfTheForces) {
     }
     EXPECT_LT(worst, 1e-6 * k);
     EXPECT_LT((stiffness - stiffness.transpose()).cwiseAbs().maxCoeff(), 1e-9 * k);
+}
+
+TEST(CubicElasticity, StiffnessIsTheDerivativeOfTheForces) {
+    expect_stiffness_is_the_derivative_of_the_forces(CubicLatticeSprings::Law::geometric);
+    expect_stiffness_is_the_derivative_of_the_forces(CubicLatticeSprings::Law::small_strain);
 }
 
 /// The long-wave speeds of the lattice from its own stiffness: a plane wave u = U exp(i q.x) of

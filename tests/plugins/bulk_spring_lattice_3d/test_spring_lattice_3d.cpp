@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "frictionlab/base/errors.hpp"
+#include "frictionlab/base/parallel_chunks.hpp"
 #include "lattice_3d_fixture.hpp"
 
 namespace frictionlab {
@@ -186,18 +187,27 @@ TEST(SpringLattice3d, EffectsAreTheSpringsAndTheDashpotsIfDamped) {
 
 TEST(SpringLattice3d, BondsInOnePassAreTheSpringsAndTheDashpots) {
     Lattice3dFixture f(cubic_lattice(6, 4, 5, 1e-3, 1180, 0.5));
-    const StateLayout layout = f.layout();
-    std::mt19937_64 rng(7);
-    std::normal_distribution<double> noise(0.0, 1.0);
-    Eigen::VectorXd y = f.reference_state();
-    for (Index d = 0; d < layout.dof(); ++d) {
-        y(d) += 1e-6 * noise(rng);
-        y(layout.dof() + d) = 1e-2 * noise(rng);
-    }
+    const Eigen::VectorXd y = f.jostled(1e-6, 7);
     const Eigen::VectorXd fused = f.forces(*f.effects.at(0), y);
     const Eigen::VectorXd apart = f.forces(f.springs(), y) + f.forces(f.dashpots(), y);
     EXPECT_GT(f.forces(f.dashpots(), y).norm(), 1e-3 * apart.norm()) << "both parts must act";
     EXPECT_LT((fused - apart).cwiseAbs().maxCoeff(), 1e-12 * apart.cwiseAbs().maxCoeff());
+}
+
+/// Large enough (9 families x 6,273 nodes, 3 axes x 6,273) for both passes to be shared among
+/// threads: the forces are the same bits at one and at three threads.
+TEST(SpringLattice3d, BondForcesAreTheSameBitsAtAnyThreadCount) {
+    Lattice3dFixture f(cubic_lattice(41, 17, 9, 1e-3, 1180, 0.5));
+    ASSERT_GE(3 * f.nodes(), parallel_chunks_from);
+    const Eigen::VectorXd y = f.jostled(1e-5, 11);
+    const int threads = worker_threads();
+    set_worker_threads(1);
+    const Eigen::VectorXd one = f.forces(*f.effects.at(0), y);
+    set_worker_threads(3);
+    const Eigen::VectorXd three = f.forces(*f.effects.at(0), y);
+    set_worker_threads(threads);
+    EXPECT_GT(one.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(one, three);
 }
 
 TEST(SpringLattice3d, DashpotsActOnTheFullRelativeVelocityAndSpareATranslation) {
