@@ -100,7 +100,7 @@ Settings settings_of(const P& p) {
 /// the stretch it broke with and turns towards its slip over a slip of S/k_t, as its tangential
 /// spring loaded to the strength would turn it: s = (S s_n + k_t (x - x_n)) / |...|, s_n at the step
 /// start. Taking s from the velocity instead gives a lateral damping S/|v| that no explicit step
-/// resolves in slow slip (theory.md §0); this way a lateral motion meets the stiffness k_t at most.
+/// resolves in slow slip (theory.md §0); this way a lateral motion meets the stiffness k_t.
 /// delta is the slip since the block last stuck (the length of its path), v_r the regularisation
 /// velocity: tanh(v.s/v_r) stands for the step function so that the stage force is a smooth function
 /// of the stage velocity (the step jumps at v = 0 and an RK stage could straddle it).
