@@ -17,7 +17,8 @@ namespace frictionlab {
 ///     detached  F = 0                                          (f_N = 0)
 ///
 /// on a 2D body's interface; on a 3D body's, x, v and F are vectors of its plane and the law is
-/// isotropic, F = -mu_d f_N tanh(|v| / v_r) v/|v| while slipping (StickSlipLaw, theory.md §0).
+/// isotropic, F = -mu_d f_N tanh(v.s / v_r) s while slipping, s the direction the block slides in
+/// (StickSlipLaw, theory.md §0).
 ///
 /// k_t = sqrt(39.2e9 N/m^2 f_N) per block unless given. Re-stick (StickSlipLaw, which holds the
 /// block logic shared with slip_weakening): at a commit, when the velocity has reversed or fallen

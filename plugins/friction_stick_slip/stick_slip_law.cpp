@@ -63,6 +63,16 @@ std::array<Eigen::Map<const Eigen::ArrayXd>, T> along(const StageView& s, const 
     }
 }
 
+/// The direction s a slipping block of a 3D body slides in at position x, where the kinetic force
+/// has magnitude `strength`: its direction at the step start turned by the slip since, as the block's
+/// tangential spring, loaded to the strength, would turn it (theory.md §0). Along one axis it stays
+/// +-1 exactly.
+Eigen::Vector2d sliding_direction(const Block<2>& b, const Eigen::Vector2d& x, double strength) {
+    const Eigen::Vector2d turned = strength * b.direction + b.stiffness * (x - b.x_start);
+    const double length = turned.norm();
+    return length > 0 ? Eigen::Vector2d(turned / length) : b.direction;
+}
+
 /// The earliest t >= 0 at which |a + b t| reaches `radius` (|a| < radius), +infinity if b = 0.
 double time_to_radius(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double radius) {
     const double bb = b.squaredNorm(), ab = a.dot(b), room = radius * radius - a.squaredNorm();
@@ -117,11 +127,9 @@ Tangent<T> StickSlipLaw<Strength>::stage_force(const Block<T>& b, const Tangent<
             if constexpr (T == 1) {
                 return Tangent<T>(-strength * std::tanh(v[0] / settings_.regularisation_velocity));
             } else {
-                const double speed = v.norm();
-                if (!(speed > 0)) return Tangent<T>::Zero();
-                // v / |v| first: along one axis it is +-1 exactly, and the force the 2D law's, bit for bit
-                const Tangent<T> direction = v / speed;
-                return -strength * std::tanh(speed / settings_.regularisation_velocity) * direction;
+                // Along one axis s is +-1 exactly and tanh odd: the force is the 2D law's, bit for bit.
+                const Tangent<T> s = sliding_direction(b, x, strength);
+                return -strength * std::tanh(v.dot(s) / settings_.regularisation_velocity) * s;
             }
         }
     }
@@ -283,7 +291,10 @@ template <class Strength>
 template <int T>
 void StickSlipLaw<Strength>::commit_block(Block<T>& b, const Tangent<T>& x, const Tangent<T>& v, double normal) const {
     const Mode during = b.mode;
-    if (during == Mode::slipping) b.slip += magnitude<T>(x - b.x_start);
+    if (during == Mode::slipping) {
+        b.slip += magnitude<T>(x - b.x_start);
+        if constexpr (T == 2) b.direction = sliding_direction(b, x, strength_(std::max(0.0, normal), b.slip));
+    }
     const double k_step = b.stiffness;
     b.x_start = x;
     b.v_start = v;
@@ -307,8 +318,10 @@ void StickSlipLaw<Strength>::commit_block(Block<T>& b, const Tangent<T>& x, cons
             b.reached_stick_velocity = magnitude<T>(v) > settings_.stick_velocity;
         }
     } else if (during == Mode::slipping && events_) {
-        const bool reversed = b.direction.dot(v) < 0;
-        const double speed = magnitude<T>(v);
+        // The speed along s, not |v|: on a free side face a lateral jitter above stick_velocity
+        // would otherwise keep a block that no longer slips from re-sticking (theory.md §0).
+        const double speed = b.direction.dot(v);
+        const bool reversed = speed < 0;
         const bool stopped = b.reached_stick_velocity && speed < settings_.stick_velocity;
         b.reached_stick_velocity = b.reached_stick_velocity || speed > settings_.stick_velocity;
         if (reversed || stopped) {

@@ -40,7 +40,7 @@ struct Block {
     double stiffness = 0;                       // k_t, N/m
     Tangent<T> anchor = Tangent<T>::Zero();     // m, stuck: where the spring is unloaded
     double slip = 0;                            // m, delta: slip since the block last stuck (slipping only)
-    Tangent<T> direction = Tangent<T>::Zero();  // s, a unit vector, slipping: the direction it broke in
+    Tangent<T> direction = Tangent<T>::Zero();  // s, a unit vector, slipping: the direction it slides in
     bool reached_stick_velocity = false;        // slipping: |v| has exceeded stick_velocity
     Tangent<T> x_start = Tangent<T>::Zero(), v_start = Tangent<T>::Zero();  // m, m/s: at the start of the step
     template <class Archive>
@@ -72,7 +72,7 @@ void add_settings(ParamSpec<P>& s) {
         .unit("m/s")
         .at_least(0);
     s.add("regularisation_velocity", &P::regularisation_velocity,
-          "v_r of the kinetic force -S tanh(|v|/v_r) v/|v|, a smooth sign(v).")
+          "v_r of the kinetic force -S tanh(v.s/v_r) s (s the direction the block slides in), a smooth sign(v).")
         .unit("m/s")
         .greater_than(0);
     s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
@@ -91,29 +91,34 @@ Settings settings_of(const P& p) {
 ///
 ///     detached  f_N = 0                         no force
 ///     stuck     F = -k_t (x - anchor)           held while |k_t (x - anchor)| <= mu_s f_N
-///     slipping  F = -S tanh(|v| / v_r) v/|v|    S = kinetic_strength(f_N, delta) >= 0, of the derived law
+///     slipping  F = -S tanh(v.s / v_r) s        S = kinetic_strength(f_N, delta) >= 0, of the derived law
 ///
 /// x, v, F and the anchor are vectors in the interface plane (the contact frame's tangential axes):
-/// one component, x, on a 2D body, where the slipping force is -S tanh(v / v_r); two, x and y, on a
-/// 3D body's interface, where the law is isotropic: the spring pulls towards the anchor, its
-/// threshold is on the force's magnitude, the kinetic force opposes the velocity (theory.md §0). delta is the slip
-/// since the block last stuck (the length of its path), v_r the regularisation velocity:
-/// tanh(|v|/v_r) stands for the step function so that the stage force is a smooth function of the
-/// stage velocity (the step jumps at v = 0 and an RK stage could straddle it).
+/// one component, x, on a 2D body, where s = +-1 and the slipping force is -S tanh(v / v_r); two, x
+/// and y, on a 3D body's interface, where the law is isotropic: the spring pulls towards the anchor,
+/// its threshold is on the force's magnitude, and s, the direction the block slides in, starts along
+/// the stretch it broke with and turns towards its slip over a slip of S/k_t, as its tangential
+/// spring loaded to the strength would turn it: s = (S s_n + k_t (x - x_n)) / |...|, s_n at the step
+/// start. Taking s from the velocity instead gives a lateral damping S/|v| that no explicit step
+/// resolves in slow slip (theory.md §0); this way a lateral motion meets the stiffness k_t.
+/// delta is the slip since the block last stuck (the length of its path), v_r the regularisation
+/// velocity: tanh(v.s/v_r) stands for the step function so that the stage force is a smooth function
+/// of the stage velocity (the step jumps at v = 0 and an RK stage could straddle it).
 ///
 /// Step structure (theory.md B.17): modes, anchors, k_t and delta are frozen within a step. A
 /// stage force is a function of the stage x, v and f_N only; a slipping block's stage slip is
 /// delta_n + |x - x_n|, x_n its position at the step start. The stage f_N is the base contact's
 /// value at the same stage (loaders precede the friction law in the pipeline). commit() then
 /// applies, per block and in this order, on the end-of-step x, v and f_N:
-///   1. delta += |x_end - x_n| for a slipping block;
+///   1. delta += |x_end - x_n| and s = (S s_n + k_t (x_end - x_n)) / |...| for a slipping block;
 ///   2. contact: f_N <= 0 detaches the block; a detached block with f_N > 0 sticks, unloaded;
 ///   3. breaking: a stuck block with |k_t (x - anchor)| > mu_s f_N (strict) slips, in the direction
 ///      s = (x - anchor)/|x - anchor| the spring resisted, with delta = 0;
 ///   4. re-stick: a block slipping throughout the step sticks when its velocity has reversed
-///      (s . v < 0), or has fallen below stick_velocity after exceeding it since it broke. The spring
+///      (s . v < 0), or its speed along s has fallen below stick_velocity after exceeding it since
+///      it broke. The spring
 ///      is re-anchored so that it carries the force the block felt at the end of the step,
-///      F = -S tanh(|v|/v_r) v/|v|: the friction force is continuous through the re-stick and the spring
+///      F = -S tanh(v.s/v_r) s: the friction force is continuous through the re-stick and the spring
 ///      starts at the kinetic value, below mu_s f_N (S <= mu_s f_N), so it does not re-break at once.
 ///      We prefer this to re-anchoring unloaded (a common reading of Trømborg 2011): an unloaded re-stick
 ///      drops the force from mu_d f_N to 0 at an arbitrary instant and kicks the block forwards. The

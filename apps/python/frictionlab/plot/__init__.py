@@ -26,6 +26,9 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
   fronts          rupture-front position against time since nucleation, one curve per event, with
                   the lattice's shear and Rayleigh wave speeds c_S and c_R for reference
   energy          the energy balance: input, stored, kinetic, dissipated, residual
+  interface       a 3D run's interface seen from below: its blocks' slip speed over x and y at the
+                  six lattice snapshots up to the fastest (a global slip), so a front shows as it
+                  crosses the interface in both directions
   lattice         the lattice around the first global slip (its VTU snapshot; the last snapshot in a
                   run without one), coloured by the nodes' x velocity, displacement magnified:
                   rendered by VTK offscreen (under a private Xvfb without an X display), so PNG only
@@ -69,12 +72,13 @@ from ._labels import run_label
 from ._tables import table
 from .campaign_figures import (ensemble_work_precision, plot_study, plot_sweep, single_seed_divergence, sweep_against,
                                sweep_loading_curves, sweep_precursor_lengths, work_precision)
+from .interface_figures import interface_maps
 from .lattice_rendering import lattice, plot_lattice, render_lattice
 from .run_figures import (energy, event_lengths, four_phase, fronts, loading_curve, loading_curves, plot_run,
                           plot_runs, precursor_lengths, spacetime)
 
 __all__ = ["loading_curve", "event_lengths", "precursor_lengths", "loading_curves", "four_phase", "spacetime",
-           "fronts", "energy", "lattice", "render_lattice", "sweep_precursor_lengths", "sweep_against",
+           "fronts", "energy", "interface_maps", "lattice", "render_lattice", "sweep_precursor_lengths", "sweep_against",
            "sweep_loading_curves", "work_precision", "ensemble_work_precision", "single_seed_divergence", "plot_run",
            "plot_runs", "plot_lattice", "plot_sweep", "plot_study", "main", "table", "time_origin", "run_label",
            "NothingToDraw"]

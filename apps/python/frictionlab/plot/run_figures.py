@@ -11,6 +11,7 @@ from ._clock import from_loading, overlaid_time_label, time_origin
 from ._figure import NothingToDraw, axes_of, no_data, seed_style, write
 from ._labels import no_events_note, run_label, run_labels, seed_of
 from ._tables import has_table, run_directory, scene_of, table
+from .interface_figures import interface_maps
 from .lattice_rendering import plot_lattice
 
 
@@ -84,7 +85,7 @@ def precursor_lengths(runs, ax=None):
     if plotted:
         ax.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     else:
-        no_data(ax, "no rupture events in " + ("these runs" if len(runs) > 1 else "this run"))
+        no_data(ax, no_events_note(runs[0]) if len(runs) == 1 else "no rupture events in these runs")
     ax.set_xlabel("$F_S/F_N$ at nucleation")
     ax.set_ylabel("$l/L$")
     ax.set_ylim(0, 1.05)
@@ -332,7 +333,8 @@ def energy(run, axes=None):
 
 def plot_run(run, out_dir=None):
     """Every figure the run's outputs allow, into out_dir (default: the run's plots/), as PNG and SVG
-    named loading_curve, four_phase_<block>, spacetime, fronts, energy, and lattice (PNG only)."""
+    named loading_curve, four_phase_<block>, spacetime, fronts, energy, interface (a 3D run's maps of
+    its interface) and lattice (PNG only)."""
     out_dir = out_dir or os.path.join(run_directory(run), "plots")
     write(out_dir, "loading_curve", loading_curve_with_events, run)
     for block in contact_blocks(run):
@@ -340,6 +342,7 @@ def plot_run(run, out_dir=None):
     write(out_dir, "spacetime", spacetime, run)
     write(out_dir, "fronts", fronts, run)
     write(out_dir, "energy", energy, run)
+    write(out_dir, "interface", interface_maps, run)
     plot_lattice(run, out_dir)
 
 

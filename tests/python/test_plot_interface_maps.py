@@ -1,0 +1,52 @@
+"""frictionlab.plot's maps of a 3D run's interface: one map of the blocks' slip speed over x and y per
+lattice snapshot, up to the fastest one, on one logarithmic scale; a 2D run's interface is a line
+and has none."""
+import os
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+import frictionlab
+from conftest import HERE, plot_command
+from frictionlab.plot import NothingToDraw, interface_maps
+from frictionlab.plot.interface_figures import STILL, interface_series
+
+SCENE_3D = os.path.join(HERE, "scenes", "tiny_slider_3d.yaml")
+
+
+@pytest.fixture(scope="module")
+def run_3d(tmp_path_factory):
+    out = tmp_path_factory.mktemp("slider_3d") / "out"
+    return frictionlab.Scene.load(SCENE_3D).run(output=str(out))
+
+
+def test_each_map_is_the_interface_over_x_and_y_up_to_the_fastest_snapshot(run_3d):
+    times, x, y, speeds = interface_series(run_3d)
+    bulk = run_3d.metadata["scene"]["bulk"]
+    assert len(x) == bulk["nx"] * bulk["ny"] and speeds.shape == (len(times), len(x))
+    assert np.unique(y).size == bulk["ny"] and np.ptp(y) == pytest.approx(float(bulk["width"]))
+    fastest = int(np.argmax(speeds.mean(axis=1)))
+    axes = interface_maps(run_3d)
+    assert len(axes) == min(6, fastest + 1)
+    for ax in axes:
+        (mesh,) = ax.collections
+        assert mesh.get_array().size == bulk["ny"] * bulk["nx"]  # a cell per block
+    # The last map is the fastest snapshot, its speeds as the series gives them (at least STILL).
+    np.testing.assert_allclose(np.sort(axes[-1].collections[0].get_array().ravel()),
+                               np.sort(np.maximum(speeds[fastest], STILL)))
+    assert axes[-1].get_xlabel() == "x (mm)" and "ms after loading started" in axes[-1].get_title(loc="left")
+    plt.close(axes[0].figure)
+
+
+def test_a_2d_run_has_no_interface_maps(csv_run):
+    with pytest.raises(NothingToDraw, match="a line"):
+        interface_maps(csv_run)
+
+
+def test_the_command_draws_them_for_a_3d_run(run_3d):
+    plot_command(run_3d.directory)
+    out = os.path.join(run_3d.directory, "plots")
+    for ext in ("png", "svg"):
+        assert os.path.exists(os.path.join(out, "interface." + ext)), os.listdir(out)
+    assert os.path.exists(os.path.join(out, "loading_curve.png"))
