@@ -1,5 +1,5 @@
 """Shared fixtures: the build's command line, the tiny scene, one run of it in each format and one
-stopped before its first rupture, a real small sweep and ensemble study, and the plotting package's
+stopped before its first rupture, a run of a tiny 3D slider, a real small sweep and ensemble study, and the plotting package's
 command line.
 
 ctest sets FRICTIONLAB_CLI (the frictionlab executable) and FRICTIONLAB_SOURCE_DIR, and puts
@@ -48,6 +48,13 @@ def quiet_run(tmp_path_factory):
     """The tiny scene loaded for half a millisecond: no rupture event yet."""
     out = tmp_path_factory.mktemp("quiet") / "out"
     return frictionlab.Scene.load(SCENE, set=["stages[1].duration=5.0e-4"]).run(output=str(out))
+
+
+@pytest.fixture(scope="session")
+def run_3d(tmp_path_factory):
+    """The tiny 3D slider (scenes/tiny_slider_3d.yaml): Coulomb friction on a 21 x 3 interface."""
+    out = tmp_path_factory.mktemp("slider_3d") / "out"
+    return frictionlab.Scene.load(os.path.join(HERE, "scenes", "tiny_slider_3d.yaml")).run(output=str(out))
 
 
 @pytest.fixture(scope="session")

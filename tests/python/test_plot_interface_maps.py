@@ -7,18 +7,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-import frictionlab
-from conftest import HERE, plot_command
+from conftest import plot_command
 from frictionlab.plot import NothingToDraw, interface_maps
 from frictionlab.plot.interface_figures import STILL, interface_series
-
-SCENE_3D = os.path.join(HERE, "scenes", "tiny_slider_3d.yaml")
-
-
-@pytest.fixture(scope="module")
-def run_3d(tmp_path_factory):
-    out = tmp_path_factory.mktemp("slider_3d") / "out"
-    return frictionlab.Scene.load(SCENE_3D).run(output=str(out))
 
 
 def test_each_map_is_the_interface_over_x_and_y_up_to_the_fastest_snapshot(run_3d):

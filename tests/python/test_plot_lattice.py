@@ -60,6 +60,19 @@ def test_the_lattice_is_drawn_onto_the_axes_it_is_given_a_cell_a_polygon(csv_run
     plt.close(fig)
 
 
+def test_a_3d_lattice_is_drawn_from_the_side_its_front_face(run_3d):
+    # Seen from above, its width would stand where the axes say z.
+    fig, ax = plt.subplots()
+    frictionlab.plot.lattice(run_3d, ax=ax, magnify=0)
+    (cells,) = ax.collections
+    bulk = run_3d.metadata["scene"]["bulk"]
+    corners = np.concatenate([path.vertices for path in cells.get_paths()])
+    assert corners[:, 0].max() - corners[:, 0].min() == pytest.approx(float(bulk["length"]) * 1e3)
+    assert corners[:, 1].max() - corners[:, 1].min() == pytest.approx(float(bulk["height"]) * 1e3)
+    assert "front face" in ax.get_title()
+    plt.close(fig)
+
+
 def test_the_command_reads_hdf5_runs_and_renders_the_lattice_with_vtk_without_a_display(hdf5_run):
     from PIL import Image  # python3-pil, which python3-matplotlib depends on
 

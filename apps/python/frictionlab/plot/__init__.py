@@ -30,7 +30,8 @@ For each run directory, writes into RUN_DIR/plots/ (PNG and SVG) whichever figur
                   six lattice snapshots up to the fastest (a global slip), so a front shows as it
                   crosses the interface in both directions
   lattice         the lattice around the first global slip (its VTU snapshot; the last snapshot in a
-                  run without one), coloured by the nodes' x velocity, displacement magnified:
+                  run without one; a 3D run's front face, from the side), coloured by the nodes'
+                  x velocity, displacement magnified:
                   rendered by VTK offscreen (under a private Xvfb without an X display), so PNG only
 and, over all the runs given (into -o, default the first run's plots/: plot_runs): precursor_lengths,
 l/L against F_S/F_N (Li2020 Figs. 7, 8), and with several runs loading_curves, F_S/F_N overlaid.

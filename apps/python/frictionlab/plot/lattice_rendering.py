@@ -75,7 +75,9 @@ def lattice_grid(run, magnify=200.0):
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(snapshot[0])
     reader.Update()
-    grid = reader.GetOutput()
+    snapshot_grid = reader.GetOutput()
+    grid = side_view(snapshot_grid)
+    face = "; the 3D lattice's front face (least y), seen from the side" if grid is not snapshot_grid else ""
     data = grid.GetPointData()
     if grid.GetNumberOfCells() == 0 or data.GetArray("displacement") is None or data.GetArray("velocity") is None:
         raise NothingToDraw(f"{snapshot[0]}: no cells, displacement or velocity")
@@ -92,7 +94,44 @@ def lattice_grid(run, magnify=200.0):
     shown = numpy_to_vtk(vx / size, deep=True)
     shown.SetName("x_velocity")
     data.AddArray(shown)
-    return grid, lattice_title(run, snapshot, mean[0], magnify), f"x velocity vₓ ({unit})"
+    return grid, lattice_title(run, snapshot, mean[0], magnify) + face, f"x velocity vₓ ({unit})"
+
+
+def side_view(grid):
+    """The lattice as the figure's plane holds it, (x, z) as a 2D run writes it: a 2D run's grid as it
+    is; a 3D run's front face (its nodes at the least y and the cells among them), with its points and
+    displacements turned from (x, y, z) into (x, z, 0). Seen from above, a 3D lattice would show its
+    width where the axes say z."""
+    import vtk
+    from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    if grid.GetNumberOfPoints() == 0 or np.ptp(points[:, 2]) == 0:
+        return grid
+    front = numpy_to_vtk((points[:, 1] <= points[:, 1].min()).astype(float), deep=True)
+    front.SetName("front_face")
+    grid.GetPointData().AddArray(front)
+    threshold = vtk.vtkThreshold()  # a cell stays when all its points are on the face
+    threshold.SetInputData(grid)
+    threshold.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, "front_face")
+    threshold.SetLowerThreshold(0.5)
+    threshold.SetUpperThreshold(1.5)
+    threshold.Update()
+    face = threshold.GetOutput()
+
+    def turned(xyz):
+        return numpy_to_vtk(np.column_stack([xyz[:, 0], xyz[:, 2], np.zeros(len(xyz))]), deep=True)
+
+    plane = vtk.vtkPoints()
+    plane.SetData(turned(vtk_to_numpy(face.GetPoints().GetData())))
+    face.SetPoints(plane)
+    data = face.GetPointData()
+    for name in ("displacement", "velocity"):
+        if data.GetArray(name) is not None:
+            array = turned(vtk_to_numpy(data.GetArray(name)))
+            array.SetName(name)
+            data.AddArray(array)  # replaces the array of that name
+    return face
 
 
 def render_lattice(run, path, magnify=200.0):
