@@ -31,7 +31,10 @@ namespace frictionlab {
 ///
 /// In any dimension: x is the sliding direction and heights are along z, the normal, of the body's
 /// contact frame; the nodes of the set at one height (a row across the width of a 3D body's face)
-/// share that height's part of the force equally, and x_h is the mean with the same weights.
+/// share that height's part of the force equally, and x_h is the mean with the same weights. With a
+/// patch across of width w_y > 0 (3D) they share it as a uniform traction over c +- w_y/2 across
+/// instead, c measured from the middle of the face's width: each node its span's part, as over the
+/// height, so a patch and a patch across together pull on a rectangle of the trailing face.
 ///
 /// Stored energy: the loading spring's own, E = F_S^2 / (2 K_S) (0 before the loader's first
 /// stage). Its far end is moved by the driver, so the energy the driver puts in is the work on the
@@ -55,6 +58,8 @@ public:
         double reversal_period = 0;  // T, s; 0: never reverses
         double height = 0.005;       // h, m
         double patch = 0;            // w, m; 0: a point
+        double patch_across = 0;     // w_y, m; 0: the whole width, each row's nodes sharing equally
+        double across_offset = 0;    // c, m: the patch across's centre from the middle of the width
         Attach attachment = Attach::node;
         std::string node_set = "trailing_edge";
     };

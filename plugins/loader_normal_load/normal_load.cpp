@@ -1,6 +1,7 @@
 #include "normal_load.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -27,6 +28,18 @@ ParamSpec<NormalLoad::Params> NormalLoad::spec() {
              {{"normalised", Formula::normalised}, {"paper_literal", Formula::paper_literal}},
              "normalised: sums to F_N (theory.md B.1); paper_literal: Eq. 3 as printed, which sums to "
              "F_N (1 + theta/N_x).");
+    s.add("theta_across", &Params::theta_across,
+          "Non-uniformity of the load across the width (3D): the profile across_shape gives each column's nodes "
+          "their share of its load, (1 - theta_across) to (1 + theta_across) before normalising; 0 shares a "
+          "column's load equally.")
+        .unit("1")
+        .at_least(-1)
+        .at_most(1);
+    s.choice("across_shape", &Params::across_shape,
+             {{"linear", AcrossShape::linear}, {"symmetric", AcrossShape::symmetric}},
+             "linear: the load grows across the width, the side at the highest y loaded (1 + theta_across); "
+             "symmetric: it grows from the middle of the width to both side faces (theta_across > 0: the middle "
+             "is loaded least, so slip starts there rather than at a side face).");
     s.add("ramp_time", &Params::ramp_time,
           "Time over which the load grows linearly from 0, from the start of the first stage the loader is "
           "active in; 0 applies it at once.")
@@ -40,10 +53,15 @@ ParamSpec<NormalLoad::Params> NormalLoad::spec() {
 }
 
 namespace {
-/// Which column along x each node of the set is in (0 the lowest x), and the number of columns: the
-/// distinct reference positions along the sliding direction, to 1e-9 of the body's spacing.
-std::vector<Index> columns_of(const Body& body, const NodeSet& nodes, Index& count) {
-    const auto x = body.reference_position.col(body.contact_frame.tangential.front());
+/// The distinct reference positions of a set's nodes along one axis (to 1e-9 of the body's spacing),
+/// and which of them, counted from the lowest, each node of the set is at.
+struct AxisPositions {
+    std::vector<Index> of_node;
+    Index count = 0;
+};
+
+AxisPositions positions_along(const Body& body, const NodeSet& nodes, int axis) {
+    const auto x = body.reference_position.col(axis);
     std::vector<double> positions;
     for (const Index node : nodes) positions.push_back(x(node));
     std::sort(positions.begin(), positions.end());
@@ -51,27 +69,57 @@ std::vector<Index> columns_of(const Body& body, const NodeSet& nodes, Index& cou
     positions.erase(
         std::unique(positions.begin(), positions.end(), [&](double a, double b) { return b - a <= tolerance; }),
         positions.end());
-    count = static_cast<Index>(positions.size());
-    std::vector<Index> column;
+    AxisPositions out;
+    out.count = static_cast<Index>(positions.size());
     for (const Index node : nodes)
-        column.push_back(std::lower_bound(positions.begin(), positions.end(), x(node) - tolerance) - positions.begin());
-    return column;
+        out.of_node.push_back(std::lower_bound(positions.begin(), positions.end(), x(node) - tolerance) -
+                              positions.begin());
+    return out;
 }
 
-/// W_i of each column over the column's nodes, for every node of the set.
+/// Each node's weight within its column before normalising: the profile across the width, 1 if uniform.
+Eigen::ArrayXd across_profile(const NormalLoad::Params& p, const Body& body, const NodeSet& nodes) {
+    Eigen::ArrayXd f = Eigen::ArrayXd::Ones(static_cast<Index>(nodes.size()));
+    if (p.theta_across == 0) return f;
+    const bool symmetric = p.across_shape == NormalLoad::AcrossShape::symmetric;
+    const Index needed = symmetric ? 3 : 2;
+    if (body.dimension() < 3)
+        throw InputError(
+            fmt::format("normal_load: theta_across = {:g} varies the load across the width, and a {}D "
+                        "body has none: remove theta_across",
+                        p.theta_across, body.dimension()));
+    const AxisPositions rows = positions_along(body, nodes, body.contact_frame.tangential.at(1));
+    if (rows.count < needed)
+        throw InputError(fmt::format(
+            "normal_load: theta_across = {:g} ({}) needs {} rows of nodes across the width of node set '{}' to vary "
+            "over, and it has {}: make the lattice's ny at least {}, or remove theta_across",
+            p.theta_across, symmetric ? "symmetric" : "linear", needed, p.node_set, rows.count, needed));
+    const double n = static_cast<double>(rows.count);
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const double r = (2.0 * static_cast<double>(rows.of_node[k] + 1) - n - 1) / (n - 1);  // -1 to 1 across
+        f(static_cast<Index>(k)) = 1 + p.theta_across * (symmetric ? 2 * std::abs(r) - 1 : r);
+    }
+    return f;
+}
+
+/// W_i of each column, shared by the column's nodes in proportion to the profile across, for every
+/// node of the set.
 Eigen::ArrayXd load_weights(const NormalLoad::Params& p, const Body& body, const NodeSet& nodes) {
-    Index n = 0;
-    const std::vector<Index> column = columns_of(body, nodes, n);
-    std::vector<double> sharing(static_cast<std::size_t>(n), 0.0);  // nodes per column
-    for (const Index c : column) sharing[static_cast<std::size_t>(c)] += 1;
+    const AxisPositions columns = positions_along(body, nodes, body.contact_frame.tangential.front());
+    const Index n = columns.count;
+    const Eigen::ArrayXd across = across_profile(p, body, nodes);
+    std::vector<double> sharing(static_cast<std::size_t>(n), 0.0);  // the column's sum of the profile
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+        sharing[static_cast<std::size_t>(columns.of_node[k])] += across(static_cast<Index>(k));
     Eigen::ArrayXd w(static_cast<Index>(nodes.size()));
     for (std::size_t k = 0; k < nodes.size(); ++k) {
-        const double i = column[k] + 1.0;
+        const Index c = columns.of_node[k];
+        const double i = c + 1.0;
         const double shape = p.formula == NormalLoad::Formula::paper_literal ? (2 * i - n) / n
                              : n > 1                                         ? (2 * i - n - 1) / (n - 1.0)
                                                                              : 0.0;
-        w(static_cast<Index>(k)) =
-            p.total_force / n * (1 + p.theta * shape) / sharing[static_cast<std::size_t>(column[k])];
+        w(static_cast<Index>(k)) = p.total_force / n * (1 + p.theta * shape) * across(static_cast<Index>(k)) /
+                                   sharing[static_cast<std::size_t>(c)];
     }
     return w;
 }
@@ -89,8 +137,11 @@ NormalLoad::NormalLoad(const Params& p, const Context& ctx)
 }
 
 std::string NormalLoad::describe() const {
-    return fmt::format("normal load {:g} N on '{}' (theta={:g}, {}{})", params_.total_force, params_.node_set,
+    return fmt::format("normal load {:g} N on '{}' (theta={:g}, {}{}{})", params_.total_force, params_.node_set,
                        params_.theta, spec().text(params_, "formula"),
+                       params_.theta_across != 0 ? fmt::format(", theta_across={:g} {}", params_.theta_across,
+                                                               spec().text(params_, "across_shape"))
+                                                 : "",
                        params_.ramp_time > 0 ? fmt::format(", ramp {:g} s", params_.ramp_time) : "");
 }
 

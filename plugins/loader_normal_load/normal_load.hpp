@@ -16,6 +16,12 @@ namespace frictionlab {
 /// the normal, x the sliding direction of the body's contact frame. The normalised form sums to F_N exactly and puts
 /// (1 - theta) F_N/N_x on the trailing edge and (1 + theta) F_N/N_x on the leading edge; the
 /// literal one sums to F_N (1 + theta/N_x). theta > 0 loads the trailing (driven) edge less.
+/// On a 3D body the load may vary across the width (y) too: a column's load is shared by its nodes
+/// in proportion to a profile across, normalised over the column so the column keeps W_i,
+///     linear:     1 + theta_across (2j - N_y - 1)/(N_y - 1)   (the side at the highest y loaded more)
+///     symmetric:  1 + theta_across (2 |2j - N_y - 1|/(N_y - 1) - 1)   (the side faces loaded more
+///                 than the middle for theta_across > 0: a slider that slips first mid-width)
+/// for the N_y rows j = 1..N_y across; theta_across = 0 shares a column's load equally.
 /// With ramp_time > 0 the load grows linearly from 0 over that time, starting at the first stage
 /// in which the loader is active (the gradual loading of theory.md B.18).
 ///
@@ -30,10 +36,13 @@ public:
         ar(ramp_start_, started_);
     }
     enum class Formula { normalised, paper_literal };
+    enum class AcrossShape { linear, symmetric };
     struct Params {
         double total_force = 400;  // F_N, N
         double theta = 0;
         Formula formula = Formula::normalised;
+        double theta_across = 0;
+        AcrossShape across_shape = AcrossShape::linear;
         double ramp_time = 0;  // s
         std::string node_set = "top";
     };
@@ -50,8 +59,8 @@ public:
     double foreseen_event_time(const StageView& s) const override;
     double load_ramp_end() const override;
 
-    /// The full (un-ramped) load on each node of the set, N, in set order: its column's W_i over the
-    /// column's nodes.
+    /// The full (un-ramped) load on each node of the set, N, in set order: its column's W_i shared
+    /// by the column's nodes (equally, or by the profile across).
     const Eigen::ArrayXd& weights() const { return weights_; }
     /// Fraction of the full load applied at time t: min(1, (t - t_start)/ramp_time).
     double ramp(double t) const;

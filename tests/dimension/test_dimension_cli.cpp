@@ -91,5 +91,48 @@ TEST(DimensionCli, DocShowsEachTypesDimensions) {
         << lattice.output;
 }
 
+TEST(DimensionCli, CheckRefusesAPatchOutsideItsFaceAndALatticeTooThinForItsLoaders) {
+    const fs::path dir = work_directory();
+    const fs::path file = dir / "wide.yaml";
+    // Two rows across: a symmetric profile needs three; a 4 mm patch across a 2.5 mm face.
+    std::ofstream(file) << "output: out\n"
+                           "bulk:\n"
+                           "  type: spring_lattice_3d\n"
+                           "  nx: 41\n"
+                           "  ny: 2\n"
+                           "  nz: 9\n"
+                           "  width: 0.0025\n"
+                           "loaders:\n"
+                           "  - type: rigid_base_contact\n"
+                           "  - type: normal_load\n"
+                           "    theta_across: 0.1\n"
+                           "    across_shape: symmetric\n"
+                           "  - type: driving_spring\n"
+                           "    patch_across: 0.004\n"
+                           "friction:\n"
+                           "  type: coulomb\n"
+                           "integrator:\n"
+                           "  type: rk4\n"
+                           "  dt: 1.0e-7\n"
+                           "stages:\n"
+                           "  - name: load\n"
+                           "    duration: 1.0e-4\n";
+    int code = 0;
+    const std::string output = check(file, dir, code);
+    EXPECT_EQ(code, 2) << output;
+    const std::string at = file.string();
+    EXPECT_NE(output.find(at + ":10:5: error: loaders[1]: normal_load: theta_across = 0.1 (symmetric) needs 3 rows "
+                               "of nodes across the width of node set 'top' to vary over, and it has 2: make the "
+                               "lattice's ny at least 3, or remove theta_across"),
+              std::string::npos)
+        << output;
+    EXPECT_NE(output.find(at + ":13:5: error: loaders[2]: driving_spring: patch_across = 0.004 m around across_offset "
+                               "= 0 m reaches outside the face of node set 'trailing_edge' (-0.00125 to 0.00125 m "
+                               "from the middle of its width); make it at most 0.0025 m"),
+              std::string::npos)
+        << output;
+    EXPECT_NE(output.find("2 errors in"), std::string::npos) << output;
+}
+
 }  // namespace
 }  // namespace frictionlab::testing
