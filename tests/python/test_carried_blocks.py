@@ -9,15 +9,18 @@ import pytest
 from frictionlab import carried_blocks, doc_blocks
 
 
-def sweep(folder, loading_curve="time,driving_force\n0,0\n1,2\n", wall=1.0):
-    """A sweep of two cases, each with a table and a run record."""
+def sweep(folder, loading_curve="time,driving_force\n0,0\n1,2\n", wall=1.0, scene_hash="0713c9b9a5ed576d",
+          load="{type: normal_load, total_force: 400}"):
+    """A sweep of two cases, each with a table, its record of the scene hash, and a run record."""
     for case in ("base_seed-1", "base_seed-2"):
         os.makedirs(os.path.join(folder, "cases", case, "logs"))
         with open(os.path.join(folder, "cases", case, "loading_curve.csv"), "w") as f:
             f.write(loading_curve)
+        with open(os.path.join(folder, "cases", case, "loading_curve.csv.meta.yaml"), "w") as f:
+            f.write(f"scene_hash: {scene_hash}\ncolumns: [time, driving_force]\n")
         with open(os.path.join(folder, "cases", case, "run.yaml"), "w") as f:
-            f.write(f"scene_hash: 0713c9b9a5ed576d\nseed: 1\nsteps: 10\nwall_seconds: {wall}\n"
-                    f"command_line: [{folder}]\n")
+            f.write(f"scene_hash: {scene_hash}\nseed: 1\nsteps: 10\nwall_seconds: {wall}\n"
+                    f"command_line: [{folder}]\nscene:\n  output: {folder}\n  loaders:\n    - {load}\n")
         with open(os.path.join(folder, "cases", case, "logs", "run.log"), "w") as f:
             f.write(f"took {wall} s\n")
     return folder
@@ -62,6 +65,31 @@ def test_a_block_whose_runs_wrote_anything_else_is_refused_and_left_as_it_was(tr
         carried_blocks.carry("li2020-claims", [readme], old, new)
     assert open(readme).read() == before
     assert carried_blocks.main(["li2020-claims", readme, "--old", old, "--new", new]) == 1
+
+
+def test_runs_whose_scene_gained_a_parameter_at_its_default_carry_the_block_if_the_rest_is_the_same(tree, tmp_path):
+    # A new parameter is resolved into every scene and changes its hash, in the records and the tables.
+    readme = str(tree / "README.md")
+    old = sweep(str(tmp_path / "old"))
+    new = sweep(str(tmp_path / "new"), scene_hash="9f0e8c2b5a4d3e21",
+                load="{type: normal_load, total_force: 400, theta_across: 0.0}")
+    assert carried_blocks.renamed_scene(os.path.join(old, "cases", "base_seed-1"),
+                                        os.path.join(new, "cases", "base_seed-1")) == ("0713c9b9a5ed576d",
+                                                                                       "9f0e8c2b5a4d3e21")
+    assert "checked=2/2" in carried_blocks.carry("li2020-claims", [readme], old, new)
+
+
+def test_runs_whose_scene_changed_a_value_do_not_carry_the_block(tree, tmp_path):
+    readme = str(tree / "README.md")
+    old = sweep(str(tmp_path / "old"))
+    new = sweep(str(tmp_path / "new"), scene_hash="9f0e8c2b5a4d3e21",
+                load="{type: normal_load, total_force: 500, theta_across: 0.0}")
+    with pytest.raises(ValueError, match="base_seed-1: loading_curve.csv.meta.yaml"):
+        carried_blocks.carry("li2020-claims", [readme], old, new)
+    # Nor does a hash that changed in the tables alone.
+    other = sweep(str(tmp_path / "other"), scene_hash="9f0e8c2b5a4d3e21")
+    with pytest.raises(ValueError, match="base_seed-1: run.yaml"):
+        carried_blocks.carry("li2020-claims", [readme], old, other)
 
 
 def test_a_block_whose_runs_left_an_output_unwritten_is_refused(tree, tmp_path):

@@ -23,7 +23,13 @@ OLD_SWEEP is the sweep the block was made from, NEW_SWEEP the same sweep (some o
 the same scene, overrides and seeds) run again with this tree. Every case of NEW_SWEEP must be in
 OLD_SWEEP and have written the same outputs: its tables, events and summaries byte for byte, its
 HDF5 files' datasets and attributes value for value (HDF5 keeps times of its own in the file), its
-run record's scene hash and counts; only the times a run took may differ. The block's text stays;
+run record's scene hash and counts; only the times a run took may differ.
+
+A parameter added to a plugin is recorded, at its default, in every scene it resolves, and changes
+the scene's hash. A case whose resolved scene (its run.yaml) is the first run's with keys added, and
+nothing else changed, may therefore have a new hash: its outputs must then be the first run's with
+the old hash read as the new one, byte for byte as above. That the new keys' defaults keep the old
+behaviour is what the outputs show; a changed value, or a key removed, is a different scene. The block's text stays;
 its stamp gets this tree's fingerprint and commit, keeps the scenes and seeds it was made from, and
 says what it was carried on: carried_from=<commit it was made at> checked=<cases compared>/<runs>.
 A reader sees that the numbers were made at the first commit and checked, not remade, at the
@@ -47,12 +53,49 @@ TIMES = ("wall_seconds", "cpu_seconds")
 NOT_OUTPUTS = (".log", ".png", ".svg", ".pdf")
 
 
-def _records_agree(a: str, b: str) -> bool:
+def _load(path: str) -> dict:
+    with open(path) as f:
+        return yaml.safe_load(f) or {}
+
+
+def _with_keys_of(new, old):
+    """`new` with only the keys `old` has, in every mapping nested alike: a scene as the first run's
+    code resolved it, when the new code added parameters."""
+    if isinstance(new, dict) and isinstance(old, dict):
+        return {k: _with_keys_of(v, old[k]) for k, v in new.items() if k in old}
+    if isinstance(new, list) and isinstance(old, list) and len(new) == len(old):
+        return [_with_keys_of(n, o) for n, o in zip(new, old)]
+    return new
+
+
+def renamed_scene(old_case: str, new_case: str):
+    """(old hash, new hash) when the case's scene, run again, is the first run's with keys added and
+    nothing else changed (its hash then changed); None when the hash is the same or the scene differs
+    otherwise."""
+    old_run, new_run = os.path.join(old_case, "run.yaml"), os.path.join(new_case, "run.yaml")
+    if not (os.path.exists(old_run) and os.path.exists(new_run)):
+        return None
+    old, new = _load(old_run), _load(new_run)
+    old_hash, new_hash = str(old.get("scene_hash", "")), str(new.get("scene_hash", ""))
+    if not old_hash or old_hash == new_hash or "scene" not in old or "scene" not in new:
+        return None
+    scene = lambda record: {k: v for k, v in record.items() if k != "output"}
+    as_before = _with_keys_of(scene(new["scene"]), scene(old["scene"]))
+    if as_before != scene(old["scene"]) or as_before == scene(new["scene"]):
+        return None  # a value changed or a key went; or nothing was added, and the hash has no reason to change
+    return old_hash, new_hash
+
+
+def _records_agree(a: str, b: str, renamed=None) -> bool:
     """Two run records (run.yaml, case.yaml) alike but for the times the runs took and the paths
-    they were given (the output directory, the command line, the plugins' files)."""
+    they were given (the output directory, the command line, the plugins' files); with `renamed`,
+    the scene's hash is the new one and the scene the first run's with keys added."""
     def essentials(path):
-        with open(path) as f:
-            record = yaml.safe_load(f) or {}
+        record = _load(path)
+        if renamed and path == b:
+            record["scene_hash"] = renamed[0]
+            if "scene" in record:
+                record["scene"] = _with_keys_of(record["scene"], _load(a).get("scene", {}))
         drop = set(TIMES) | {"command_line", "plugins", "output", "quiet_fraction_of_wall_time",
                              "creep_fraction_of_wall_time", "quiet_seconds_wall", "dynamic_seconds_wall",
                              "creep_seconds_wall", "plugin_files", "scene_path"}
@@ -66,7 +109,7 @@ def _records_agree(a: str, b: str) -> bool:
     return essentials(a) == essentials(b)
 
 
-def _hdf5_agree(a: str, b: str) -> bool:
+def _hdf5_agree(a: str, b: str, renamed=None) -> bool:
     import h5py
     import numpy as np
     with h5py.File(a) as fa, h5py.File(b) as fb:
@@ -77,7 +120,8 @@ def _hdf5_agree(a: str, b: str) -> bool:
             return False
         for name in [""] + names_a:
             oa, ob = (fa, fb) if name == "" else (fa[name], fb[name])
-            if {k: str(v) for k, v in oa.attrs.items()} != {k: str(v) for k, v in ob.attrs.items()}:
+            old_attrs = {k: _renaming(str(v), renamed) for k, v in oa.attrs.items()}
+            if old_attrs != {k: str(v) for k, v in ob.attrs.items()}:
                 return False
             if isinstance(oa, h5py.Dataset):
                 va, vb = oa[()], ob[()]
@@ -86,6 +130,60 @@ def _hdf5_agree(a: str, b: str) -> bool:
                 if not (np.array_equal(va, vb, equal_nan=True) if oa.dtype.kind == "f" else np.array_equal(va, vb)):
                     return False
     return True
+
+
+def _vtu_agree(a: str, b: str, renamed) -> bool:
+    """Two VTU files alike, read by VTK: points, cells and every array value for value, the old
+    scene hash read as the new one (the files compress their arrays, so bytes cannot be compared)."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+    def read(path):
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(path)
+        reader.Update()
+        return reader.GetOutput()
+
+    def values(array, rename):
+        if array.IsA("vtkStringArray"):
+            return [_renaming(array.GetValue(i), rename) for i in range(array.GetNumberOfValues())]
+        return vtk_to_numpy(array)
+
+    def same(u, v):
+        if isinstance(u, list) or isinstance(v, list):
+            return u == v
+        return u.dtype == v.dtype and u.shape == v.shape and np.array_equal(u, v, equal_nan=u.dtype.kind == "f")
+
+    ga, gb = read(a), read(b)
+    if (ga.GetNumberOfPoints(), ga.GetNumberOfCells()) != (gb.GetNumberOfPoints(), gb.GetNumberOfCells()):
+        return False
+    if ga.GetNumberOfPoints() and not same(values(ga.GetPoints().GetData(), None), values(gb.GetPoints().GetData(), None)):
+        return False
+    if ga.GetNumberOfCells() and not (same(values(ga.GetCells().GetConnectivityArray(), None),
+                                           values(gb.GetCells().GetConnectivityArray(), None))
+                                      and same(vtk_to_numpy(ga.GetCellTypesArray()), vtk_to_numpy(gb.GetCellTypesArray()))):
+        return False
+    for part in ("GetPointData", "GetCellData", "GetFieldData"):
+        da, db = getattr(ga, part)(), getattr(gb, part)()
+        names = lambda d: [d.GetAbstractArray(i).GetName() for i in range(d.GetNumberOfArrays())]
+        if names(da) != names(db):
+            return False
+        for i in range(da.GetNumberOfArrays()):
+            if not same(values(da.GetAbstractArray(i), renamed), values(db.GetAbstractArray(i), None)):
+                return False
+    return True
+
+
+def _renaming(text: str, renamed) -> str:
+    return text.replace(renamed[0], renamed[1]) if renamed else text
+
+
+def _same_text(old: str, new: str, renamed) -> bool:
+    if not renamed:
+        return filecmp.cmp(old, new, shallow=False)
+    with open(old, "rb") as a, open(new, "rb") as b:
+        return a.read().replace(renamed[0].encode(), renamed[1].encode()) == b.read()
 
 
 def _outputs(case: str) -> List[str]:
@@ -100,6 +198,7 @@ def differences(old_case: str, new_case: str) -> List[str]:
     paths below the case; empty if every output agrees."""
     new_outputs = _outputs(new_case)
     found = [f"{rel} (not written again)" for rel in sorted(set(_outputs(old_case)) - set(new_outputs))]
+    renamed = renamed_scene(old_case, new_case)
     for rel in new_outputs:
         name = os.path.basename(rel)
         new = os.path.join(new_case, rel)
@@ -107,12 +206,15 @@ def differences(old_case: str, new_case: str) -> List[str]:
         if not os.path.exists(old):
             found.append(f"{rel} (not in the first run)")
         elif name in ("run.yaml", "case.yaml"):
-            if not _records_agree(old, new):
+            if not _records_agree(old, new, renamed):
                 found.append(rel)
         elif name.endswith(".h5"):
-            if not _hdf5_agree(old, new):
+            if not _hdf5_agree(old, new, renamed):
                 found.append(rel)
-        elif not filecmp.cmp(old, new, shallow=False):
+        elif name.endswith(".vtu") and renamed:
+            if not _vtu_agree(old, new, renamed):
+                found.append(rel)
+        elif not _same_text(old, new, renamed):
             found.append(rel)
     return found
 
