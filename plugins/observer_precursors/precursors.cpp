@@ -1,6 +1,9 @@
 #include "precursors.hpp"
 
+#include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -48,6 +51,19 @@ const std::vector<std::string> event_columns{"event",
                                              "crossing_speed_error",
                                              "slip_extent"};
 const std::vector<std::string> front_columns{"event", "block", "x", "distance", "time", "delay", "resolution"};
+// On a 2D interface (a 3D body), the events' and fronts' columns across the width, after the others.
+const std::vector<std::string> event_columns_across{"nucleation_y", "min_ruptured_y", "max_ruptured_y", "extent_across",
+                                                    "area_fraction"};
+const std::map<std::string, std::string> units_across{{"nucleation_y", "m"},   {"min_ruptured_y", "m"},
+                                                      {"max_ruptured_y", "m"}, {"extent_across", "m"},
+                                                      {"area_fraction", "1"},  {"y", "m"}};
+
+/// The columns, and their types, of a table on a line or, `across`, with the columns across appended.
+std::pair<std::vector<std::string>, ColumnTypes> with_across(std::vector<std::string> columns, ColumnTypes types,
+                                                             const std::vector<std::string>& across) {
+    for (const auto& c : across) columns.push_back(c), types.units[c] = units_across.at(c);
+    return {std::move(columns), std::move(types)};
+}
 const std::vector<std::string> contact_columns{"time", "block", "x", "in_contact"};
 const ColumnTypes event_types{{"event", "nucleation_block", "ruptured_blocks", "out_of_contact"},
                               {"finished", "global"},
@@ -96,12 +112,15 @@ std::vector<OutputName> outputs(const Precursors::Params& p) {
 
 std::string number(double v) { return fmt::format("{:.4g}", v); }
 
+const std::vector<std::string> none, y_column{"y"};
+
 }  // namespace
 
 ParamSpec<Precursors::Params> Precursors::spec() {
     ParamSpec<Params> s(
-        "Rupture events along the interface (precursors and global slips; Li et al. 2020 Figs. 6-8, "
-        "theory.md §5a): start, F_S/F_N at nucleation, nucleation block, extent l/L, front, slip; each run's "
+        "Rupture events on the interface, a line of blocks or a 3D body's 2D grid (precursors and global slips; "
+        "Li et al. 2020 Figs. 6-8, theory.md §5a): start, F_S/F_N at nucleation, nucleation block, extent l/L "
+        "(and across, and its area, on a 2D interface), front, slip; each run's "
         "global slips checked against the drops of its loading curve and its precursors against its slip field; "
         "as CSV tables and a summary with the settings used and the verdict of the check.");
     s.choice("criterion", &Params::criterion,
@@ -188,7 +207,7 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     s.add("summary_file", &Params::summary_file, "YAML summary, rewritten atomically after each event.");
     add_table_format_param(s, &Params::format);
     add_outputs(s, outputs);
-    s.dimensions({2}, "ruptures along a line of blocks ordered by x");
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -272,11 +291,7 @@ void Precursors::begin(const RunView& view) {
     const auto n = static_cast<Index>(interface_.size());
     if (n == 0) throw RunError("precursors: the node set 'interface' is empty");
 
-    RuptureEventDetector::Interface geometry;
-    geometry.x.resize(n);
-    for (Index i = 0; i < n; ++i) geometry.x(i) = body.x0()(interface_[i]) - body.x0()(interface_[0]);
-    geometry.length = body.length > 0 ? body.length : geometry.x(n - 1);
-    geometry.spacing = body.spacing;
+    RuptureEventDetector::Interface geometry = interface_geometry(body, interface_);
     detector_.emplace(std::move(geometry),
                       RuptureEventDetector::Options{params_.quiet_time, params_.global_span,
                                                     min_slip_follows_law_ ? nan : params_.min_slip,
@@ -311,8 +326,11 @@ void Precursors::begin(const RunView& view) {
     contact_ = BlockMask::Constant(n, true);
     const TableFormat format = params_.format;
     const auto& out = view.output_directory;
-    events_ = open_table(out / params_.events_file, event_columns, event_types, view.info, format, view.resuming);
-    fronts_ = open_table(out / params_.fronts_file, front_columns, front_types, view.info, format, view.resuming);
+    const bool plane = detector_->interface().plane();
+    const auto [events, events_types] = with_across(event_columns, event_types, plane ? event_columns_across : none);
+    const auto [fronts, fronts_types] = with_across(front_columns, front_types, plane ? y_column : none);
+    events_ = open_table(out / params_.events_file, events, events_types, view.info, format, view.resuming);
+    fronts_ = open_table(out / params_.fronts_file, fronts, fronts_types, view.info, format, view.resuming);
     contact_table_ =
         open_table(out / params_.contact_file, contact_columns, contact_types, view.info, format, view.resuming);
     row_.reserve(event_columns.size());
@@ -435,14 +453,22 @@ void Precursors::write(const RuptureEvent& e) {
                  e.front_speed_error,
                  e.crossing_speed_error,
                  e.slip_extent});
+    if (detector_->interface().plane())
+        row_.insert(row_.end(), {e.nucleation_y, e.min_y, e.max_y, e.extent_across, e.area_fraction});
     events_->row(row_);
     const Eigen::ArrayXd& x = detector_->interface().x;
     for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
         if (!e.in_extent(i) && static_cast<int>(i) != e.nucleation) continue;
         const double t = e.first_rupture[i];
         const double xi = x(static_cast<Index>(i));
-        fronts_->row(
-            {double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start, t - e.sampled_before[i]});
+        const auto block = static_cast<Index>(i);
+        const RuptureEventDetector::Interface& at = detector_->interface();
+        if (at.plane())
+            fronts_->row({double(e.index), double(i), xi, std::hypot(xi - e.nucleation_x, at.y(block) - e.nucleation_y),
+                          t, t - e.t_start, t - e.sampled_before[i], at.y(block)});
+        else
+            fronts_->row({double(e.index), double(i), xi, std::abs(xi - e.nucleation_x), t, t - e.t_start,
+                          t - e.sampled_before[i]});
     }
 }
 

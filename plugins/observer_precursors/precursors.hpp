@@ -13,6 +13,7 @@
 #include "frictionlab/simulation/run.hpp"
 #include "contact_changes.hpp"
 #include "event_check.hpp"
+#include "interface_geometry.hpp"
 #include "loading_drops.hpp"
 #include "rupture_criterion.hpp"
 #include "rupture_event_detector.hpp"
@@ -40,6 +41,9 @@ namespace frictionlab {
 /// wave-crossing times), and leaves out an event none of whose blocks slipped min_slip (auto: a tenth
 /// of the law's characteristic slip, the slip a contact takes before it breaks). Every run then checks its events
 /// (event_check.hpp): its global slips against the drops of its loading curve, its precursors against the slip field.
+///
+/// On a 3D body the interface is a grid (interface_geometry.hpp): events are connected regions in x, y
+/// and time, measured across too (their tables then have the columns across, after the others).
 ///
 /// Outputs, in the run's output directory (columns in share/docs/glossary.md):
 ///

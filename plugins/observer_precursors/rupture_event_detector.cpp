@@ -1,6 +1,7 @@
 #include "rupture_event_detector.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 #include <utility>
 
@@ -13,6 +14,12 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 RuptureEventDetector::RuptureEventDetector(Interface interface, Options options)
     : interface_(std::move(interface)), options_(options) {
     const auto n = static_cast<std::size_t>(interface_.x.size());
+    if (interface_.neighbours.empty())
+        for (Index i = 0; i < static_cast<Index>(n); ++i) {
+            auto& around = interface_.neighbours.emplace_back();
+            for (Index j = std::max<Index>(0, i - 1); j <= std::min<Index>(static_cast<Index>(n) - 1, i + 1); ++j)
+                around.push_back(j);
+        }
     owner_.assign(n, -1);
     last_rupture_.assign(n, -std::numeric_limits<double>::infinity());
 }
@@ -80,7 +87,7 @@ void RuptureEventDetector::join(double t, double before, const InterfaceObservat
         if (!rupturing(i)) continue;
         // The events of this block and its neighbours that it still reaches.
         Open* into = nullptr;
-        for (Index j = std::max<Index>(0, i - 1); j <= std::min(n - 1, i + 1); ++j) {
+        for (const Index j : interface_.neighbours[static_cast<std::size_t>(i)]) {
             const auto k = static_cast<std::size_t>(j);
             if (owner_[k] < 0 || last_rupture_[k] < reach) continue;
             Open* e = find(owner_[k]);
@@ -241,7 +248,7 @@ bool RuptureEventDetector::within_nucleation_window(const RuptureEvent& e, doubl
 }
 
 bool RuptureEventDetector::may_follow(const RuptureEvent& held, const RuptureEvent& open) const {
-    return open.t_start > held.t_end && std::abs(held.nucleation - open.nucleation) <= 1 &&
+    return open.t_start > held.t_end && within_one_block(held.nucleation, open.nucleation) &&
            within_nucleation_window(held, open.driving_force);
 }
 
@@ -278,23 +285,28 @@ void RuptureEventDetector::count(const RuptureEvent& e) {
     }
 }
 
+bool RuptureEventDetector::within_one_block(Index a, Index b) const {
+    const auto& around = interface_.neighbours[static_cast<std::size_t>(a)];
+    return std::binary_search(around.begin(), around.end(), b);
+}
+
+double RuptureEventDetector::distance(Index a, Index b) const {
+    const double along = interface_.x(a) - interface_.x(b);
+    return interface_.plane() ? std::hypot(along, interface_.y(a) - interface_.y(b)) : std::abs(along);
+}
+
 template <class Flagged>
-double RuptureEventDetector::span(const Flagged& flagged) const {
-    const Eigen::ArrayXd& x = interface_.x;
+double RuptureEventDetector::span(const Flagged& flagged, const Eigen::ArrayXd& x, double extent) const {
     double first = std::numeric_limits<double>::infinity(), last = -first;
     for (Index i = 0; i < x.size(); ++i)
         if (flagged(static_cast<std::size_t>(i))) first = std::min(first, x(i)), last = std::max(last, x(i));
     if (first > last) return 0;
-    // Each block covers l_s around its position, clipped to the interface [0, L].
-    return std::min(interface_.length, last + 0.5 * interface_.spacing) -
-           std::max(0.0, first - 0.5 * interface_.spacing);
+    // Each block covers l_s around its position, clipped to the interface [0, extent].
+    return std::min(extent, last + 0.5 * interface_.spacing) - std::max(0.0, first - 0.5 * interface_.spacing);
 }
 
 void RuptureEventDetector::measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip) const {
     const Eigen::ArrayXd& x = interface_.x;
-    Index tip = 0;
-    for (Index i = 0; i < x.size(); ++i)
-        if (e.in_extent(static_cast<std::size_t>(i))) tip = i;
     // Without the law's scale, half the event's largest fast slip stands for "more than elastic".
     const double slipped =
         std::isnan(options_.characteristic_slip) ? 0.5 * fast_slip.maxCoeff() : options_.characteristic_slip;
@@ -303,9 +315,23 @@ void RuptureEventDetector::measure_slip(RuptureEvent& e, int id, const Eigen::Ar
         const auto k = static_cast<std::size_t>(j);
         return owner_[k] != id && last_rupture_[k] >= e.t_start;
     };
-    Index last = tip;
-    while (last + 1 < x.size() && fast_slip(last + 1) > slipped && !others(last + 1)) ++last;
-    e.slip_extent = std::min(interface_.length, x(last) + 0.5 * interface_.spacing);
+    // From the blocks of its extent through neighbours that slipped so and are not another's: the
+    // farthest along x (along a line, the blocks beyond its tip, one after another).
+    std::vector<char> reached(static_cast<std::size_t>(x.size()), 0);
+    std::vector<Index> todo;
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (Index i = 0; i < x.size(); ++i)
+        if (e.in_extent(static_cast<std::size_t>(i))) reached[static_cast<std::size_t>(i)] = 1, todo.push_back(i);
+    while (!todo.empty()) {
+        const Index i = todo.back();
+        todo.pop_back();
+        farthest = std::max(farthest, x(i));
+        for (const Index j : interface_.neighbours[static_cast<std::size_t>(i)]) {
+            auto& seen = reached[static_cast<std::size_t>(j)];
+            if (!seen && fast_slip(j) > slipped && !others(j)) seen = 1, todo.push_back(j);
+        }
+    }
+    e.slip_extent = std::min(interface_.length, farthest + 0.5 * interface_.spacing);
 }
 
 void RuptureEventDetector::measure(RuptureEvent& e) const {
@@ -322,14 +348,20 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
         e.ruptured_blocks += 1;
         e.min_x = std::min(e.min_x, xi);
         e.max_x = std::max(e.max_x, xi);
-        const double distance = std::abs(xi - x_nucleation);
+        const double distance = this->distance(static_cast<Index>(i), e.nucleation);
         if (distance > farthest || (distance == farthest && distance > 0 && t - e.t_start < delay))
             farthest = distance, delay = t - e.t_start;
     }
     const auto in_extent = [&](std::size_t i) { return e.in_extent(i); };
     const auto in_contact = [&](std::size_t i) { return e.in_contact[i] != 0; };
     e.out_of_contact = static_cast<int>(std::count(e.in_contact.begin(), e.in_contact.end(), 0));
-    e.global = e.ruptured_blocks > 0 && span(in_extent) >= options_.global_span * span(in_contact) * (1 - 1e-12);
+    const auto spans = [&](const Eigen::ArrayXd& positions, double extent) {
+        return span(in_extent, positions, extent) >=
+               options_.global_span * span(in_contact, positions, extent) * (1 - 1e-12);
+    };
+    e.global = e.ruptured_blocks > 0 && spans(x, interface_.length) &&
+               (!interface_.plane() || spans(interface_.y, interface_.width));
+    measure_across(e);
     e.extent = std::min(interface_.length, e.max_x + 0.5 * interface_.spacing);
     e.extent_over_length = e.extent / interface_.length;
     // A first rupture within (sampled_before, first_rupture], uniformly: its variance.
@@ -341,7 +373,7 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     e.front_speed_error = nan;
     if (!std::isnan(e.front_speed))
         for (std::size_t i = 0; i < e.first_rupture.size(); ++i)
-            if (e.in_extent(i) && std::abs(x(static_cast<Index>(i)) - x_nucleation) == farthest &&
+            if (e.in_extent(i) && distance(static_cast<Index>(i), e.nucleation) == farthest &&
                 e.first_rupture[i] - e.t_start == delay)
                 e.front_speed_error =
                     e.front_speed * std::sqrt(variance(i) + variance(static_cast<std::size_t>(e.nucleation))) / delay;
@@ -350,7 +382,7 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     // Least squares of time against distance over the far half: t = a + d / v.
     const auto far_half = [&](auto visit) {
         for (std::size_t i = 0; i < e.first_rupture.size(); ++i) {
-            const double d = std::abs(x(static_cast<Index>(i)) - x_nucleation), t = e.first_rupture[i];
+            const double d = distance(static_cast<Index>(i), e.nucleation), t = e.first_rupture[i];
             if (e.in_extent(i) && d >= 0.5 * farthest) visit(i, d, t);
         }
     };
@@ -372,6 +404,33 @@ void RuptureEventDetector::measure(RuptureEvent& e) const {
     const double time_variance = std::max(quantisation, n > 2 ? residuals / (n - 2) : 0.0);
     e.crossing_speed = 1 / slope;
     e.crossing_speed_error = std::sqrt(time_variance / sdd) / (slope * slope);
+}
+
+void RuptureEventDetector::measure_across(RuptureEvent& e) const {
+    if (!interface_.plane()) {
+        e.nucleation_y = e.min_y = e.max_y = e.extent_across = e.area_fraction = nan;
+        return;
+    }
+    const Eigen::ArrayXd &x = interface_.x, &y = interface_.y;
+    const double l = interface_.spacing;
+    // A block's cell: l_s around it each way, clipped to the interface.
+    const auto cell = [&](Index i) {
+        return (std::min(interface_.length, x(i) + l / 2) - std::max(0.0, x(i) - l / 2)) *
+               (std::min(interface_.width, y(i) + l / 2) - std::max(0.0, y(i) - l / 2));
+    };
+    e.nucleation_y = y(e.nucleation);
+    e.min_y = std::numeric_limits<double>::infinity();
+    e.max_y = -std::numeric_limits<double>::infinity();
+    double covered = 0, whole = 0;
+    for (Index i = 0; i < x.size(); ++i) {
+        whole += cell(i);
+        if (!e.in_extent(static_cast<std::size_t>(i))) continue;
+        covered += cell(i);
+        e.min_y = std::min(e.min_y, y(i));
+        e.max_y = std::max(e.max_y, y(i));
+    }
+    e.extent_across = span([&](std::size_t i) { return e.in_extent(i); }, y, interface_.width);
+    e.area_fraction = whole > 0 ? covered / whole : nan;
 }
 
 }  // namespace frictionlab

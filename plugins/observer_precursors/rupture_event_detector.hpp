@@ -36,9 +36,14 @@ struct RuptureEvent {
     // Measures, filled when the event is closed (RuptureEventDetector::measure), over the blocks that
     // ruptured in it and slipped min_slip by its end (in_extent).
     int ruptured_blocks = 0;
-    bool global = false;            // its extent's blocks span at least global_span of L (B.19a)
-    double nucleation_x = 0;        // m, from the trailing edge
-    double min_x = 0, max_x = 0;    // m, nearest and farthest block of its extent from the trailing edge
+    bool global = false;          // its extent's blocks span at least global_span of L (B.19a)
+    double nucleation_x = 0;      // m, from the trailing edge
+    double min_x = 0, max_x = 0;  // m, nearest and farthest block of its extent from the trailing edge
+    // On a 2D interface (a 3D body), across the width too, from the first side face; NaN on a line.
+    double nucleation_y = 0;        // m
+    double min_y = 0, max_y = 0;    // m, the extent's blocks nearest to and farthest from the first side face
+    double extent_across = 0;       // m, the span across of its extent's blocks, each covering l_s
+    double area_fraction = 0;       // its extent's blocks' cells over the interface's, each cell l_s^2 clipped
     double extent = 0;              // l = min(L, max_x + l_s/2), m
     double extent_over_length = 0;  // l/L
     double front_speed = 0;         // m/s, see RuptureEventDetector; NaN if unresolved
@@ -56,9 +61,9 @@ struct RuptureEvent {
     template <class Archive>
     void serialize(Archive& ar) {
         ar(index, finished, t_start, t_end, driving_force, normal_load, nucleation, first_rupture, sampled_before,
-           in_contact, max_slip, block_slip, ruptured_blocks, global, nucleation_x, min_x, max_x, extent,
-           extent_over_length, front_speed, crossing_speed, front_speed_error, crossing_speed_error, out_of_contact,
-           slip_extent, min_slip);
+           in_contact, max_slip, block_slip, ruptured_blocks, global, nucleation_x, min_x, max_x, nucleation_y, min_y,
+           max_y, extent_across, area_fraction, extent, extent_over_length, front_speed, crossing_speed,
+           front_speed_error, crossing_speed_error, out_of_contact, slip_extent, min_slip);
     }
 
     /// Whether block k is part of the event's extent: its contact broke in the event and it slipped
@@ -115,7 +120,8 @@ struct RuptureSummary {
 
 /// Groups rupturing blocks into events: an event is a connected region of the interface's
 /// space-time map of rupturing blocks. A block rupturing at t joins the event of a block within one
-/// of it (itself included) that ruptured at most `quiet_time` before, merging the events it touches;
+/// of it (itself included: its neighbours along a line; on a 2D interface, the eight around it, the
+/// diagonals included) that ruptured at most `quiet_time` before, merging the events it touches;
 /// with none, it starts an event. An event ends once none of its blocks has ruptured for
 /// `quiet_time`. So a block rupturing elsewhere (an aftershock at a precursor's arrest, a blip at the
 /// leading edge) neither bridges two events nor keeps one open, and two ruptures at the same place
@@ -137,7 +143,7 @@ struct RuptureSummary {
 ///   history ends); 0 holds nothing.
 /// - Global (B.19a): the blocks of its extent span, from the trailing edge of the first to the leading
 ///   edge of the last (each block covering l_s), at least `global_span` of the span of the blocks
-///   in contact during the event (L while every block is).
+///   in contact during the event (L while every block is); on a 2D interface, along x and across.
 /// - When a block ruptures: when its contact broke (the front's arrival, the experiments' drop of
 ///   contact area), if that was at most `lookback` (the slip rate's window) before it was seen
 ///   rupturing; else when it was. The event starts when its first block ruptured, its F_S and F_N
@@ -147,6 +153,9 @@ struct RuptureSummary {
 /// - Extent: l = min(L, x_max + l_s/2), x_max the farthest block of the event's extent from the
 ///   trailing edge. Block 1 need not rupture (B.19: for θ > 0 precursors nucleate at blocks 2-3).
 /// - Slip of a block: its displacement now minus at the observation before the event started.
+/// - Distances from the nucleation block: along the line; on a 2D interface, in the plane, so the
+///   speeds below are a front's radial speed from its nucleation, normal to a front that grows as a
+///   patch around it.
 /// - Front speed: the distance from the nucleation block to the farthest block of the extent,
 ///   divided by the delay between the event's start and that block's first rupture (of several at
 ///   the same distance, the earliest). A mean speed; NaN when only the nucleation block ruptured or
@@ -163,9 +172,16 @@ struct RuptureSummary {
 class RuptureEventDetector {
 public:
     struct Interface {
-        Eigen::ArrayXd x;    // block positions from the trailing edge, increasing, m
+        Eigen::ArrayXd x;    // block positions from the trailing edge (along a line: increasing), m
         double length = 0;   // L, m
         double spacing = 0;  // l_s, m
+        /// A 2D interface: positions across from the first side face, m, and its width B; empty on a line.
+        Eigen::ArrayXd y;
+        double width = 0;
+        /// Per block, the blocks within one of it, itself included, in increasing order; empty: a
+        /// line, where they are i - 1, i and i + 1 (the constructor fills them so).
+        std::vector<std::vector<Index>> neighbours;
+        bool plane() const { return y.size() > 0; }
     };
 
     using Options = RuptureEventOptions;
@@ -237,9 +253,16 @@ private:
     /// Ends the events that no block can join any more (all but none when `all`, at the end).
     void end_quiet(double t, bool all);
     void finish(Open& e, bool finished);
-    /// The span, each block covering l_s clipped to [0, L], from the first to the last block flagged.
+    /// The span along `positions`, each block covering l_s clipped to [0, extent], from the first to
+    /// the last block flagged.
     template <class Flagged>
-    double span(const Flagged& flagged) const;
+    double span(const Flagged& flagged, const Eigen::ArrayXd& positions, double extent) const;
+    /// Whether blocks a and b are within one block of each other (a itself included).
+    bool within_one_block(Index a, Index b) const;
+    /// From block a to block b: along the line, or in the plane of a 2D interface, m.
+    double distance(Index a, Index b) const;
+    /// On a 2D interface: the event's extent across and the share of the interface's area it covers.
+    void measure_across(RuptureEvent& e) const;
     /// What the event's fast slip says of its extent (RuptureEvent::slip_extent).
     void measure_slip(RuptureEvent& e, int id, const Eigen::ArrayXd& fast_slip) const;
     void measure(RuptureEvent& e) const;

@@ -38,7 +38,7 @@ fs::path write_scene(const fs::path& dir, int dimension, const std::string& fric
                            "  - name: load\n"
                            "    duration: 1.0e-4\n"
                            "observers:\n"
-                           "  - type: precursors\n"
+                           "  - type: contact_area\n"
                            "    every: 1.0e-5\n"
                            "  - type: energy\n"
                            "    every: 1.0e-5\n";
@@ -62,7 +62,7 @@ TEST(DimensionCli, CheckRefusesA3dSceneNamingTypesThatWorkIn2dOnly) {
         std::string::npos)
         << output;
     EXPECT_NE(output.find("), and the bulk model 'test_lattice' builds a 3D body"), std::string::npos) << output;
-    EXPECT_NE(output.find(at + ":21:11: error: observers[0].type: observer type 'precursors' works in 2D only ("),
+    EXPECT_NE(output.find(at + ":21:11: error: observers[0].type: observer type 'contact_area' works in 2D only ("),
               std::string::npos)
         << output;
     // Every type else works in 3D: the loaders, the integrator, the energy balance.
