@@ -125,6 +125,7 @@ SpringLattice3d::SpringLattice3d(const Params& p, const Context& ctx)
     eta_ = std::sqrt(p.damping_factor) * scales.damping_scale;
     build_node_sets();
     build_bonds();
+    build_volumes();
     ctx.log.debug("{}: {}x{}x{} lattice{}, a = {:.4g} m, m = {:.4g} kg, k = {:.4g} N/m, eta = {:.4g} N s/m", ctx.name,
                   nx_, ny_, nz_, across_ == Across::periodic ? " (periodic across)" : "", a, node_mass(), k_, eta_);
 }
@@ -151,6 +152,16 @@ void SpringLattice3d::build_bonds() {
     families_->for_each_bond(k_, [&](const CubicBond& b) {
         if (std::abs(b.image(1)) < body_.spacing / 2) body_.bonds.push_back({b.i, b.j});  // not across the period
     });
+}
+
+void SpringLattice3d::build_volumes() {
+    // The cubes between neighbouring nodes; none across a periodic width's seam, which would span it.
+    for (Index iz = 0; iz + 1 < nz_; ++iz)
+        for (Index iy = 0; iy + 1 < ny_; ++iy)
+            for (Index ix = 0; ix + 1 < nx_; ++ix)
+                body_.volumes.push_back({node(ix, iy, iz), node(ix + 1, iy, iz), node(ix + 1, iy + 1, iz),
+                                         node(ix, iy + 1, iz), node(ix, iy, iz + 1), node(ix + 1, iy, iz + 1),
+                                         node(ix + 1, iy + 1, iz + 1), node(ix, iy + 1, iz + 1)});
 }
 
 std::vector<std::unique_ptr<Effect>> SpringLattice3d::effects(const Context&) {

@@ -107,6 +107,8 @@ public:
 private:
     void build_node_sets();
     void build_bonds();
+    /// The lattice's cubes as Body::volumes, for pictures.
+    void build_volumes();
 
     Index nx_, ny_, nz_;
     Body body_;

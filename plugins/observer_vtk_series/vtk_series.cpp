@@ -28,6 +28,7 @@
 #include "frictionlab/base/errors.hpp"
 #include "frictionlab/model/junction_counts.hpp"
 #include "frictionlab/simulation/system.hpp"
+#include "vtk_arrays.hpp"
 
 namespace frictionlab {
 
@@ -46,19 +47,19 @@ std::string prefix_problem(const VtkSeries::Params& p) {
     return "";
 }
 
-// The folder of the .vtu files, then the collection.
+// The folder of the .vtu files, then the collection; a 3D body's interface series beside them.
 std::vector<OutputName> outputs(const VtkSeries::Params& p) {
-    return {{"prefix", p.prefix}, {"prefix", p.prefix + ".pvd"}};
+    return {{"prefix", p.prefix},
+            {"prefix", p.prefix + ".pvd"},
+            {"prefix", p.prefix + "_interface"},
+            {"prefix", p.prefix + "_interface.pvd"}};
 }
+
+using vtk_arrays::set_vectors;
 
 template <class Array>
 Array* add_array(vtkFieldData* data, const std::string& name, int components, vtkIdType tuples) {
-    auto a = vtkSmartPointer<Array>::New();
-    a->SetName(name.c_str());
-    a->SetNumberOfComponents(components);
-    a->SetNumberOfTuples(tuples);
-    data->AddArray(a);
-    return a;  // data holds a reference
+    return vtk_arrays::add<Array>(data, name, components, tuples);
 }
 
 void add_strings(vtkFieldData* data, const std::string& name, const std::vector<std::string>& values) {
@@ -72,16 +73,6 @@ template <class Array, class T>
 void set_single(Array* array, const T& value) {
     array->SetValue(0, value);
     array->Modified();
-}
-
-/// A 3-vector per node from the rows of an [nnode, ndim] array: a 3D body's axes as VTK's, a planar
-/// body's x-z plane as VTK's x-y plane (0 out of it).
-template <class Vectors>
-void set_vectors(vtkDoubleArray* out, const Vectors& v) {
-    double* p = out->GetPointer(0);
-    for (Index i = 0; i < v.rows(); ++i)
-        for (Index k = 0; k < 3; ++k) p[3 * i + k] = k < v.cols() ? v(i, k) : 0;
-    out->Modified();
 }
 
 template <std::size_t N>
@@ -118,12 +109,15 @@ ParamSpec<VtkSeries::Params> VtkSeries::spec() {
     return s;
 }
 
-VtkSeries::VtkSeries(const Params& p, const Context&) : params_(spec().checked(p)) {}
+VtkSeries::VtkSeries(const Params& p, const Context&)
+    : params_(spec().checked(p)),
+      lattice_(params_.prefix, params_.compress),
+      interface_collection_(params_.prefix + "_interface", params_.compress) {}
 
 VtkSeries::~VtkSeries() = default;
 
 std::filesystem::path VtkSeries::collection_file(const std::filesystem::path& output_directory) const {
-    return output_directory / (params_.prefix + ".pvd");
+    return lattice_.collection_file(output_directory);
 }
 
 void VtkSeries::begin(const RunView& view) {
@@ -145,15 +139,11 @@ void VtkSeries::begin(const RunView& view) {
     add_fields(view);
     add_pinned_fraction();
     add_field_data(view);
-
-    writer_ = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-    writer_->SetInputData(grid_);
-    writer_->SetDataModeToAppended();
-    writer_->EncodeAppendedDataOff();  // raw binary: smaller and faster than base64
-    if (params_.compress)
-        writer_->SetCompressorTypeToZLib();
-    else
-        writer_->SetCompressorTypeToNone();
+    if (params_.cells == Cells::quads && !body.volumes.empty()) {
+        interface_ = std::make_unique<InterfaceSurface>(body, view.quantities, grid_->GetFieldData(),
+                                                        params_.points == Points::deformed);
+        if (interface_->faces() == 0) interface_.reset();
+    }
 
     std::filesystem::create_directories(view.output_directory / params_.prefix);
     view.log.info("vtk_series: {} ({} points, {} cells, {} point arrays)",
@@ -163,6 +153,8 @@ void VtkSeries::begin(const RunView& view) {
 
 void VtkSeries::build_cells(const Body& body) {
     if (params_.cells == Cells::quads && !body.cells.empty()) return insert_cells(*grid_, VTK_QUAD, body.cells);
+    if (params_.cells == Cells::quads && !body.volumes.empty())
+        return insert_cells(*grid_, VTK_HEXAHEDRON, body.volumes);
     if (!body.bonds.empty()) return insert_cells(*grid_, VTK_LINE, body.bonds);
     // A lone block has neither: vertices keep it visible.
     std::vector<std::array<Index, 1>> vertices(static_cast<std::size_t>(body.size()));
@@ -332,11 +324,11 @@ void VtkSeries::update(const RunView& view) {
         std::from_chars(text.data(), text.data() + text.size(), exact);
         return exact;
     };
-    const double t = listed(collection_time(s.t, view.step), s.t);
+    const double t = listed(VtuCollection::collection_time(s.t, view.step), s.t);
     set_single(when_.time, t);
     set_single(when_.time_value, t);
     const double since = s.t - view.info.loading_start;
-    set_single(when_.time_since_loading, listed(collection_time(since, s.t, view.step), since));
+    set_single(when_.time_since_loading, listed(VtuCollection::collection_time(since, s.t, view.step), since));
     set_single(when_.step, view.step);
     set_single(when_.stage, view.stage.name);
     set_single(when_.stage_index, view.stage.index);
@@ -354,53 +346,22 @@ void VtkSeries::update_pinned_fraction() {
 }
 
 void VtkSeries::write_snapshot(const RunView& view) {
-    // VTK caches the ranges it computed for an array in the array's information, and the writer
-    // writes them: a snapshot would depend on what earlier ones computed (and a resumed run's on
-    // where it resumed). Each snapshot is written from its values alone.
-    for (vtkFieldData* data :
-         {static_cast<vtkFieldData*>(grid_->GetPointData()), static_cast<vtkFieldData*>(grid_->GetCellData())})
-        for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-            if (auto* array = data->GetAbstractArray(a); array && array->HasInformation())
-                array->GetInformation()->Clear();
-    if (points_->HasInformation()) points_->GetInformation()->Clear();
-    const std::string name = fmt::format("{0}/{0}_{1:06d}.vtu", params_.prefix, snapshots_);
-    replace_file_atomically(view.output_directory / name, [&](const std::filesystem::path& tmp) {
-        writer_->SetFileName(tmp.c_str());
-        return writer_->Write() == 1;
-    });
     const double t = view.state.t;
-    datasets_ +=
-        fmt::format("    <DataSet timestep=\"{}\" time_since_loading=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
-                    collection_time(t, view.step), collection_time(t - view.info.loading_start, t, view.step), name);
-    ++snapshots_;
-    write_collection(view.output_directory);
+    lattice_.write(*grid_, view.output_directory, t, view.step, view.info.loading_start);
+    if (interface_)
+        interface_collection_.write(interface_->update(view.state, view.body), view.output_directory, t, view.step,
+                                    view.info.loading_start);
 }
 
-std::string VtkSeries::collection_time(double value, double t, long long steps) {
-    if (steps <= 0 || t <= 0 || !std::isfinite(t) || !std::isfinite(value))
-        return fmt::format("{}", value);  // shortest exact text
-    // Decimals that resolve a hundredth of the mean step; the value rounded to them, trailing zeros cut.
-    const int decimals =
-        std::clamp(2 - static_cast<int>(std::floor(std::log10(t / static_cast<double>(steps)))), 0, 17);
-    std::string text = fmt::format("{:.{}f}", value, decimals);
-    if (text.find('.') != std::string::npos) {
-        text.erase(text.find_last_not_of('0') + 1);
-        if (text.back() == '.') text.pop_back();
-    }
-    return text == "-0" ? "0" : text;  // a time since loading that rounds to its start
-}
-
-void VtkSeries::write_collection(const std::filesystem::path& output_directory) const {
-    write_file_atomically(collection_file(output_directory),
-                          "<?xml version=\"1.0\"?>\n"
-                          "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                          "  <Collection>\n" +
-                              datasets_ + "  </Collection>\n</VTKFile>\n");
+void VtkSeries::resumed(const RunView& view) {
+    lattice_.write_collection(view.output_directory);
+    if (interface_collection_.snapshots() > 0) interface_collection_.write_collection(view.output_directory);
 }
 
 void VtkSeries::end(const RunView& view) {
     if (!grid_) return;  // the run failed before it began observing
-    view.log.info("vtk_series: {} snapshots in {}", snapshots_, collection_file(view.output_directory).string());
+    view.log.info("vtk_series: {} snapshots in {}", lattice_.snapshots(),
+                  collection_file(view.output_directory).string());
 }
 
 }  // namespace frictionlab

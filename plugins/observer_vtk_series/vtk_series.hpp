@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,13 +11,14 @@
 #include "frictionlab/model/kinds.hpp"
 #include "frictionlab/base/param_spec.hpp"
 #include "frictionlab/simulation/run.hpp"
+#include "interface_surface.hpp"
+#include "vtu_collection.hpp"
 
 class vtkDoubleArray;
 class vtkIntArray;
 class vtkStringArray;
 class vtkTypeInt64Array;
 class vtkUnstructuredGrid;
-class vtkXMLUnstructuredGridWriter;
 
 namespace frictionlab {
 
@@ -27,17 +29,22 @@ namespace frictionlab {
 ///     <prefix>/<prefix>_000000.vtu, ...     one file per snapshot, numbered from 0
 ///
 /// Every file is written under a temporary name and renamed, and the .pvd is rewritten after each
-/// snapshot, so a run that stops anywhere (failure, kill) leaves a series that opens. The .vtu files
-/// are binary appended, ZLib-compressed unless `compress: false`. A state that was just written
-/// (the run observes again at stage ends and at the end) is not written twice.
+/// snapshot, so a run that stops anywhere (failure, kill) leaves a series that opens (vtu_collection.hpp).
+/// The .vtu files are binary appended, ZLib-compressed unless `compress: false`. A state that was just
+/// written (the run observes again at stage ends and at the end) is not written twice.
+///
+/// A 3D body's interface is besides a series of its own, <prefix>_interface.pvd and its folder, the
+/// interface as a surface of quads with its blocks' displacement, velocity, slip_speed and the fields
+/// published over it (interface_surface.hpp): open it in ParaView, colour by slip_speed and step
+/// through the snapshots to watch a front cross the interface.
 ///
 /// Geometry: one point per node at its reference position (x0, z0), written once, with the
 /// `displacement` array for ParaView's Warp By Vector (scale 1: the deformed lattice; larger: the
 /// deformation magnified); `points: deformed` writes the deformed positions instead, and then a warp
 /// would count the displacement twice. A planar body's x-z plane is drawn as VTK's x-y, point =
 /// (x, z, 0), so ParaView's default 2D view shows the slider upright, base at the bottom; a 3D body's
-/// axes (x, y, z) are VTK's. Cells are the body's
-/// quads (VTK_QUAD) or, with `cells: bonds` or for a body without quads (a chain), its springs as
+/// axes (x, y, z) are VTK's. Cells are the body's cells, quads in 2D (VTK_QUAD), hexahedra in 3D
+/// (VTK_HEXAHEDRON), or, with `cells: bonds` or for a body without cells (a chain), its springs as
 /// lines (VTK_LINE). Connectivity is built once in begin(); a snapshot updates array values.
 ///
 /// Point data, SI units; vectors are laid out like the points, (x, z, 0) in 2D:
@@ -54,11 +61,11 @@ namespace frictionlab {
 /// junction: an interior block has no normal force rather than a zero one, and ParaView's colour
 /// ranges and filters skip NaN (it draws them in the NaN colour).
 ///
-/// Cell data, quads only: strain_xx, strain_zz, strain_xz (1), the small-strain tensor of each cell
-/// from its corners' displacements (bilinear quad, displacement gradient at its centre; exact for a
-/// cell deformed affinely), and stress_xx, stress_zz, stress_xz (Pa), the stress the bulk's springs
-/// carry through the cell (their virial over its volume, Effect::add_cell_virial; the dashpots'
-/// viscous part is not included): what one looks at around a rupture tip.
+/// Cell data, 2D quads only (not yet for hexahedra): strain_xx, strain_zz, strain_xz (1), the small-strain tensor of
+/// each cell from its corners' displacements (bilinear quad, displacement gradient at its centre; exact for a cell
+/// deformed affinely), and stress_xx, stress_zz, stress_xz (Pa), the stress the bulk's springs carry through the cell
+/// (their virial over its volume, Effect::add_cell_virial; the dashpots' viscous part is not included): what one looks
+/// at around a rupture tip.
 ///
 /// The .pvd lists each snapshot at its simulated time rounded to a hundredth of the mean step so far
 /// (0.408, not the 0.40800000000967207 a sum of two million steps gives); TIME and TimeValue in the
@@ -84,7 +91,7 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(datasets_, snapshots_, last_step_);
+        ar(lattice_, interface_collection_, last_step_);
     }
     enum class Cells { quads, bonds };
     enum class Points { reference, deformed };
@@ -107,14 +114,8 @@ public:
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
     /// The collection as it was at the checkpoint (the run cut it back to its length then).
-    void resumed(const RunView& view) override { write_collection(view.output_directory); }
+    void resumed(const RunView& view) override;
     void end(const RunView& view) override;
-
-    /// The time a snapshot is listed at in the .pvd: `t` after `steps` steps, rounded to a hundredth
-    /// of the mean step t/steps, as the shortest text (the sum of many steps drifts in the last digits).
-    static std::string collection_time(double t, long long steps) { return collection_time(t, t, steps); }
-    /// Another time of the snapshot (its time since loading started), rounded as `t` is.
-    static std::string collection_time(double value, double t, long long steps);
 
     /// The collection file, in the output directory.
     std::filesystem::path collection_file(const std::filesystem::path& output_directory) const;
@@ -150,11 +151,11 @@ private:
     void update(const RunView& view);
     void update_pinned_fraction();
     void write_snapshot(const RunView& view);
-    void write_collection(const std::filesystem::path& output_directory) const;
 
     Params params_;
+    VtuCollection lattice_, interface_collection_;
     vtkSmartPointer<vtkUnstructuredGrid> grid_;
-    vtkSmartPointer<vtkXMLUnstructuredGridWriter> writer_;
+    std::unique_ptr<InterfaceSurface> interface_;  // a 3D body's; null without volumes
     // Owned by grid_; kept to update in place.
     vtkDoubleArray *points_ = nullptr, *displacement_ = nullptr, *velocity_ = nullptr, *net_force_ = nullptr;
     std::vector<NodeField> fields_;
@@ -169,8 +170,6 @@ private:
     When when_;
     std::vector<std::pair<const double*, vtkDoubleArray*>> scalars_;
     std::vector<std::string> units_;
-    std::string datasets_;  // the collection's <DataSet> lines so far
-    int snapshots_ = 0;
     long long last_step_ = -1;
 };
 

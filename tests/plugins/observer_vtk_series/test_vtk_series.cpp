@@ -516,16 +516,16 @@ TEST(VtkSeriesCollection, TimesAreWrittenWithoutTheDriftOfASumOfSteps) {
     double t = 0;
     for (int i = 0; i < 2'040'000; ++i) t += 2e-7;
     ASSERT_NE(t, 0.408);
-    EXPECT_EQ(VtkSeries::collection_time(t, 2'040'000), "0.408");
-    EXPECT_EQ(VtkSeries::collection_time(0.25, 1), "0.25");
-    EXPECT_EQ(VtkSeries::collection_time(0, 0), "0");
+    EXPECT_EQ(VtuCollection::collection_time(t, 2'040'000), "0.408");
+    EXPECT_EQ(VtuCollection::collection_time(0.25, 1), "0.25");
+    EXPECT_EQ(VtuCollection::collection_time(0, 0), "0");
     // A time between two observations on the step grid keeps its digits: 3 steps of 1e-7 s.
-    EXPECT_EQ(VtkSeries::collection_time(3e-7, 3), "0.0000003");
-    EXPECT_EQ(VtkSeries::collection_time(1.23456789e-3, 1000), "0.00123457");  // a hundredth of 1.2e-6 s
+    EXPECT_EQ(VtuCollection::collection_time(3e-7, 3), "0.0000003");
+    EXPECT_EQ(VtuCollection::collection_time(1.23456789e-3, 1000), "0.00123457");  // a hundredth of 1.2e-6 s
     // Another clock of the same snapshot keeps the run clock's decimals, and its sign while settling.
-    EXPECT_EQ(VtkSeries::collection_time(t - 0.01, t, 2'040'000), "0.398");
-    EXPECT_EQ(VtkSeries::collection_time(0.002 - 0.01, 0.002, 10'000), "-0.008");
-    EXPECT_EQ(VtkSeries::collection_time(-1e-12, 0.01, 50'000), "0") << "loading's start itself";
+    EXPECT_EQ(VtuCollection::collection_time(t - 0.01, t, 2'040'000), "0.398");
+    EXPECT_EQ(VtuCollection::collection_time(0.002 - 0.01, 0.002, 10'000), "-0.008");
+    EXPECT_EQ(VtuCollection::collection_time(-1e-12, 0.01, 50'000), "0") << "loading's start itself";
 }
 
 TEST(VtkSeriesSpec, PrefixMustBeAPlainFileName) {
@@ -542,11 +542,14 @@ TEST(VtkSeriesSpec, PrefixMustBeAPlainFileName) {
               std::string::npos);
 }
 
-TEST(VtkSeriesSpec, DeclaresItsFolderAndCollection) {
+TEST(VtkSeriesSpec, DeclaresItsFoldersAndCollections) {
+    // The interface's series too, which a 3D body's run writes: no other output may take its names.
     const auto outputs = VtkSeries::spec().erased_outputs()({{"prefix", std::string("lattice")}});
-    ASSERT_EQ(outputs.size(), 2u);
+    ASSERT_EQ(outputs.size(), 4u);
     EXPECT_EQ(outputs[0].name, "lattice");
     EXPECT_EQ(outputs[1].name, "lattice.pvd");
+    EXPECT_EQ(outputs[2].name, "lattice_interface");
+    EXPECT_EQ(outputs[3].name, "lattice_interface.pvd");
     for (const auto& o : outputs) EXPECT_EQ(o.key, "prefix");
 }
 

@@ -62,6 +62,9 @@ struct Body {
     std::map<std::string, NodeSet, std::less<>> node_sets;
     std::vector<std::array<Index, 2>> bonds;  // springs, for pictures and bond-force output
     std::vector<std::array<Index, 4>> cells;  // 2D: quads, counter-clockwise; empty for a chain or a 3D body
+    /// 3D: hexahedra, their corners in VTK_HEXAHEDRON's order (the face at the lowest z counter-clockwise
+    /// seen from above, then the one above it); empty in 2D. For pictures, as `cells`.
+    std::vector<std::array<Index, 8>> volumes;
 
     Index size() const { return reference_position.rows(); }
     int dimension() const { return static_cast<int>(reference_position.cols()); }
