@@ -74,12 +74,13 @@ from ._tables import table
 from .campaign_figures import (ensemble_work_precision, plot_study, plot_sweep, single_seed_divergence, sweep_against,
                                sweep_loading_curves, sweep_precursor_lengths, work_precision)
 from .interface_figures import interface_maps
+from .patch_figures import patch_growth
 from .lattice_rendering import lattice, plot_lattice, render_lattice
 from .run_figures import (energy, event_lengths, four_phase, fronts, loading_curve, loading_curves, plot_run,
                           plot_runs, precursor_lengths, spacetime)
 
 __all__ = ["loading_curve", "event_lengths", "precursor_lengths", "loading_curves", "four_phase", "spacetime",
-           "fronts", "energy", "interface_maps", "lattice", "render_lattice", "sweep_precursor_lengths", "sweep_against",
+           "fronts", "energy", "interface_maps", "patch_growth", "lattice", "render_lattice", "sweep_precursor_lengths", "sweep_against",
            "sweep_loading_curves", "work_precision", "ensemble_work_precision", "single_seed_divergence", "plot_run",
            "plot_runs", "plot_lattice", "plot_sweep", "plot_study", "main", "table", "time_origin", "run_label",
            "NothingToDraw"]

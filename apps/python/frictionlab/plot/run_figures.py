@@ -12,6 +12,7 @@ from ._figure import NothingToDraw, axes_of, no_data, seed_style, write
 from ._labels import no_events_note, run_label, run_labels, seed_of
 from ._tables import has_table, run_directory, scene_of, table
 from .interface_figures import interface_maps
+from .patch_figures import patch_growth
 from .lattice_rendering import plot_lattice
 
 
@@ -334,7 +335,7 @@ def energy(run, axes=None):
 def plot_run(run, out_dir=None):
     """Every figure the run's outputs allow, into out_dir (default: the run's plots/), as PNG and SVG
     named loading_curve, four_phase_<block>, spacetime, fronts, energy, interface (a 3D run's maps of
-    its interface) and lattice (PNG only)."""
+    its interface), patches (a 3D run's events' growth on its interface) and lattice (PNG only)."""
     out_dir = out_dir or os.path.join(run_directory(run), "plots")
     write(out_dir, "loading_curve", loading_curve_with_events, run)
     for block in contact_blocks(run):
@@ -343,6 +344,7 @@ def plot_run(run, out_dir=None):
     write(out_dir, "fronts", fronts, run)
     write(out_dir, "energy", energy, run)
     write(out_dir, "interface", interface_maps, run)
+    write(out_dir, "patches", patch_growth, run)
     plot_lattice(run, out_dir)
 
 
