@@ -14,7 +14,7 @@ namespace frictionlab {
 class Registry;
 
 /// Bump whenever a core header changes in a way that breaks plugins built against the old one.
-inline constexpr std::uint32_t framework_abi_version = 12;
+inline constexpr std::uint32_t framework_abi_version = 13;
 inline constexpr std::uint32_t plugin_header_version = 2;
 
 struct AbiFingerprint {
