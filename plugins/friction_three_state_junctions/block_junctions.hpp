@@ -52,6 +52,7 @@ struct DislocatedForce {
 
 class BlockJunctions {
 public:
+    using Vector = double;  // a position or force along the line (PlanarJunctions: in the plane)
     struct Constants {
         double p = 0;    // normal load of one junction, N
         double k_s = 0;  // tangential stiffness of one junction, N/m

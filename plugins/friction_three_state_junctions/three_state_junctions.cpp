@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 #include <utility>
 
 #include <fmt/format.h>
@@ -33,6 +34,23 @@ constexpr std::uint64_t removal_slot = ~std::uint64_t{0};
 // Shortest time over which the rate of P_b is taken (it foresees count changes): Newton's tolerance
 // on positions leaves ~1e-6 N of round-off in P_b, so 1 us gives ~1 N/s of noise at worst.
 constexpr double rate_interval = 1e-6;
+
+// A junction force on a line (a number) or in a plane (a vector): what the commit's template asks of it.
+double magnitude(double f) { return std::abs(f); }
+double magnitude(const Eigen::Vector2d& f) { return f.norm(); }
+/// The direction of f: +-1 on a line, f/|f| in a plane.
+double unit(double f) { return f > 0 ? 1.0 : -1.0; }
+Eigen::Vector2d unit(const Eigen::Vector2d& f) { return f / f.norm(); }
+/// The component of g along the direction s.
+double along(double s, double g) { return s * g; }
+double along(const Eigen::Vector2d& s, const Eigen::Vector2d& g) { return s.dot(g); }
+template <class V>
+V zero() {
+    if constexpr (std::is_same_v<V, double>)
+        return 0.0;
+    else
+        return V::Zero();
+}
 
 std::string angle_rule(const Params& p) {
     const double m = p.mu_d * std::tan(p.initial_angle);
@@ -100,8 +118,7 @@ ParamSpec<Params> ThreeStateJunctions::spec() {
              "'slip_and_repin' slips at once and re-pins carrying s mu_d p, as a junction that slid comes to rest; "
              "'hold' keeps it pinned at any force (the run is refused if one is still above mu_s p when loading "
              "starts).");
-    junction_settings::add_interface(
-        s, "junction forces along x: the breaking test and the clamps order them on one axis");
+    junction_settings::add_interface(s, {2, 3});
     s.rule("initial_angle", angle_rule);
     return s;
 }
@@ -147,10 +164,21 @@ ThreeStateJunctions::ThreeStateJunctions(const Params& params, const Context& ct
     rupture_scales::publish_characteristic_slip(q, params.mu_s * p_ / k_s_);
     rupture_scales::publish_kinetic_coefficient(q, params.mu_d);
     const BlockJunctions::Constants c{p_, k_s_, params.mu_d};
-    blocks_.reserve(nodes_.size());
-    for (Index node : nodes_) {
-        blocks_.emplace_back(c, initial_capacity, ctx.body->x0()[node]);
-        x_start_.push_back(ctx.body->x0()[node]);
+    axes_ = ctx.body->contact_frame.tangential;
+    if (axes_.size() == 1) {
+        Line line;
+        line.reserve(nodes_.size());
+        for (Index node : nodes_) {
+            line.emplace_back(c, initial_capacity, ctx.body->x0()[node]);
+            x_start_.push_back(ctx.body->x0()[node]);
+        }
+        blocks_ = std::move(line);
+    } else {
+        Plane plane(nodes_.size(), PlanarJunctions(c, initial_capacity));
+        for (Index node : nodes_)
+            plane_start_.emplace_back(ctx.body->reference_position(node, axes_[0]),
+                                      ctx.body->reference_position(node, axes_[1]));
+        blocks_ = std::move(plane);
     }
     removal_draws_.assign(nodes_.size(), 0);
     normal_rate_ = rate_base_ = normal_ = Eigen::VectorXd::Zero(static_cast<Index>(nodes_.size()));
@@ -161,41 +189,101 @@ std::string ThreeStateJunctions::describe() const {
     return fmt::format("three-state junctions (p={:.3g} mN, k_s={:.3g} N/m)", p_ * 1e3, k_s_);
 }
 
+template <class B>
+typename B::Vector ThreeStateJunctions::position(const StageView& s, Index i) const {
+    const Index node = nodes_[static_cast<std::size_t>(i)];
+    if constexpr (std::is_same_v<B, BlockJunctions>)
+        return s.x[node];
+    else
+        return {s.position(node, axes_[0]), s.position(node, axes_[1])};
+}
+
+template <class B>
+std::vector<typename B::Vector>& ThreeStateJunctions::starts() {
+    if constexpr (std::is_same_v<B, BlockJunctions>)
+        return x_start_;
+    else
+        return plane_start_;
+}
+
+template <class B>
+const std::vector<typename B::Vector>& ThreeStateJunctions::starts() const {
+    return const_cast<ThreeStateJunctions*>(this)->starts<B>();
+}
+
 void ThreeStateJunctions::add_forces(const StageView& s, ForceView& f) {
+    if (auto* line = std::get_if<Line>(&blocks_)) {
+        for (std::size_t i = 0; i < nodes_.size(); ++i) {
+            const Index node = nodes_[i];
+            const double force = -(*line)[i].force(s.x[node], x_start_[i]);
+            f.fx[node] += force;
+            (*friction_force_)[static_cast<Index>(i)] = force;
+        }
+        return;
+    }
+    const Plane& plane = std::get<Plane>(blocks_);
+    auto along_x = f.forces_along(axes_[0]);
+    auto along_y = f.forces_along(axes_[1]);
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         const Index node = nodes_[i];
-        const double force = -blocks_[i].force(s.x[node], x_start_[i]);
-        f.fx[node] += force;
-        (*friction_force_)[static_cast<Index>(i)] = force;
+        const Eigen::Vector2d force =
+            -plane[i].force(position<PlanarJunctions>(s, static_cast<Index>(i)), plane_start_[i]);
+        along_x(node) += force.x();
+        along_y(node) += force.y();
+        (*friction_force_)[static_cast<Index>(i)] = force.x();
     }
 }
 
 void ThreeStateJunctions::publish_counts(Index i) {
-    const BlockJunctions& b = blocks_[static_cast<std::size_t>(i)];
-    (*counts_.pinned)[i] = static_cast<double>(b.pinned());
-    (*counts_.sliding)[i] = static_cast<double>(b.sliding());
-    (*counts_.dislocated)[i] = static_cast<double>(b.dislocated());
+    std::visit(
+        [&](const auto& blocks) {
+            const auto& b = blocks[static_cast<std::size_t>(i)];
+            (*counts_.pinned)[i] = static_cast<double>(b.pinned());
+            (*counts_.sliding)[i] = static_cast<double>(b.sliding());
+            (*counts_.dislocated)[i] = static_cast<double>(b.dislocated());
+        },
+        blocks_);
 }
 
 double ThreeStateJunctions::potential_energy(const StageView& s) const {
     // Junction by junction (the aggregates give sum f_j, not sum f_j^2): observer cadence only.
     double force_squared = 0;
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        const BlockJunctions& b = blocks_[i];
-        const double x = s.x[nodes_[i]];
-        for (Index j = 0; j < b.size(); ++j) {
-            const double f = b.junction_force(j, x, x_start_[i]);
-            force_squared += f * f;
-        }
-    }
+    std::visit(
+        [&](const auto& blocks) {
+            using B = typename std::decay_t<decltype(blocks)>::value_type;
+            for (std::size_t i = 0; i < nodes_.size(); ++i) {
+                const B& b = blocks[i];
+                const auto x = position<B>(s, static_cast<Index>(i));
+                for (Index j = 0; j < b.size(); ++j) {
+                    const auto f = b.junction_force(j, x, starts<B>()[i]);
+                    force_squared += magnitude(f) * magnitude(f);
+                }
+            }
+        },
+        blocks_);
     return force_squared / (2 * k_s_);
 }
 
-bool ThreeStateJunctions::quasi_static_regime(const StageView&) const { return true; }
+bool ThreeStateJunctions::quasi_static_regime(const StageView&) const {
+    const Plane* plane = std::get_if<Plane>(&blocks_);
+    return !plane ||
+           std::all_of(plane->begin(), plane->end(), [](const PlanarJunctions& b) { return b.pinned() == b.size(); });
+}
 
 void ThreeStateJunctions::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
+    if (const Plane* plane = std::get_if<Plane>(&blocks_)) {
+        // In the regime every junction is pinned: k_s each, along both axes.
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+            if (const Index pinned = (*plane)[i].pinned(); pinned > 0)
+                for (const int axis : axes_) {
+                    const Index q = s.position_index(nodes_[i], axis);
+                    stiffness.emplace_back(q, q, static_cast<double>(pinned) * k_s_);
+                }
+        return;
+    }
+    const Line& line = std::get<Line>(blocks_);
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        const BlockJunctions& b = blocks_[i];
+        const BlockJunctions& b = line[i];
         const Index elastic = b.pinned() + b.elastic_active(s.x[nodes_[i]] - x_start_[i]);
         const Index q = s.position_index(nodes_[i], 0);
         if (elastic > 0) stiffness.emplace_back(q, q, static_cast<double>(elastic) * k_s_);
@@ -207,10 +295,17 @@ double ThreeStateJunctions::foreseen_event_time(const StageView& s) const {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
         counts = std::min(counts, time_to_count_change(static_cast<Index>(i)));
         if (!events_) continue;
-        const BlockJunctions& b = blocks_[i];
-        const double x = s.x[nodes_[i]], v = s.vx[nodes_[i]];
-        next = std::min(next, b.time_to_threshold(x, v, threshold_));
-        if (b.pinned() < b.size()) next = std::min(next, b.time_to_separation(x - x_start_[i], v));
+        const Index node = nodes_[i];
+        if (const Line* line = std::get_if<Line>(&blocks_)) {
+            const BlockJunctions& b = (*line)[i];
+            const double x = s.x[node], v = s.vx[node];
+            next = std::min(next, b.time_to_threshold(x, v, threshold_));
+            if (b.pinned() < b.size()) next = std::min(next, b.time_to_separation(x - x_start_[i], v));
+        } else {
+            const Eigen::Vector2d v(s.velocity(node, axes_[0]), s.velocity(node, axes_[1]));
+            next = std::min(next, std::get<Plane>(blocks_)[i].time_to_threshold(
+                                      position<PlanarJunctions>(s, static_cast<Index>(i)), v, threshold_));
+        }
     }
     return std::min(normal_time_ + counts, s.t + next);
 }
@@ -222,23 +317,33 @@ void ThreeStateJunctions::begin_stage(const StageInfo& stage, const StageView& s
 }
 
 void ThreeStateJunctions::begin_step(const StageView& s) {
-    for (std::size_t i = 0; i < nodes_.size(); ++i) x_start_[i] = s.x[nodes_[i]];
+    std::visit(
+        [&](auto& blocks) {
+            using B = typename std::decay_t<decltype(blocks)>::value_type;
+            for (std::size_t i = 0; i < nodes_.size(); ++i) starts<B>()[i] = position<B>(s, static_cast<Index>(i));
+        },
+        blocks_);
 }
 
 void ThreeStateJunctions::commit(const StageView& end, double /*dt*/) {
-    next_event_ = infinity;
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        commit_block(static_cast<Index>(i), end.x[nodes_[i]], end.t);
-        next_event_ = std::min(next_event_, blocks_[i].next_deadline());
-    }
+    std::visit([&](auto& blocks) { commit_blocks(blocks, end); }, blocks_);
     follow_normal_rate(end.t);
 }
 
-void ThreeStateJunctions::commit_block(Index i, double x, double t) {
-    const auto k = static_cast<std::size_t>(i);
-    BlockJunctions& b = blocks_[k];
-    b.advance(x - x_start_[k]);
-    x_start_[k] = x;
+template <class B>
+void ThreeStateJunctions::commit_blocks(std::vector<B>& blocks, const StageView& end) {
+    next_event_ = infinity;
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+        commit_block(blocks[i], static_cast<Index>(i), position<B>(end, static_cast<Index>(i)), end.t);
+        next_event_ = std::min(next_event_, blocks[i].next_deadline());
+    }
+}
+
+template <class B>
+void ThreeStateJunctions::commit_block(B& b, Index i, const typename B::Vector& x, double t) {
+    auto& x_start = starts<B>()[static_cast<std::size_t>(i)];
+    b.advance(x - x_start);
+    x_start = x;
     if (events_)
         break_pinned(b, i, x, t);
     else if (settle_overload_ == SettleOverload::slip_and_repin)
@@ -250,36 +355,39 @@ void ThreeStateJunctions::commit_block(Index i, double x, double t) {
     publish_counts(i);
 }
 
-void ThreeStateJunctions::break_pinned(BlockJunctions& b, Index i, double x, double t) const {
+template <class B>
+void ThreeStateJunctions::break_pinned(B& b, Index i, const typename B::Vector& x, double t) const {
     if (!b.pinned_beyond(x, threshold_)) return;
     // Downwards, so the pinned junction swapped into a vacated index has been judged already.
     for (Index j = b.pinned() - 1; j >= 0; --j) {
-        const double f = b.junction_force(j, x, x);
-        if (std::abs(f) <= threshold_) continue;
-        Junction& r = b.record(j);
+        const auto f = b.junction_force(j, x, x);
+        if (magnitude(f) <= threshold_) continue;
+        auto& r = b.record(j);
         const double lifetime = sampler_.sliding(static_cast<std::uint64_t>(i), r.id, r.sliding_draws);
-        b.slide(j, f > 0 ? 1.0 : -1.0, t, lifetime);
+        b.slide(j, unit(f), t, lifetime);
     }
 }
 
-void ThreeStateJunctions::repin_overloaded(BlockJunctions& b, double x) const {
+template <class B>
+void ThreeStateJunctions::repin_overloaded(B& b, const typename B::Vector& x) const {
     if (!b.pinned_beyond(x, threshold_)) return;
     // B.18a: the slip of C1 -> C3 -> C5 collapsed into the step, without its clocks, so no junction
     // is left sliding or dislocated when loading starts. The pinned set keeps its indices.
     for (Index j = 0; j < b.pinned(); ++j) {
-        const double f = b.junction_force(j, x, x);
-        if (std::abs(f) > threshold_) b.reset_pinned(j, f > 0 ? mu_d_p_ : -mu_d_p_, x);
+        const auto f = b.junction_force(j, x, x);
+        if (magnitude(f) > threshold_) b.reset_pinned(j, mu_d_p_ * unit(f), x);
     }
 }
 
-void ThreeStateJunctions::update_active(BlockJunctions& b, Index i, double x, double t) const {
+template <class B>
+void ThreeStateJunctions::update_active(B& b, Index i, const typename B::Vector& x, double t) const {
     // Upwards, so the active junction swapped into a vacated index has been judged already. Each
     // junction either changes state or has its angle updated, so one pass keeps B.17's order.
     for (Index j = b.pinned(); j < b.size(); ++j) {
         if (b.state(j) == JunctionState::sliding) {
             if (events_ && t >= b.deadline(j)) end_sliding(b, i, j, x, t);
-        } else if (events_ && b.junction(j).sign * b.tangential(j) <= 0) {
-            b.pin(j, 0, x);  // C6: the contact separates and a new, unloaded one forms
+        } else if (events_ && along(b.junction(j).sign, b.tangential(j)) <= 0) {
+            b.pin(j, zero<typename B::Vector>(), x);  // C6: the contact separates and a new, unloaded one forms
         } else if (events_ && t >= b.deadline(j)) {
             end_dislocated(b, j, x);
         } else {
@@ -288,11 +396,12 @@ void ThreeStateJunctions::update_active(BlockJunctions& b, Index i, double x, do
     }
 }
 
-void ThreeStateJunctions::end_sliding(BlockJunctions& b, Index i, Index j, double x, double t) const {
-    Junction& r = b.record(j);
-    const double g = r.sign * b.tangential(j);
+template <class B>
+void ThreeStateJunctions::end_sliding(B& b, Index i, Index j, const typename B::Vector& x, double t) const {
+    auto& r = b.record(j);
+    const double g = along(r.sign, b.tangential(j));
     if (g <= 0) {
-        b.pin(j, 0, x);  // B.13: unloaded through zero while relaxing
+        b.pin(j, zero<typename B::Vector>(), x);  // B.13: unloaded through zero while relaxing
         return;
     }
     const double lifetime = sampler_.dislocated(static_cast<std::uint64_t>(i), r.id, r.dislocated_draws);
@@ -300,21 +409,24 @@ void ThreeStateJunctions::end_sliding(BlockJunctions& b, Index i, Index j, doubl
     b.dislocate(j, r.sign, start, tan_phi0_, t, lifetime);
 }
 
-void ThreeStateJunctions::end_dislocated(BlockJunctions& b, Index j, double x) const {
+template <class B>
+void ThreeStateJunctions::end_dislocated(B& b, Index j, const typename B::Vector& x) const {
     // C5: phi has reached 0 in the regular case, so Eq. 11 gives s mu_d p; a relaxing one keeps its force.
-    b.pin(j, b.at_cap(j) ? b.junction(j).sign * mu_d_p_ : b.junction_force(j, x, x), x);
+    b.pin(j, b.at_cap(j) ? typename B::Vector(b.junction(j).sign * mu_d_p_) : b.junction_force(j, x, x), x);
 }
 
-void ThreeStateJunctions::decay_angle(BlockJunctions& b, Index j, double t) const {
+template <class B>
+void ThreeStateJunctions::decay_angle(B& b, Index j, double t) const {
     if (!b.at_cap(j)) return;  // relaxing: phi frozen (Eq. 15)
-    const Junction& r = b.junction(j);
+    const auto& r = b.junction(j);
     // Eq. 13 only decreases, so a relaxation that froze phi resumes at or below the frozen value:
     // B.11's min(frozen, Eq. 13) without an upward jump.
     const double eq13 = std::max(0.0, (1 - (t - r.entry) / r.lifetime) * tan_phi0_);
     if (eq13 < r.tan_phi) b.set_angle(j, eq13);
 }
 
-void ThreeStateJunctions::follow_normal_force(BlockJunctions& b, Index i, double x) {
+template <class B>
+void ThreeStateJunctions::follow_normal_force(B& b, Index i, const typename B::Vector& x) {
     const double ratio = std::max(0.0, (*normal_force_)[i] * inverse_p_);
     // An exploding run makes P_b absurd within a step; stop it here rather than allocate junctions
     // until memory runs out (the run's runaway check only looks every few steps).
@@ -349,14 +461,16 @@ double ThreeStateJunctions::time_to_count_change(Index i) const {
     // The count changes when P_b / p leaves (n - 1, n + 1) (follow_normal_force): when P_b, going
     // on at its rate between the last two commits, reaches (n + 1) p or (n - 1) p.
     const double rate = normal_rate_[i], normal = normal_[i];
-    const auto n = static_cast<double>(blocks_[static_cast<std::size_t>(i)].size());
+    const auto n = static_cast<double>(
+        std::visit([&](const auto& blocks) { return blocks[static_cast<std::size_t>(i)].size(); }, blocks_));
     const double time = rate > 0            ? ((n + 1) * p_ - normal) / rate
                         : rate < 0 && n > 0 ? (normal - (n - 1) * p_) / -rate
                                             : infinity;
     return time > 0 ? time : infinity;  // not ahead: the commit has judged it
 }
 
-Index ThreeStateJunctions::removal_choice(const BlockJunctions& b, Index i, double x) {
+template <class B>
+Index ThreeStateJunctions::removal_choice(const B& b, Index i, const typename B::Vector& x) {
     const Index n = b.size(), pinned = b.pinned();
     switch (removal_) {
         case Removal::random:
@@ -365,7 +479,7 @@ Index ThreeStateJunctions::removal_choice(const BlockJunctions& b, Index i, doub
             if (pinned == 0) break;
             Index best = 0;
             for (Index j = 1; j < pinned; ++j)
-                if (std::abs(b.junction_force(j, x, x)) > std::abs(b.junction_force(best, x, x))) best = j;
+                if (magnitude(b.junction_force(j, x, x)) > magnitude(b.junction_force(best, x, x))) best = j;
             return best;
         }
         case Removal::non_pinned_first:
@@ -382,10 +496,15 @@ Index ThreeStateJunctions::random_index(Index i, Index first, Index end) {
 }
 
 void ThreeStateJunctions::check_settled(const StageInfo& stage, const StageView& s) const {
+    std::visit([&](const auto& blocks) { check_settled_on(blocks, stage, s); }, blocks_);
+}
+
+template <class B>
+void ThreeStateJunctions::check_settled_on(const std::vector<B>& blocks, const StageInfo& stage,
+                                           const StageView& s) const {
     // Junctions form from the normal force, P_b / p of them per block: a junction load p above
     // every block's share would leave a frictionless interface without a word.
-    const bool any_junction =
-        std::any_of(blocks_.begin(), blocks_.end(), [](const BlockJunctions& b) { return b.size() > 0; });
+    const bool any_junction = std::any_of(blocks.begin(), blocks.end(), [](const B& b) { return b.size() > 0; });
     const double largest_load = normal_force_->size() > 0 ? normal_force_->maxCoeff() : 0.0;
     if (!any_junction && largest_load > 0)
         throw RunError(fmt::format(
@@ -394,14 +513,14 @@ void ThreeStateJunctions::check_settled(const StageInfo& stage, const StageView&
             "interface would be frictionless; make contact_radius or hardness smaller",
             name_, stage.name, p_, largest_load));
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
-        const double x = s.x[nodes_[i]];
-        if (!blocks_[i].pinned_beyond(x, threshold_)) continue;
+        const auto x = position<B>(s, static_cast<Index>(i));
+        if (!blocks[i].pinned_beyond(x, threshold_)) continue;
         throw RunError(fmt::format(
             "{}: at the start of stage '{}', block {} (node {}) has a pinned junction at |f| = {:.6g} mu_s p, "
             "above the breaking threshold mu_s p = {:.6g} N; settling did not reach a state the junctions "
             "can hold (theory.md B.18). Set the friction's settle_overload: slip_and_repin to let overloaded "
             "junctions slip and re-pin while the load is applied (B.18a)",
-            name_, stage.name, i, nodes_[i], blocks_[i].max_pinned_force(x) / threshold_, threshold_));
+            name_, stage.name, i, nodes_[i], blocks[i].max_pinned_force(x) / threshold_, threshold_));
     }
 }
 

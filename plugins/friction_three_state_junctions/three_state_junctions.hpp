@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "frictionlab/base/state_archive.hpp"
@@ -11,6 +12,7 @@
 
 #include "block_junctions.hpp"
 #include "lifetime_sampler.hpp"
+#include "planar_junctions.hpp"
 
 namespace frictionlab {
 
@@ -70,6 +72,13 @@ namespace frictionlab {
 ///   junction, or a random pinned one when there is none;
 /// - lifetimes are drawn truncated at 0, not at dt (LifetimeSampler explains why).
 ///
+/// On a 3D body (two tangential axes) the law is isotropic in the interface plane (theory.md 3a,
+/// planar_junctions.hpp): forces are vectors, thresholds and bounds act on their magnitudes, and s is
+/// a direction in the plane; the commit below is the same template over both block types. Its
+/// quasi-static regime there is narrower: every junction pinned (a sliding or dislocated junction's
+/// force turns with the slip, not linear in position), and the foreseen events are the pinned
+/// junctions reaching mu_s p and the count changes.
+///
 /// Stored energy (potential_energy, for energy bookkeeping only): every junction's current force
 /// counts as the load of an elastic spring of stiffness k_s, E = sum_j f_j^2 / (2 k_s). Within a step
 /// a pinned junction, and a sliding or dislocated one off its bound (relaxing), has df_j/dx = k_s,
@@ -87,8 +96,9 @@ public:
     void restore_state(StateIn& in) override { in(*this); }
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(fixed_length(blocks_), x_start_, normal_, normal_rate_, rate_base_, normal_time_, rate_base_time_,
-           removal_draws_, events_, next_event_);
+        std::visit([&](auto& blocks) { ar(fixed_length(blocks)); }, blocks_);
+        ar(x_start_, plane_start_, normal_, normal_rate_, rate_base_, normal_time_, rate_base_time_, removal_draws_,
+           events_, next_event_);
     }
     enum class Removal { random, most_loaded_pinned, non_pinned_first };
     /// What a pinned junction does above mu_s p while friction events are off (settling, B.18).
@@ -140,27 +150,54 @@ public:
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
     double foreseen_event_time(const StageView& s) const override;
 
-    Index blocks() const { return static_cast<Index>(blocks_.size()); }
-    const BlockJunctions& block(Index i) const { return blocks_[static_cast<std::size_t>(i)]; }
+    Index blocks() const { return static_cast<Index>(nodes_.size()); }
+    /// 1 on a 2D body's interface, 2 on a 3D body's.
+    int tangential_axes() const { return static_cast<int>(axes_.size()); }
+    /// Block i of a 2D body's interface.
+    const BlockJunctions& block(Index i) const { return std::get<Line>(blocks_)[static_cast<std::size_t>(i)]; }
+    /// Block i of a 3D body's interface.
+    const PlanarJunctions& planar_block(Index i) const { return std::get<Plane>(blocks_)[static_cast<std::size_t>(i)]; }
     double junction_load() const { return p_; }
     double junction_stiffness() const { return k_s_; }
 
 private:
-    void commit_block(Index i, double x, double t);
-    void break_pinned(BlockJunctions& b, Index i, double x, double t) const;
-    void repin_overloaded(BlockJunctions& b, double x) const;
-    void update_active(BlockJunctions& b, Index i, double x, double t) const;
-    void end_sliding(BlockJunctions& b, Index i, Index j, double x, double t) const;
-    void end_dislocated(BlockJunctions& b, Index j, double x) const;
-    void decay_angle(BlockJunctions& b, Index j, double t) const;
-    void follow_normal_force(BlockJunctions& b, Index i, double x);
+    using Line = std::vector<BlockJunctions>;
+    using Plane = std::vector<PlanarJunctions>;
+    /// Block i's position in the interface plane: its x on a line, (x, y) in a plane.
+    template <class B>
+    typename B::Vector position(const StageView& s, Index i) const;
+    template <class B>
+    std::vector<typename B::Vector>& starts();
+    template <class B>
+    const std::vector<typename B::Vector>& starts() const;
+    template <class B>
+    void commit_blocks(std::vector<B>& blocks, const StageView& end);
+    template <class B>
+    void commit_block(B& b, Index i, const typename B::Vector& x, double t);
+    template <class B>
+    void break_pinned(B& b, Index i, const typename B::Vector& x, double t) const;
+    template <class B>
+    void repin_overloaded(B& b, const typename B::Vector& x) const;
+    template <class B>
+    void update_active(B& b, Index i, const typename B::Vector& x, double t) const;
+    template <class B>
+    void end_sliding(B& b, Index i, Index j, const typename B::Vector& x, double t) const;
+    template <class B>
+    void end_dislocated(B& b, Index j, const typename B::Vector& x) const;
+    template <class B>
+    void decay_angle(B& b, Index j, double t) const;
+    template <class B>
+    void follow_normal_force(B& b, Index i, const typename B::Vector& x);
     /// Records every block's P_b at the commit at t, and its rate over the last rate_interval.
     void follow_normal_rate(double t);
     /// How long after the last commit block i's count changes if P_b goes on at its rate.
     double time_to_count_change(Index i) const;
-    Index removal_choice(const BlockJunctions& b, Index i, double x);
+    template <class B>
+    Index removal_choice(const B& b, Index i, const typename B::Vector& x);
     Index random_index(Index i, Index first, Index end);
     void check_settled(const StageInfo&, const StageView&) const;
+    template <class B>
+    void check_settled_on(const std::vector<B>& blocks, const StageInfo&, const StageView&) const;
     /// Writes block i's junction counts to the published fields. They change only at commits, so
     /// they are published there, not at every force evaluation.
     void publish_counts(Index i);
@@ -172,8 +209,10 @@ private:
     SettleOverload settle_overload_;
     LifetimeSampler sampler_;
     NodeSet nodes_;
-    std::vector<BlockJunctions> blocks_;
-    std::vector<double> x_start_;
+    std::vector<int> axes_;  // the contact frame's tangential axes, x first
+    std::variant<Line, Plane> blocks_;
+    std::vector<double> x_start_;                  // a line's blocks: x at the step start
+    std::vector<Eigen::Vector2d> plane_start_;     // a plane's blocks: (x, y) at the step start
     Eigen::VectorXd normal_, normal_rate_;         // each block's P_b at the last commit (N), and its rate (N/s)
     Eigen::VectorXd rate_base_;                    // P_b where the rate was last taken
     double normal_time_ = 0, rate_base_time_ = 0;  // the last commit's time; where the rate was last taken

@@ -44,7 +44,7 @@ ParamSpec<Params> TwoStateJunctions::spec() {
     s.add("slipping_time_sd", &Params::slipping_time_sd, "Standard deviation sigma_R of the slipping duration.")
         .unit("s")
         .at_least(0);
-    junction_settings::add_interface(s, "junction forces along x: the breaking test orders them on one axis");
+    junction_settings::add_interface(s, {2}, "junction forces along x: the breaking test orders them on one axis");
     return s;
 }
 

@@ -54,11 +54,11 @@ std::string check(const fs::path& scene, const fs::path& dir, int& code) {
 TEST(DimensionCli, CheckRefusesA3dSceneNamingTypesThatWorkIn2dOnly) {
     const fs::path dir = work_directory();
     int code = 0;
-    const std::string output = check(write_scene(dir, 3, "three_state_junctions"), dir, code);
+    const std::string output = check(write_scene(dir, 3, "two_state_junctions"), dir, code);
     EXPECT_EQ(code, 2) << output;
     const std::string at = (dir / "slider.yaml").string();
     EXPECT_NE(
-        output.find(at + ":7:9: error: friction.type: friction_law type 'three_state_junctions' works in 2D only ("),
+        output.find(at + ":7:9: error: friction.type: friction_law type 'two_state_junctions' works in 2D only ("),
         std::string::npos)
         << output;
     EXPECT_NE(output.find("), and the bulk model 'test_lattice' builds a 3D body"), std::string::npos) << output;
@@ -74,13 +74,13 @@ TEST(DimensionCli, CheckRefusesA3dSceneNamingTypesThatWorkIn2dOnly) {
 TEST(DimensionCli, CheckPassesTheSameTypesOnA2dBody) {
     const fs::path dir = work_directory();
     int code = 0;
-    const std::string output = check(write_scene(dir, 2, "three_state_junctions"), dir, code);
+    const std::string output = check(write_scene(dir, 2, "two_state_junctions"), dir, code);
     EXPECT_EQ(code, 0) << output;
 }
 
 TEST(DimensionCli, DocShowsEachTypesDimensions) {
     const fs::path dir = work_directory();
-    const CliResult junctions = frictionlab("doc friction_law/three_state_junctions", dir);
+    const CliResult junctions = frictionlab("doc friction_law/two_state_junctions", dir);
     EXPECT_EQ(junctions.code, 0) << junctions.output;
     EXPECT_NE(junctions.output.find("dimensions: 2D only (junction forces along x"), std::string::npos)
         << junctions.output;

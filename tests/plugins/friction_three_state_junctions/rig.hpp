@@ -1,7 +1,8 @@
 #pragma once
 // Drives a ThreeStateJunctions law as an integrator would, on a hand-made body whose interface
-// nodes all start at x = 0 (so that dyadic displacements give exact forces). The test writes the
-// normal force and chooses each end-of-step position.
+// nodes all start at x = 0 (so that dyadic displacements give exact forces): in 2D, or in 3D with
+// the blocks along y (the interface plane (x, y)). The test writes the normal force and chooses each
+// end-of-step position.
 #include <memory>
 #include <vector>
 
@@ -32,18 +33,27 @@ inline ThreeStateJunctions::Params exact_params() {
 inline constexpr double exact_dt = 0x1p-16;
 
 struct Rig {
-    explicit Rig(const ThreeStateJunctions::Params& params, Index blocks = 3, std::uint64_t seed = 1, double x0 = 0)
+    explicit Rig(const ThreeStateJunctions::Params& params, Index blocks = 3, std::uint64_t seed = 1, double x0 = 0,
+                 int dimension = 2)
         : log("three_state_junctions_test") {
-        body.reference_position =
-            planar_positions(Eigen::ArrayXd::Constant(blocks, x0), Eigen::ArrayXd::LinSpaced(blocks, 0, 1));
+        const Eigen::ArrayXd along = Eigen::ArrayXd::LinSpaced(blocks, 0, 1);
+        if (dimension == 2) {
+            body.reference_position = planar_positions(Eigen::ArrayXd::Constant(blocks, x0), along);
+        } else {
+            body.reference_position = Eigen::ArrayXXd::Zero(blocks, 3);
+            body.reference_position.col(0) = x0;
+            body.reference_position.col(1) = along;
+            body.contact_frame = ContactFrame::horizontal_base(3);
+        }
         body.mass = Eigen::ArrayXd::Ones(blocks);
         NodeSet interface;
         for (Index i = 0; i < blocks; ++i) interface.push_back(i);
         body.node_sets["interface"] = interface;
         normal = &quantities.field("normal_force", "interface", blocks, "N", "test");
-        layout = StateLayout(blocks, 2, 0);
+        layout = StateLayout(blocks, dimension, 0);
         y = Eigen::VectorXd::Zero(layout.size());
-        layout.positions_along(y, 0) = body.x0().matrix();
+        for (int axis = 0; axis < dimension; ++axis)
+            layout.positions_along(y, axis) = body.reference_position.col(axis).matrix();
         Context ctx{log, seed, &body, &quantities, nullptr, "friction"};
         law = std::make_unique<ThreeStateJunctions>(params, ctx);
         p = law->junction_load();
@@ -53,6 +63,7 @@ struct Rig {
     StageView view() const { return view_of(y, layout, t); }
     double x(Index i) const { return y[layout.position_index(i, 0)]; }
     const BlockJunctions& block(Index i) const { return law->block(i); }
+    const PlanarJunctions& planar_block(Index i) const { return law->planar_block(i); }
 
     void stage(bool friction_events) {
         StageInfo info{friction_events ? "load" : "settle", stage_index++, t, 1.0, friction_events};
@@ -84,6 +95,21 @@ struct Rig {
         ForceView f = forces_of(dy, layout);
         law->add_forces(view(), f);
         return {f.fx.data(), f.fx.data() + layout.nodes};
+    }
+    /// In 3D: one accepted step that moves block i by `by` in the interface plane from its reference.
+    void move_in_plane(Index i, const Eigen::Vector2d& by) {
+        law->begin_step(view());
+        for (int axis = 0; axis < 2; ++axis)
+            y[layout.position_index(i, axis)] = body.reference_position(i, axis) + by[axis];
+        t += exact_dt;
+        law->commit(view(), exact_dt);
+    }
+    /// In 3D: the in-plane force on block i from the law now.
+    Eigen::Vector2d plane_force(Index i) {
+        Eigen::VectorXd dy = Eigen::VectorXd::Zero(layout.size());
+        ForceView f = forces_of(dy, layout);
+        law->add_forces(view(), f);
+        return {f.forces_along(0)(i), f.forces_along(1)(i)};
     }
     /// x-force on block i at a stage position, without accepting a step.
     double stage_force(Index i, double xi) {

@@ -4,6 +4,8 @@
 // rule, the node set and the dimensions the laws work in. Declared once, so both laws say them in
 // the same words and check them by the same rule (as the stick-slip laws' stick_slip::add_settings).
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -28,11 +30,12 @@ void add_coefficients(ParamSpec<P>& s, const std::string& load, const std::strin
     s.rule("mu_d", [](const P& p) { return moving_not_above_static("mu_d", p.mu_d, p.mu_s); });
 }
 
-/// The node set in contact with the base, and the one dimension the junction laws work in.
+/// The node set in contact with the base, and the dimensions a junction law works in (why not in
+/// others, when it does not work in every one).
 template <class P>
-void add_interface(ParamSpec<P>& s, const std::string& why_2d_only) {
+void add_interface(ParamSpec<P>& s, std::vector<int> dimensions, const std::string& limit = {}) {
     s.add("node_set", &P::node_set, "The bulk's node set in contact with the base.");
-    s.dimensions({2}, why_2d_only);
+    s.dimensions(std::move(dimensions), limit);
 }
 
 }  // namespace frictionlab::junction_settings
