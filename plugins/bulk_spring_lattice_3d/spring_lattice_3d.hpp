@@ -56,8 +56,8 @@ namespace frictionlab {
 /// straight bond (its own and the two diagonals across the width) against eta on the diagonals,
 /// where the 2D lattice has eta on both.
 ///
-/// Not yet: cells for pictures (Body::cells is planar), the bond-projected dashpots of the 2D
-/// lattice.
+/// Its cubes are Body::volumes, for pictures (the ParaView series draws them as hexahedra). Not yet:
+/// the bond-projected dashpots of the 2D lattice.
 class SpringLattice3d final : public BulkModel {
 public:
     /// Across the width: two free side faces, or periodic (node iy = ny - 1 bonded to iy = 0 as to
