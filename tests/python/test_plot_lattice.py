@@ -51,6 +51,7 @@ def test_the_lattice_is_drawn_onto_the_axes_it_is_given_a_cell_a_polygon(csv_run
     scene = csv_run.metadata["scene"]["bulk"]
     assert len(cells.get_paths()) == (scene["nx"] - 1) * (scene["nz"] - 1)
     # Not magnified, the cells are the lattice at rest, in mm.
+    assert len(cells.get_paths()) == (bulk["nx"] - 1) * (bulk["nz"] - 1)  # the faces of its front cubes
     corners = np.concatenate([path.vertices for path in cells.get_paths()])
     assert corners[:, 0].min() == pytest.approx(0)
     assert corners[:, 0].max() == pytest.approx(float(scene["length"]) * 1e3)
@@ -66,6 +67,7 @@ def test_a_3d_lattice_is_drawn_from_the_side_its_front_face(run_3d):
     frictionlab.plot.lattice(run_3d, ax=ax, magnify=0)
     (cells,) = ax.collections
     bulk = run_3d.metadata["scene"]["bulk"]
+    assert len(cells.get_paths()) == (bulk["nx"] - 1) * (bulk["nz"] - 1)  # the faces of its front cubes
     corners = np.concatenate([path.vertices for path in cells.get_paths()])
     assert corners[:, 0].max() - corners[:, 0].min() == pytest.approx(float(bulk["length"]) * 1e3)
     assert corners[:, 1].max() - corners[:, 1].min() == pytest.approx(float(bulk["height"]) * 1e3)

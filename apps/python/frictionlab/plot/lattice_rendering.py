@@ -99,7 +99,8 @@ def lattice_grid(run, magnify=200.0):
 
 def side_view(grid):
     """The lattice as the figure's plane holds it, (x, z) as a 2D run writes it: a 2D run's grid as it
-    is; a 3D run's front face (its nodes at the least y and the cells among them), with its points and
+    is; a 3D run's front face (its nodes at the least y and the cells among them: its bonds, or the
+    faces of its cubes), with its points and
     displacements turned from (x, y, z) into (x, z, 0). Seen from above, a 3D lattice would show its
     width where the axes say z."""
     import vtk
@@ -112,7 +113,12 @@ def side_view(grid):
     front.SetName("front_face")
     grid.GetPointData().AddArray(front)
     threshold = vtk.vtkThreshold()  # a cell stays when all its points are on the face
-    threshold.SetInputData(grid)
+    if any(grid.GetCell(c).GetCellDimension() == 3 for c in range(min(grid.GetNumberOfCells(), 1))):
+        surface = vtk.vtkDataSetSurfaceFilter()  # volumes: their boundary faces, the front face's among them
+        surface.SetInputData(grid)
+        threshold.SetInputConnection(surface.GetOutputPort())
+    else:
+        threshold.SetInputData(grid)
     threshold.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, "front_face")
     threshold.SetLowerThreshold(0.5)
     threshold.SetUpperThreshold(1.5)
