@@ -87,8 +87,9 @@ def renamed_scene(old_case: str, new_case: str):
 
 
 def _records_agree(a: str, b: str, renamed=None) -> bool:
-    """Two run records (run.yaml, case.yaml) alike but for the times the runs took and the paths
-    they were given (the output directory, the command line, the plugins' files); with `renamed`,
+    """Two run records (run.yaml, case.yaml) alike but for the times the runs took, the paths
+    they were given (the output directory, the command line, the plugins' files) and the threads
+    they shared their loops among (the results are the same at any count); with `renamed`,
     the scene's hash is the new one and the scene the first run's with keys added."""
     def essentials(path):
         record = _load(path)
@@ -98,7 +99,7 @@ def _records_agree(a: str, b: str, renamed=None) -> bool:
                 record["scene"] = _with_keys_of(record["scene"], _load(a).get("scene", {}))
         drop = set(TIMES) | {"command_line", "plugins", "output", "quiet_fraction_of_wall_time",
                              "creep_fraction_of_wall_time", "quiet_seconds_wall", "dynamic_seconds_wall",
-                             "creep_seconds_wall", "plugin_files", "scene_path"}
+                             "creep_seconds_wall", "plugin_files", "scene_path", "threads"}
         def strip(x):
             if isinstance(x, dict):
                 return {k: strip(v) for k, v in x.items() if k not in drop}
