@@ -51,7 +51,6 @@ def test_the_lattice_is_drawn_onto_the_axes_it_is_given_a_cell_a_polygon(csv_run
     scene = csv_run.metadata["scene"]["bulk"]
     assert len(cells.get_paths()) == (scene["nx"] - 1) * (scene["nz"] - 1)
     # Not magnified, the cells are the lattice at rest, in mm.
-    assert len(cells.get_paths()) == (bulk["nx"] - 1) * (bulk["nz"] - 1)  # the faces of its front cubes
     corners = np.concatenate([path.vertices for path in cells.get_paths()])
     assert corners[:, 0].min() == pytest.approx(0)
     assert corners[:, 0].max() == pytest.approx(float(scene["length"]) * 1e3)
