@@ -44,9 +44,17 @@ PlanarJunctions::Vector PlanarJunctions::junction_force(Index j, const Vector& x
 }
 
 PlanarJunctions::Vector PlanarJunctions::force(const Vector& x, const Vector& x_start) const {
-    Vector f = Vector::Zero();
-    for (Index j = 0; j < size(); ++j) f += junction_force(j, x, x_start);
+    Vector f = b_sum_ + static_cast<double>(pinned_) * c_.k_s * (x - x_ref_);
+    for (Index j = pinned_; j < size(); ++j) f += junction_force(j, x, x_start);
     return f;
+}
+
+void PlanarJunctions::refresh_pinned(const Vector& x) {
+    if (!pinned_dirty_) return;
+    x_ref_ = x;
+    b_sum_.setZero();
+    for (Index j = 0; j < pinned_; ++j) b_sum_ += junction_force(j, x, x);
+    pinned_dirty_ = false;
 }
 
 bool PlanarJunctions::pinned_beyond(const Vector& x, double threshold) const {
@@ -77,6 +85,34 @@ double PlanarJunctions::time_to_threshold(const Vector& x, const Vector& v, doub
     return first;
 }
 
+Eigen::Matrix2d PlanarJunctions::stiffness(const Vector& dx) const {
+    Eigen::Matrix2d k = static_cast<double>(pinned_) * c_.k_s * Eigen::Matrix2d::Identity();
+    for (Index j = pinned_; j < size(); ++j) {
+        const PlanarJunction& r = junction(j);
+        const Vector trial = r.base + c_.k_s * dx;
+        const double n = trial.norm(), radius = bound(r);
+        if (n < radius) {
+            k += c_.k_s * Eigen::Matrix2d::Identity();
+        } else {
+            const Vector u = trial / n;
+            k += c_.k_s * (radius / n) * (Eigen::Matrix2d::Identity() - u * u.transpose());
+        }
+    }
+    return k;
+}
+
+double PlanarJunctions::time_to_separation(const Vector& dx, const Vector& v) const {
+    double next = infinity;
+    for (Index j = pinned_; j < size(); ++j) {
+        const PlanarJunction& r = junction(j);
+        // Only a dislocated junction moved against its direction s unloads towards g . s = 0.
+        const double along = r.sign.dot(v);
+        if (r.state != JunctionState::dislocated || along >= 0) continue;
+        next = std::min(next, std::max(0.0, advanced(r, dx).dot(r.sign) / (c_.k_s * -along)));
+    }
+    return next;
+}
+
 void PlanarJunctions::advance(const Vector& dx) {
     for (Index j = pinned_; j < size(); ++j) {
         PlanarJunction& r = record(j);
@@ -91,12 +127,14 @@ void PlanarJunctions::add_pinned(const Vector& x) {
     junctions_.push_back(r);
     swap(size() - 1, pinned_);
     ++pinned_;
+    pinned_dirty_ = true;
 }
 
 void PlanarJunctions::remove(Index j) {
     if (j < pinned_) {
         swap(j, pinned_ - 1);
         j = --pinned_;
+        pinned_dirty_ = true;
     } else if (state(j) == JunctionState::sliding) {
         --sliding_;
     }
@@ -119,12 +157,14 @@ void PlanarJunctions::reset_pinned(Index j, const Vector& f0, const Vector& x) {
     r.anchor = x;
     r.base.setZero();
     r.held = false;
+    pinned_dirty_ = true;
 }
 
 Index PlanarJunctions::slide(Index j, const Vector& sign, double t, double lifetime) {
     if (j < pinned_) {
         swap(j, pinned_ - 1);
         j = --pinned_;
+        pinned_dirty_ = true;
     }
     PlanarJunction& r = record(j);
     if (r.state != JunctionState::sliding) ++sliding_;

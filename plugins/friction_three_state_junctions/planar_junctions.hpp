@@ -11,8 +11,11 @@
 // until it reaches the bound again. s, a unit vector, is the direction a junction was overcome in:
 // its force's when it broke, its sliding force's when it dislocated. Along one axis every vector is
 // +-|.| and the law is BlockJunctions' (a test holds them to the same forces and transitions).
-// Plain per-junction storage: a 3D interface is rarely the hot loop, and the aggregates that make the
-// line's pinned junctions O(1) do not carry over to |f| in the plane.
+// Per-junction storage. The pinned junctions enter the block force, as on the line, through one sum,
+//     sum_j f_j = B_p + N_p k_s (x - x_ref),   B_p = sum_j (f0_j - k_s (anchor_j - x_ref)),
+// recomputed exactly at x_ref whenever the pinned set changed (refresh_pinned), so the force costs
+// O(1) for them; the breaking test and the foreseen threshold stay per junction (|f| in the plane has
+// no order to keep).
 #include <cstdint>
 #include <vector>
 
@@ -50,7 +53,7 @@ public:
     PlanarJunctions(const Constants& c, Index capacity);
     template <class Archive>
     void serialize(Archive& ar) {
-        ar(c_, junctions_, pinned_, sliding_, next_id_, next_deadline_);
+        ar(c_, junctions_, pinned_, sliding_, next_id_, next_deadline_, x_ref_, b_sum_, pinned_dirty_);
     }
 
     Index size() const { return static_cast<Index>(junctions_.size()); }
@@ -78,6 +81,15 @@ public:
     /// velocity v: +infinity if none will, 0 if one is there.
     double time_to_threshold(const Vector& x, const Vector& v, double threshold) const;
 
+    /// d(force)/dx at x_start + dx (N/m), the tangent of the law within a step: k_s I for a pinned
+    /// junction and an active one inside its bound; for one returned to its bound r from the trial
+    /// force v, k_s (r/|v|) (I - n n^T), n = v/|v|: nothing along its force, which stays r, and a
+    /// lateral motion turns it.
+    Eigen::Matrix2d stiffness(const Vector& dx) const;
+    /// How long until a dislocated junction's tangential part reaches g . s = 0 (it separates) if the
+    /// block moves on from x_start + dx at velocity v: +infinity if none will, 0 if one is there.
+    double time_to_separation(const Vector& dx, const Vector& v) const;
+
     /// Commit step 1: advances every active force from x_start to x_start + dx.
     void advance(const Vector& dx);
     void add_pinned(const Vector& x);
@@ -89,7 +101,8 @@ public:
     /// direction (`sign` where it has none), which becomes its s.
     void dislocate(Index j, const Vector& sign, double g, double tan_phi, double t, double lifetime);
     void set_angle(Index j, double tan_phi);
-    void refresh_pinned(const Vector&) {}  // nothing cached
+    /// Recomputes the pinned junctions' sum at x if the pinned set changed since the last time.
+    void refresh_pinned(const Vector& x);
     void refresh_active();
     double next_deadline() const { return next_deadline_; }
 
@@ -107,6 +120,8 @@ private:
     Index pinned_ = 0, sliding_ = 0;
     std::uint64_t next_id_ = 0;
     double next_deadline_;
+    Vector x_ref_ = Vector::Zero(), b_sum_ = Vector::Zero();  // the pinned junctions' sum: B_p at x_ref
+    bool pinned_dirty_ = false;
 };
 
 }  // namespace frictionlab

@@ -264,21 +264,20 @@ double ThreeStateJunctions::potential_energy(const StageView& s) const {
     return force_squared / (2 * k_s_);
 }
 
-bool ThreeStateJunctions::quasi_static_regime(const StageView&) const {
-    const Plane* plane = std::get_if<Plane>(&blocks_);
-    return !plane ||
-           std::all_of(plane->begin(), plane->end(), [](const PlanarJunctions& b) { return b.pinned() == b.size(); });
-}
-
 void ThreeStateJunctions::add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const {
     if (const Plane* plane = std::get_if<Plane>(&blocks_)) {
-        // In the regime every junction is pinned: k_s each, along both axes.
-        for (std::size_t i = 0; i < nodes_.size(); ++i)
-            if (const Index pinned = (*plane)[i].pinned(); pinned > 0)
-                for (const int axis : axes_) {
-                    const Index q = s.position_index(nodes_[i], axis);
-                    stiffness.emplace_back(q, q, static_cast<double>(pinned) * k_s_);
-                }
+        for (std::size_t i = 0; i < nodes_.size(); ++i) {
+            const PlanarJunctions& b = (*plane)[i];
+            if (b.size() == 0) continue;
+            const Eigen::Matrix2d k =
+                b.stiffness(position<PlanarJunctions>(s, static_cast<Index>(i)) - starts<PlanarJunctions>()[i]);
+            for (int a = 0; a < 2; ++a)
+                for (int c = 0; c < 2; ++c)
+                    if (k(a, c) != 0)
+                        stiffness.emplace_back(s.position_index(nodes_[i], axes_[static_cast<std::size_t>(a)]),
+                                               s.position_index(nodes_[i], axes_[static_cast<std::size_t>(c)]),
+                                               k(a, c));
+        }
         return;
     }
     const Line& line = std::get<Line>(blocks_);
@@ -303,8 +302,10 @@ double ThreeStateJunctions::foreseen_event_time(const StageView& s) const {
             if (b.pinned() < b.size()) next = std::min(next, b.time_to_separation(x - x_start_[i], v));
         } else {
             const Eigen::Vector2d v(s.velocity(node, axes_[0]), s.velocity(node, axes_[1]));
-            next = std::min(next, std::get<Plane>(blocks_)[i].time_to_threshold(
-                                      position<PlanarJunctions>(s, static_cast<Index>(i)), v, threshold_));
+            const PlanarJunctions& b = std::get<Plane>(blocks_)[i];
+            const Eigen::Vector2d x = position<PlanarJunctions>(s, static_cast<Index>(i));
+            next = std::min(next, b.time_to_threshold(x, v, threshold_));
+            if (b.pinned() < b.size()) next = std::min(next, b.time_to_separation(x - starts<PlanarJunctions>()[i], v));
         }
     }
     return std::min(normal_time_ + counts, s.t + next);

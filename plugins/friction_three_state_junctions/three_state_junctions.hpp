@@ -75,9 +75,8 @@ namespace frictionlab {
 /// On a 3D body (two tangential axes) the law is isotropic in the interface plane (theory.md 3a,
 /// planar_junctions.hpp): forces are vectors, thresholds and bounds act on their magnitudes, and s is
 /// a direction in the plane; the commit below is the same template over both block types. Its
-/// quasi-static regime there is narrower: every junction pinned (a sliding or dislocated junction's
-/// force turns with the slip, not linear in position), and the foreseen events are the pinned
-/// junctions reaching mu_s p and the count changes.
+/// quasi-static regime is the line's, with the return map's tangent for a junction at its bound (no
+/// stiffness along its force, k_s r/|v| across it: PlanarJunctions::stiffness).
 ///
 /// Stored energy (potential_energy, for energy bookkeeping only): every junction's current force
 /// counts as the load of an elastic spring of stiffness k_s, E = sum_j f_j^2 / (2 k_s). Within a step
@@ -139,14 +138,16 @@ public:
     /// Quasi-static regime: always. Between discrete events every junction's force is piecewise
     /// linear in its block's position: k_s for pinned junctions and for sliding or dislocated ones
     /// off their bound, 0 for those held at mu_d p or cap(phi) (the stage law of B.17 is exact for
-    /// a monotone path, so a quiet step may cross a bound). Foreseen events: the first pinned
-    /// junction to reach mu_s p and the first dislocated one to separate (g = 0) at the blocks'
+    /// a monotone path, so a quiet step may cross a bound); in the plane, the return map's tangent,
+    /// smooth but for the bound itself, where Newton's exact residual carries the solve across.
+    /// Foreseen events: the first pinned junction to reach mu_s p and the first dislocated one to
+    /// separate (g = 0, in the plane g . s = 0) at the blocks'
     /// velocities (none while friction events are off); scheduled ones: the sliding and dislocated
     /// clocks. Count changes (B.7) stay judged at commits, as in every step, and are foreseen too: when
     /// P_b, going on at its rate between the last two commits, leaves the band of the count (in a
     /// quiet phase P_b follows the drive linearly, so a quiet step ends where a fine dynamic run
     /// forms or removes the junction). The angle decay stays at commits (B.17).
-    bool quasi_static_regime(const StageView&) const override;
+    bool quasi_static_regime(const StageView&) const override { return true; }
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
     double foreseen_event_time(const StageView& s) const override;
 

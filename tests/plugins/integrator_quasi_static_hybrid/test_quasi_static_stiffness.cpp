@@ -111,9 +111,10 @@ TEST(QuasiStaticStiffness, ChainSpringsAndPlateSpringsGiveMinusTheirForceJacobia
     EXPECT_LT(stiffness_mismatch(plate, s.layout, s.y, 1e-4, 1e-9), relative_tolerance);
 }
 
-/// Three junctions on each block, pinned unloaded, friction events on.
-testing::Rig three_junctions_each() {
-    testing::Rig r(testing::exact_params());
+/// Three junctions on each block, pinned unloaded, friction events on; on a 3D body's interface (the
+/// law in the plane) with `dimension` 3.
+testing::Rig three_junctions_each(int dimension = 2) {
+    testing::Rig r(testing::exact_params(), 3, 1, 0, dimension);
     r.normal->setConstant(3 * r.p);
     r.stage(false);
     r.hold(1);
@@ -196,6 +197,53 @@ TEST(QuasiStaticStiffness, DislocatedJunctionsForeseeTheirSeparation) {
     test_support::vx_of(r.y, r.layout) = -v;
     EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + g / (r.k * v), 1e-12 * g / (r.k * v));
     test_support::vx_of(r.y, r.layout) = v;  // forwards they stay at their cap: nothing foreseen
+    EXPECT_EQ(r.law->foreseen_event_time(r.view()), std::numeric_limits<double>::infinity());
+}
+
+TEST(QuasiStaticStiffness, PlanarJunctionsGiveMinusTheirForceJacobianPinnedSlidingAndDislocated) {
+    // In the plane a junction held at its bound turns with the slip: its tangent is k_s r/|v| across
+    // its force and nothing along it, which the differences of its forces must reproduce, as k_s
+    // for a pinned junction and for an active one inside its bound.
+    testing::Rig r = three_junctions_each(3);
+    const double u = r.p / r.k, h = 1e-9 * u;
+    r.move_in_plane(1, {0.3 * u, -0.2 * u});  // block 1 pinned, loaded obliquely
+    r.move_in_plane(0, {0.71 * u, 0.1 * u});  // block 0's junctions break: sliding at mu_d p
+    ASSERT_EQ(r.planar_block(0).sliding(), 3);
+    EXPECT_TRUE(r.law->quasi_static_regime(r.view()));
+    auto at = [&](const Eigen::Vector2d& by) {
+        Eigen::VectorXd y = r.y;
+        for (int axis = 0; axis < 2; ++axis) y[r.layout.position_index(0, axis)] += by[axis];
+        return y;
+    };
+    // On past the bound, obliquely: held, the tangent of the return map.
+    EXPECT_LT(stiffness_mismatch(*r.law, r.layout, at({0.05 * u, 0.2 * u}), r.t, h), relative_tolerance);
+    // Back inside the bound: k_s each.
+    EXPECT_LT(stiffness_mismatch(*r.law, r.layout, at({-0.3 * u, 0.05 * u}), r.t, h), relative_tolerance);
+    // t_s later: dislocated at their cap, f = g + f^n s.
+    while (r.planar_block(0).sliding() > 0) r.hold(1);
+    ASSERT_EQ(r.planar_block(0).dislocated(), 3);
+    EXPECT_LT(stiffness_mismatch(*r.law, r.layout, at({0.1 * u, -0.3 * u}), r.t, h), relative_tolerance);
+    EXPECT_LT(stiffness_mismatch(*r.law, r.layout, at({-0.2 * u, 0.1 * u}), r.t, h), relative_tolerance);
+}
+
+TEST(QuasiStaticStiffness, PlanarDislocatedJunctionsForeseeTheirSeparationAgainstTheirDirection) {
+    testing::Rig r = three_junctions_each(3);
+    const double u = r.p / r.k;
+    r.move_in_plane(0, {0.6 * u, 0.4 * u});  // |f| = 0.72 p: all three break along (3, 2)/sqrt(13)
+    while (r.planar_block(0).pinned() + r.planar_block(0).sliding() > 0) r.hold(1);
+    ASSERT_EQ(r.planar_block(0).dislocated(), 3);
+    const Eigen::Vector2d s = r.planar_block(0).junction(0).sign;
+    const double g = r.planar_block(0).tangential(0).dot(s);
+    ASSERT_GT(g, 0);
+    // Moving at v, g . s falls at k_s v . s: separation (C6) after g . s / (k_s |v . s|), whichever
+    // way v points across s.
+    const Eigen::Vector2d v(-2e-3, 1e-3);
+    ASSERT_LT(v.dot(s), 0);
+    for (int axis = 0; axis < 2; ++axis) r.y[r.layout.velocity_index(0, axis)] = v[axis];
+    const double expected = g / (r.k * -v.dot(s));
+    EXPECT_NEAR(r.law->foreseen_event_time(r.view()), r.t + expected, 1e-12 * expected);
+    // Along s (and across it) they stay loaded: nothing foreseen.
+    for (int axis = 0; axis < 2; ++axis) r.y[r.layout.velocity_index(0, axis)] = 1e-3 * s[axis];
     EXPECT_EQ(r.law->foreseen_event_time(r.view()), std::numeric_limits<double>::infinity());
 }
 
