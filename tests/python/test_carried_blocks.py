@@ -2,6 +2,7 @@
 text kept, its stamp this tree's with the commit it was made at and the cases checked; and refused,
 changing nothing, when a case run again wrote anything else."""
 import os
+import re
 import subprocess
 
 import pytest
@@ -10,9 +11,9 @@ from frictionlab import carried_blocks, doc_blocks
 
 
 def sweep(folder, loading_curve="time,driving_force\n0,0\n1,2\n", wall=1.0, scene_hash="0713c9b9a5ed576d",
-          load="{type: normal_load, total_force: 400}", threads=1):
-    """A sweep of two cases, each with a table, its record of the scene hash, and a run record."""
-    for case in ("base_seed-1", "base_seed-2"):
+          load="{type: normal_load, total_force: 400}", threads=1, cases=("base_seed-1", "base_seed-2")):
+    """A sweep of two cases (or `cases`), each with a table, its record of the scene hash, and a run record."""
+    for case in cases:
         os.makedirs(os.path.join(folder, "cases", case, "logs"))
         with open(os.path.join(folder, "cases", case, "loading_curve.csv"), "w") as f:
             f.write(loading_curve)
@@ -167,3 +168,15 @@ def test_a_block_that_was_not_current_where_it_was_stamped_is_not_carried(reposi
     readme.write_text(readme.read_text().replace("fingerprint=", "fingerprint=0"))
     with pytest.raises(ValueError, match=f"was not current at {made}"):
         carried_blocks.carry_same_sources("li2020-claims", [str(readme)])
+
+
+def test_checked_counts_the_runs_the_block_was_made_from_not_those_run_again(tree, tmp_path):
+    # The stamp says the block came from 2 runs (scenes=2:); checking one of them says 1/2, even when
+    # the first runs are at hand only for that one.
+    readme = str(tree / "README.md")
+    old, new = sweep(str(tmp_path / "old"), cases=("base_seed-1",)), sweep(str(tmp_path / "new"), cases=("base_seed-1",))
+    assert "checked=1/2" in carried_blocks.carry("li2020-claims", [readme], old, new)
+    # A stamp without scenes= (a block made from a test's runs) takes the count it is given.
+    text = open(readme).read()
+    open(readme, "w").write(re.sub(r" scenes=\S+", "", text))
+    assert "checked=1/45" in carried_blocks.carry("li2020-claims", [readme], old, new, runs=45)

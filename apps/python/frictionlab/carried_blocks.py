@@ -41,7 +41,7 @@ import re
 import subprocess
 import sys
 import tempfile
-from typing import Iterable, List
+from typing import Iterable, List, Optional
 
 import yaml
 
@@ -220,9 +220,23 @@ def differences(old_case: str, new_case: str) -> List[str]:
     return found
 
 
-def carry(name: str, documents: Iterable[str], old_sweep: str, new_sweep: str) -> str:
+def _runs_made_from(name: str, documents: Iterable[str]) -> Optional[int]:
+    """The number of runs block `name` was made from, as its stamp's `scenes=N:HASH` says; None if
+    its stamp does not say."""
+    for document in documents:
+        with open(document) as f:
+            opening = re.search(doc_blocks.OPENING.format(name=re.escape(name)), f.read())
+        if opening:
+            scenes = _stamp_fields(opening["stamp"]).get("scenes", "")
+            return int(scenes.split(":")[0]) if ":" in scenes else None
+    return None
+
+
+def carry(name: str, documents: Iterable[str], old_sweep: str, new_sweep: str, runs: Optional[int] = None) -> str:
     """Restamps block `name` in `documents` for this tree (see the module's docstring); returns the
-    new stamp, or raises ValueError naming each case and output that differs, changing nothing."""
+    new stamp, or raises ValueError naming each case and output that differs, changing nothing.
+    `runs`: how many runs the block was made from, for its stamp's checked=K/N; by default its stamp's
+    `scenes=N:`, else the cases of `old_sweep` (which then holds every run the block was made from)."""
     cases = sorted(os.listdir(os.path.join(new_sweep, "cases")))
     if not cases:
         raise ValueError(f"{new_sweep}: no case was run again, nothing shows the outputs unchanged")
@@ -235,7 +249,7 @@ def carry(name: str, documents: Iterable[str], old_sweep: str, new_sweep: str) -
         problems += [f"{case}: {rel}" for rel in differences(old_case, os.path.join(new_sweep, "cases", case))]
     if problems:
         raise ValueError("the outputs differ, the block must be regenerated:\n  " + "\n  ".join(problems))
-    runs = len(os.listdir(os.path.join(old_sweep, "cases")))
+    runs = runs or _runs_made_from(name, documents) or len(os.listdir(os.path.join(old_sweep, "cases")))
     return _restamp(name, documents, f"{len(cases)}/{runs}")
 
 
@@ -317,6 +331,8 @@ def main(argv=None) -> int:
     parser.add_argument("documents", nargs="+", help="the files that hold it")
     parser.add_argument("--old", help="the sweep the block was made from")
     parser.add_argument("--new", help="the same sweep's cases run again with this tree")
+    parser.add_argument("--runs", type=int, help="how many runs the block was made from, when its stamp does not "
+                        "say (scenes=N:...) and --old holds only some of them")
     parser.add_argument("--same-sources", action="store_true",
                         help="carry without runs when nothing the block depends on changed since its stamp's commit")
     args = parser.parse_args(argv)
@@ -324,7 +340,7 @@ def main(argv=None) -> int:
         parser.error("give either --old and --new, or --same-sources")
     try:
         print(carry_same_sources(args.name, args.documents) if args.same_sources else
-              carry(args.name, args.documents, args.old, args.new))
+              carry(args.name, args.documents, args.old, args.new, args.runs))
     except ValueError as e:
         print(f"error: {e}", file=sys.stderr)
         return 1
