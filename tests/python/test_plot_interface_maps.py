@@ -9,6 +9,7 @@ import pytest
 
 from conftest import plot_command
 from frictionlab.plot import NothingToDraw, interface_maps
+from frictionlab.plot._clock import time_origin
 from frictionlab.plot.interface_figures import STILL, interface_series
 
 
@@ -28,6 +29,20 @@ def test_each_map_is_the_interface_over_x_and_y_up_to_the_fastest_snapshot(run_3
                                np.sort(np.maximum(speeds[fastest], STILL)))
     assert axes[-1].get_xlabel() == "x (mm)" and "ms after loading started" in axes[-1].get_title(loc="left")
     plt.close(axes[0].figure)
+
+
+def test_until_a_time_the_maps_end_at_the_last_snapshot_by_then(run_3d):
+    times, _, _, speeds = interface_series(run_3d)
+    t0, _ = time_origin(run_3d)  # the series' times are on the run's clock
+    until = times[2] - t0 + 1e-9  # just after the third snapshot, in time since loading
+    axes = interface_maps(run_3d, maps=2, until=until)
+    assert len(axes) == 2
+    np.testing.assert_allclose(np.sort(axes[-1].collections[0].get_array().ravel()),
+                               np.sort(np.maximum(speeds[2], STILL)))
+    assert f"up to {until * 1e3:g} ms after loading started" in axes[0].figure._suptitle.get_text()
+    plt.close(axes[0].figure)
+    with pytest.raises(NothingToDraw, match="no snapshot by"):
+        interface_maps(run_3d, until=-1.0)
 
 
 def test_a_2d_run_has_no_interface_maps(csv_run):

@@ -50,18 +50,25 @@ def interface_series(run):
     return np.array(times), x, y, np.array(speeds)
 
 
-def interface_maps(run, ax=None, maps=6):
+def interface_maps(run, ax=None, maps=6, until=None):
     """`maps` maps of the interface's slip speed, one above the other, at the snapshots up to and
-    including the one whose mean speed is the largest; one logarithmic colour scale from STILL."""
+    including the one whose mean speed is the largest, or the last at or before `until` (s since
+    loading started: a nucleation, say, from a global slip's t_start_since_loading); one logarithmic
+    colour scale from STILL."""
     times, x, y, speeds = interface_series(run)
-    last = int(np.argmax(speeds.mean(axis=1)))
+    t0, since = time_origin(run)
+    if until is None:
+        last = int(np.argmax(speeds.mean(axis=1)))
+    else:
+        last = int(np.searchsorted(times - t0, until, side="right")) - 1
+        if last < 0:
+            raise NothingToDraw(f"{run_directory(run)}: no snapshot by {until} s after {since}")
     shown = list(range(max(0, last - maps + 1), last + 1))
     xs, ys = np.unique(x), np.unique(y)
     height = 0.45 + 6.5 * np.ptp(ys) / np.ptp(xs)  # inches a map takes: its title and the interface's shape
     axes = np.ravel(axes_of(ax, len(shown), 1, figsize=(8, 1.0 + height * len(shown)), sharex=True, squeeze=False))
     column, row = np.searchsorted(xs, x), np.searchsorted(ys, y)
     norm = matplotlib.colors.LogNorm(STILL, max(float(speeds[shown].max()), 10 * STILL))
-    t0, since = time_origin(run)
     for k, ax_k in zip(shown, axes):
         speed = np.full((len(ys), len(xs)), np.nan)
         speed[row, column] = np.maximum(speeds[k], STILL)
@@ -71,5 +78,6 @@ def interface_maps(run, ax=None, maps=6):
         ax_k.set_title(f"{(times[k] - t0) * 1e3:.3f} ms after {since}", fontsize=8, loc="left")
     axes[-1].set_xlabel("x (mm)")
     axes[0].figure.colorbar(image, ax=list(axes), label="slip speed |v| (m/s)", shrink=0.9)
-    axes[0].figure.suptitle(f"{run_label(run)}\nthe interface from below, up to its fastest snapshot", fontsize=8)
+    up_to = "its fastest snapshot" if until is None else f"{until * 1e3:g} ms after {since}"
+    axes[0].figure.suptitle(f"{run_label(run)}\nthe interface from below, up to {up_to}", fontsize=8)
     return axes
