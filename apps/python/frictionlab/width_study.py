@@ -107,7 +107,7 @@ def figure(study: List[Case], path: str) -> None:
             ax.errorbar([c.width * 1e3], [e.estimate * scale], yerr=error, fmt="o", color="C0", capsize=3)
         ax.set_xlabel("width n_y a (mm)")
         ax.set_ylabel(label)
-        ax.set_xscale("log")
+        ax.set_xlim(left=0)
     axes[0].legend(loc="best", fontsize="small")
     fig.suptitle("The headline's 3D twin against its width (means over seeds, 95 % bootstrap intervals)")
     fig.tight_layout()
