@@ -18,9 +18,12 @@ std::string interface_file(const ContactArea::Params& p) { return p.prefix + ".c
 std::string block_file(const ContactArea::Params& p, Index block) {
     return fmt::format("{}_block_{}.csv", p.prefix, block);
 }
+std::string map_file(const ContactArea::Params& p) { return p.prefix + "_map.csv"; }
 
 std::vector<OutputName> outputs(const ContactArea::Params& p) {
     auto out = table_outputs("prefix", interface_file(p), p.format);
+    if (p.map)
+        for (auto& o : table_outputs("prefix", map_file(p), p.format)) out.push_back(std::move(o));
     for (double block : p.blocks)
         if (block >= 0 && block < 1e15 && block == std::floor(block))  // others are refused by the blocks rule
             for (auto& o : table_outputs("prefix", block_file(p, static_cast<Index>(block)), p.format))
@@ -98,6 +101,11 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
     s.add("loading_stage", &Params::loading_stage,
           "The slip_since_loading column counts from the first observation in the stage of this name.")
         .names_a_stage();
+    s.add("map", &Params::map,
+          "Also write <prefix>_map.csv: the real contact area of every interface block (m^2, N pi rbar^2), a row "
+          "per observation and a column block_<k> per block, as interface_history orders them (on a 2D "
+          "interface, its interface_blocks table gives each block's place). Needs a law that publishes its "
+          "junctions' area (three_state_junctions).");
     add_table_format_param(s, &Params::format);
     s.rule("blocks", [](const Params& p) -> std::string {
         for (double b : p.blocks)
@@ -110,7 +118,7 @@ ParamSpec<ContactArea::Params> ContactArea::spec() {
         return "";
     });
     add_outputs(s, outputs);
-    s.dimensions({2}, "a block's neighbours and bond forces in the lattice's x-z plane");
+    s.dimensions({2, 3});
     return s;
 }
 
@@ -120,20 +128,41 @@ ContactArea::ContactArea(const Params& p, const Context& ctx)
                                    "it reports the junction phases (pinned, sliding, dislocated) "
                                    "of a friction law with junctions (two_state_junctions, "
                                    "three_state_junctions): remove this observer, or read slip, velocity and "
-                                   "friction along the interface from interface_history")) {}
+                                   "friction along the interface from interface_history")) {
+    if (params_.map && !(ctx.quantities && ctx.quantities->find_scalar("junction_area")))
+        throw InputError(
+            "map: the friction law publishes no junction area (pi rbar^2), so a block's real contact area is "
+            "unknown: use three_state_junctions, or set map: false and read each block's pinned fraction from "
+            "interface_history");
+}
 
-double ContactArea::bond_force_x(double k, double r0, double xi, double zi, double xj, double zj) {
-    const double dx = xj - xi, dz = zj - zi;
-    const double r = std::hypot(dx, dz);
+double ContactArea::bond_force_x(double k, double r0, double dx, double dy, double dz) {
+    // On a line the same length as before the body had a width, to the last bit.
+    const double r = dy == 0 ? std::hypot(dx, dz) : std::hypot(dx, dy, dz);
     return k * (r - r0) * dx / r;
 }
 
-ContactArea::Bond ContactArea::bond_between(const Body& body, Index node, Index neighbour) const {
+ContactArea::Bond ContactArea::bond_between(const Body& body, Index node, Index neighbour) {
+    const Eigen::ArrayXXd& p = body.reference_position;
     for (const auto& [a, b] : body.bonds)
         if ((a == node && b == neighbour) || (a == neighbour && b == node))
-            return {neighbour,
-                    std::hypot(body.x0()(neighbour) - body.x0()(node), body.z0()(neighbour) - body.z0()(node))};
+            return {neighbour, body.dimension() == 2
+                                   ? std::hypot(p(neighbour, 0) - p(node, 0), p(neighbour, 1) - p(node, 1))
+                                   : (p.row(neighbour) - p.row(node)).matrix().norm()};
     return {};
+}
+
+Index ContactArea::neighbour_along_x(const Body& body, const std::vector<Index>& interface, Index block, int side) {
+    // On a line the blocks are in x order; on a grid the neighbour is in the same row across.
+    const Eigen::ArrayXXd& p = body.reference_position;
+    const Index node = interface[block];
+    Index nearest = -1;
+    for (Index other : interface) {
+        const double dx = side * (p(other, 0) - p(node, 0));
+        const bool same_row = body.dimension() == 2 || p(other, 1) == p(node, 1);
+        if (same_row && dx > 0 && (nearest < 0 || dx < side * (p(nearest, 0) - p(node, 0)))) nearest = other;
+    }
+    return nearest;
 }
 
 void ContactArea::begin(const RunView& view) {
@@ -154,8 +183,9 @@ void ContactArea::begin(const RunView& view) {
         Block b;
         b.index = i;
         b.node = interface_[i];
-        if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
-        if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
+        for (auto [side, bond] : {std::pair{-1, &b.left}, std::pair{+1, &b.right}})
+            if (const Index neighbour = neighbour_along_x(body, interface_, i, side); neighbour >= 0)
+                *bond = bond_between(body, b.node, neighbour);
         b.table = open_table(view.output_directory / block_file(params_, i), block_columns, count_types, view.info,
                              params_.format, view.resuming);
         blocks_.push_back(std::move(b));
@@ -165,14 +195,22 @@ void ContactArea::begin(const RunView& view) {
     if (junction_area_) columns.push_back("contact_area");
     interface_table_ = open_table(view.output_directory / interface_file(params_), columns, count_types, view.info,
                                   params_.format, view.resuming);
-    row_.reserve(block_columns.size());
+    if (params_.map) {
+        std::vector<std::string> map_columns{"time"};
+        ColumnTypes map_types{{}, {}, {{"time", "s"}}};
+        for (Index k = 0; k < n; ++k) map_types.units[map_columns.emplace_back(fmt::format("block_{}", k))] = "m^2";
+        map_table_ = open_table(view.output_directory / map_file(params_), map_columns, map_types, view.info,
+                                params_.format, view.resuming);
+    }
+    row_.reserve(std::max<std::size_t>(block_columns.size(), n + 1));
 }
 
 double ContactArea::bond_force(const RunView& view, const Block& b, const Bond& bond) const {
     if (bond.neighbour < 0 || stiffness_ <= 0) return nan;
     const StageView& s = view.state;
-    return bond_force_x(stiffness_, bond.rest_length, s.x(b.node), s.z(b.node), s.x(bond.neighbour),
-                        s.z(bond.neighbour));
+    const double dy = s.dimension() == 3 ? s.position(bond.neighbour, 1) - s.position(b.node, 1) : 0.0;
+    return bond_force_x(stiffness_, bond.rest_length, s.x(bond.neighbour) - s.x(b.node), dy,
+                        s.z(bond.neighbour) - s.z(b.node));
 }
 
 void ContactArea::observe(const RunView& view) {
@@ -200,6 +238,13 @@ void ContactArea::observe(const RunView& view) {
     row_.assign({t, step, stage, total, np, ns, nd, ratio(np, total)});
     if (junction_area_) row_.push_back(total * *junction_area_);
     interface_table_->row(row_);
+
+    if (map_table_) {
+        row_.assign({t});
+        for (Index i = 0; i < pinned.size(); ++i)
+            row_.push_back((pinned(i) + sliding(i) + dislocated(i)) * *junction_area_);
+        map_table_->row(row_);
+    }
 }
 
 }  // namespace frictionlab

@@ -36,10 +36,14 @@ namespace frictionlab {
 ///                              are not included. NaN at the interface's ends, where no such spring
 ///                              is in Body::bonds, or when the bulk model states no stiffness.
 ///
+/// On a 2D interface (a 3D body) block i is the i-th of the interface set (interface_history's
+/// column block_<i>), its neighbours and bonds those along x in its row, its bond lengths in 3D.
+///
 /// Whole interface, <prefix>.csv: total junction count N = Σ_i (N_p + N_s + N_d), the pinned, sliding
 /// and dislocated totals and the pinned fraction. The real contact area A = N π r̄² (Li2020 §2.2) is a
 /// column only when an effect publishes the scalar junction_area (π r̄², m²): the observer does not
-/// know r̄ otherwise, and N is proportional to A.
+/// know r̄ otherwise, and N is proportional to A. With `map`, <prefix>_map.csv holds every block's A
+/// at every observation: the contact map the experiments image (Rubinstein et al. 2004).
 ///
 /// Reads the junction counts (required: a friction law with junctions), positions and velocities;
 /// nothing runs between observations.
@@ -57,6 +61,7 @@ public:
         std::vector<double> blocks{5};  // whole numbers; real_list is the scene's list type
         std::string prefix = "contact_area";
         std::string loading_stage = "load";
+        bool map = false;
         TableFormat format = TableFormat::csv;
     };
     static constexpr std::string_view type = "contact_area";
@@ -66,9 +71,12 @@ public:
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
 
-    /// x-force (N) on node `i` from a straight spring of stiffness k to node `j` whose reference
-    /// length is r0: k (r - r0) (x_j - x_i) / r.
-    static double bond_force_x(double k, double r0, double xi, double zi, double xj, double zj);
+    /// x-force (N) on a node from a straight spring of stiffness k and reference length r0 to a
+    /// node at (dx, dy, dz) from it (dy = 0 in 2D): k (r - r0) dx / r.
+    static double bond_force_x(double k, double r0, double dx, double dy, double dz);
+    /// The interface block next to `block` along x on `side` (-1 behind, +1 ahead) in its row, as a
+    /// node; -1 at the interface's end.
+    static Index neighbour_along_x(const Body& body, const std::vector<Index>& interface, Index block, int side);
 
 private:
     /// A straight interface spring from a block to one neighbour.
@@ -89,7 +97,7 @@ private:
         }
     };
 
-    Bond bond_between(const Body& body, Index node, Index neighbour) const;
+    static Bond bond_between(const Body& body, Index node, Index neighbour);
     double bond_force(const RunView& view, const Block& b, const Bond& bond) const;
 
     Params params_;
@@ -101,7 +109,7 @@ private:
     const double* junction_area_ = nullptr;
     double stiffness_ = 0;
     long long last_step_ = -1;
-    std::unique_ptr<TableWriter> interface_table_;
+    std::unique_ptr<TableWriter> interface_table_, map_table_;
     std::vector<double> row_;
 };
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,11 @@ namespace frictionlab {
 ///   interface_normal_force.csv     normal_force of each block (N), when the scene publishes it
 ///   interface_friction_force.csv   friction_force of each block (N), when the friction law publishes it
 ///   interface_shear_ratio.csv      friction_force / normal_force of each block, when both exist
+/// and on a 2D interface (a 3D body's base), whose blocks form a grid:
+///   interface_velocity_y.csv       v_y of each block, across the sliding direction (m/s)
+///   interface_slip_y.csv           y - y0 of each block (m)
+///   interface_blocks.csv           each block's column (block), node and reference place (x0, y0),
+///                                  a row per block, so that a row of any table above is a 2D map
 /// (or interface_*.h5 with `format: hdf5`). Rows cost a pass over the interface at the observer's cadence; nothing in
 /// between.
 class InterfaceHistory final : public Observer {
@@ -37,6 +43,11 @@ public:
     void observe(const RunView& view) override;
 
 private:
+    using AddTable = std::function<void(const char* file, const std::string& unit,
+                                        std::function<double(const RunView&, Index block)> value)>;
+    /// The across components and the blocks' places, on a 2D interface.
+    void add_across(const RunView& view, const AddTable& add);
+
     struct Table {
         std::unique_ptr<TableWriter> writer;
         std::function<double(const RunView&, Index block)> value;

@@ -17,9 +17,9 @@ import os
 from typing import List, Optional, Sequence
 
 from ._errors import Diagnostic, SceneError
-from ._run import Run, Table, open_run, read_table
+from ._run import InterfaceMap, Run, Table, open_run, read_table
 
-__all__ = ["Scene", "Run", "Table", "SceneError", "Diagnostic", "InputError", "RunError", "open_run", "read_table",
+__all__ = ["Scene", "Run", "Table", "InterfaceMap", "SceneError", "Diagnostic", "InputError", "RunError", "open_run", "read_table",
            "types", "doc", "version"]
 _FROM_CORE = ("_core", "InputError", "RunError", "__version__")
 

@@ -36,6 +36,12 @@ class Table:
     def to_records(self) -> np.ndarray: ...
     def to_pandas(self, index: Optional[str] = ...) -> Any: ...
 
+class InterfaceMap(NamedTuple):
+    time: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    values: np.ndarray
+
 class Run:
     directory: str
     metadata: Dict[str, Any]
@@ -49,6 +55,7 @@ class Run:
     def frame(self, name: str, index: Optional[str] = ...) -> Any: ...
     @property
     def series(self) -> Dict[str, List[Tuple[float, str]]]: ...
+    def interface_map(self, name: str) -> InterfaceMap: ...
 
 class Scene:
     @classmethod

@@ -3,7 +3,7 @@ import csv
 import glob
 import os
 import xml.etree.ElementTree as ElementTree
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Dict, List, NamedTuple, Optional, Sequence, Tuple
 
 import numpy as np
 import yaml
@@ -110,6 +110,15 @@ def _number(cell: str) -> float:
         return float("nan")
 
 
+class InterfaceMap(NamedTuple):
+    """An interface table of a 3D run as maps (Run.interface_map): values[row, iy, ix] at time[row]
+    for the block at (x[ix], y[iy])."""
+    time: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    values: np.ndarray
+
+
 class Run:
     """A run's output directory.
 
@@ -120,6 +129,7 @@ class Run:
     arrays(name) / frame(name, index=None)  the same as a NumPy structured array / pandas DataFrame,
                 with integer columns as int64 and flags as bool; frame(name, index="time") is indexed by time
     series      the VTU series (ParaView .pvd files): {name: [(time, file), ...]}
+    interface_map(name)  a table with a column per interface block of a 3D run as maps over x and y
     """
 
     def __init__(self, directory: str):
@@ -160,6 +170,21 @@ class Run:
         """The table NAME as a pandas DataFrame (integers as int64, flags as bool), indexed by the
         column `index` if given, e.g. run.frame("loading_curve", index="time")."""
         return self.table(name).to_pandas(index)
+
+    def interface_map(self, name: str) -> "InterfaceMap":
+        """The table NAME of a 3D run, whose columns block_<k> are the interface's blocks
+        (interface_history's tables, contact_area's map), as maps: InterfaceMap(time, x, y, values)
+        with x and y the blocks' places (m, increasing) and values[row, iy, ix] the block at (x[ix],
+        y[iy]), placed by the run's interface_blocks table."""
+        if "interface_blocks" not in self._files:
+            raise KeyError(f"{self.directory} has no interface_blocks table: its interface is not a grid "
+                           "(a 2D run), or it has no interface_history observer")
+        blocks, table = self.table("interface_blocks"), self.table(name)
+        x, y = np.unique(blocks["x0"]), np.unique(blocks["y0"])
+        values = np.full((len(table), len(y), len(x)), np.nan)
+        for block, x0, y0 in zip(blocks.typed_column("block"), blocks["x0"], blocks["y0"]):
+            values[:, np.searchsorted(y, y0), np.searchsorted(x, x0)] = table[f"block_{block}"]
+        return InterfaceMap(table["time"], x, y, values)
 
     @property
     def series(self) -> Dict[str, List[Tuple[float, str]]]:

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <spdlog/logger.h>
 
@@ -246,9 +247,47 @@ TEST(ContactAreaSpec, BlocksAreWholeNumbers) {
 
 TEST(ContactAreaBondForce, ExactForAKnownStretch) {
     // Up to the rounding of 1.002e-3 - 1e-3.
-    EXPECT_NEAR(ContactArea::bond_force_x(1e7, 1e-3, 0, 0, 1.002e-3, 0), 1e7 * 2e-6, 1e-10);
-    EXPECT_NEAR(ContactArea::bond_force_x(1e7, 1e-3, 0, 0, -1.002e-3, 0), -1e7 * 2e-6, 1e-10);
-    EXPECT_DOUBLE_EQ(ContactArea::bond_force_x(1e7, 1e-3, 0, 0, 0, 1.5e-3), 0.0) << "a vertical bond pulls in z only";
+    EXPECT_NEAR(ContactArea::bond_force_x(1e7, 1e-3, 1.002e-3, 0, 0), 1e7 * 2e-6, 1e-10);
+    EXPECT_NEAR(ContactArea::bond_force_x(1e7, 1e-3, -1.002e-3, 0, 0), -1e7 * 2e-6, 1e-10);
+    EXPECT_DOUBLE_EQ(ContactArea::bond_force_x(1e7, 1e-3, 0, 0, 1.5e-3), 0.0) << "a vertical bond pulls in z only";
+    // In 3D a neighbour pushed 0.3 um across stretches the bond by its length's second order:
+    // r - a = d^2 / (r + a), F_x = k (r - a) a / r. The function forms r - a by subtraction, which
+    // keeps 1 - eps a / (r - a) of it: 2.5e-9 relative here.
+    const double a = 1e-3, d = 3e-7, r = std::sqrt(a * a + d * d), exact = 1e7 * d * d / (r + a) * a / r;
+    EXPECT_NEAR(ContactArea::bond_force_x(1e7, a, a, d, 0), exact, 1e-8 * exact);
+}
+
+TEST_F(ContactAreaTest, TheMapHoldsEveryBlocksRealContactAreaAndSumsToTheWhole) {
+    publish();
+    q_.scalar("junction_area", "m2", "test") = 3e-10;
+    static spdlog::logger quiet("test");
+    ContactArea::Params p;
+    p.blocks = {1};
+    p.map = true;
+    ContactArea o(p, Context{quiet, 0, &body_, &q_, nullptr, "observers[0]"});
+    o.begin(view());
+    observe_at(o, 1e-5, 4, 3, 1, system_->y());
+    const Table map = read_table(dir_ / "contact_area_map.csv");
+    const Table whole = read_table(dir_ / "contact_area.csv");
+    ASSERT_EQ(map.columns.size(), static_cast<std::size_t>(nx + 2)) << "time, time_since_loading, a block each";
+    EXPECT_DOUBLE_EQ(map.at(0, "block_0"), 10 * 3e-10);
+    EXPECT_DOUBLE_EQ(map.at(0, "block_1"), 8 * 3e-10) << "pinned, sliding and dislocated junctions all touch";
+    double sum = 0;
+    for (Index k = 0; k < nx; ++k) sum += map.at(0, fmt::format("block_{}", k));
+    EXPECT_NEAR(sum, whole.at(0, "contact_area"), 1e-22);
+}
+
+TEST_F(ContactAreaTest, AMapWithoutAJunctionAreaIsRefusedWithWhatToDo) {
+    publish();
+    static spdlog::logger quiet("test");
+    ContactArea::Params p;
+    p.map = true;
+    try {
+        ContactArea o(p, Context{quiet, 0, &body_, &q_, nullptr, "observers[0]"});
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("three_state_junctions"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
