@@ -51,7 +51,7 @@ void RuptureEventDetector::observe(double t, const InterfaceObservation& now, do
         if (e.nucleating && !within_nucleation_window(e.event, driving_force))
             e.nucleating =
                 std::any_of(open_.begin(), open_.end(), [&](const Open& o) { return may_follow(e.event, o.event); });
-    end_quiet(t, false);  // before joining: a block rupturing now must not reopen an ended event
+    end_quiet(t, now.slip, false);  // before joining: a block rupturing now must not reopen an ended event
     join(t, before, now, true);
     follow(now);
     previous_slip_ = now.slip;
@@ -182,15 +182,20 @@ void RuptureEventDetector::follow(const InterfaceObservation& now) {
             e.in_contact[k] |= now.contact(i);
             if (!std::isnan(e.first_rupture[k])) e.max_slip = std::max(e.max_slip, slip(i) - o.base_slip(i));
         }
+        if (last_sampled_t_ <= o.last_rupture + options_.quiet_time) {
+            o.end_time = last_sampled_t_, o.end_slip = slip, o.after_time = nan;
+        } else if (std::isnan(o.after_time)) {
+            o.after_time = last_sampled_t_, o.after_slip = slip;
+        }
     }
     sampled_slip_ = slip;
 }
 
-void RuptureEventDetector::end_quiet(double t, bool all) {
+void RuptureEventDetector::end_quiet(double t, const Eigen::ArrayXd& slip, bool all) {
     const double reach = t - options_.quiet_time * (1 + 1e-9);
     for (std::size_t k = 0; k < open_.size();) {
         if (all || open_[k].last_rupture < reach) {
-            finish(open_[k], !all);
+            finish(open_[k], t, slip, !all);
             open_.erase(open_.begin() + static_cast<std::ptrdiff_t>(k));
         } else {
             ++k;
@@ -199,14 +204,26 @@ void RuptureEventDetector::end_quiet(double t, bool all) {
 }
 
 void RuptureEventDetector::close() {
-    end_quiet(last_t_, true);
+    end_quiet(last_t_, sampled_slip_, true);
     for (Ended& e : ended_) e.nucleating = false;  // no rupture will follow them now
 }
 
-void RuptureEventDetector::finish(Open& o, bool finished) {
+Eigen::ArrayXd RuptureEventDetector::slip_at_end(const Open& o, double end, double t, const Eigen::ArrayXd& slip) {
+    const double after_time = std::isnan(o.after_time) ? t : o.after_time;
+    const Eigen::ArrayXd& after_slip = std::isnan(o.after_time) ? slip : o.after_slip;
+    if (!(after_time > o.end_time)) return o.end_slip;
+    const double w = std::clamp((end - o.end_time) / (after_time - o.end_time), 0.0, 1.0);
+    return o.end_slip + w * (after_slip - o.end_slip);
+}
+
+void RuptureEventDetector::finish(Open& o, double t, const Eigen::ArrayXd& now_slip, bool finished) {
     RuptureEvent e = std::move(o.event);
     e.finished = finished;
-    const Eigen::ArrayXd slip = sampled_slip_ - o.base_slip;
+    // An ended event's slip is read at its end, quiet_time after its last rupture, not at the
+    // observation that found it ended (up to `every` later, while its blocks may still creep);
+    // one the run ended in, at the last observation.
+    const Eigen::ArrayXd slip =
+        (finished ? slip_at_end(o, o.last_rupture + options_.quiet_time, t, now_slip) : sampled_slip_) - o.base_slip;
     e.block_slip.assign(slip.begin(), slip.end());
     e.min_slip = options_.min_slip;
     bool significant = false;

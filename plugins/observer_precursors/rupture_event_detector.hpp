@@ -224,9 +224,13 @@ private:
         Eigen::ArrayXd base_slip;  // the blocks' slip at the observation before it started
         Eigen::ArrayXd fast_slip;  // per block, its slip since while it slipped fast
         double last_rupture = 0;   // the latest observation with one of its blocks rupturing
+        // The slip at the last observation at or before its end (quiet_time after its last rupture)
+        // and at the first after it, to read its slip at its end whatever the cadence.
+        double end_time = 0, after_time = std::numeric_limits<double>::quiet_NaN();
+        Eigen::ArrayXd end_slip, after_slip;
         template <class Archive>
         void serialize(Archive& ar) {
-            ar(id, event, base_slip, fast_slip, last_rupture);
+            ar(id, event, base_slip, fast_slip, last_rupture, end_time, after_time, end_slip, after_slip);
         }
     };
 
@@ -250,9 +254,12 @@ private:
     Open* find(int id);
     /// The open events' contact, largest slip and fast slip, at every observation.
     void follow(const InterfaceObservation& now);
-    /// Ends the events that no block can join any more (all but none when `all`, at the end).
-    void end_quiet(double t, bool all);
-    void finish(Open& e, bool finished);
+    /// Ends the events that no block can join any more at the observation at t, whose slip is
+    /// `slip` (every open event when `all`, at the end: unfinished).
+    void end_quiet(double t, const Eigen::ArrayXd& slip, bool all);
+    void finish(Open& e, double t, const Eigen::ArrayXd& slip, bool finished);
+    /// The blocks' slip at an ended event's end, interpolated between the observations around it.
+    static Eigen::ArrayXd slip_at_end(const Open& o, double end, double t, const Eigen::ArrayXd& slip);
     /// The span along `positions`, each block covering l_s clipped to [0, extent], from the first to
     /// the last block flagged.
     template <class Flagged>
