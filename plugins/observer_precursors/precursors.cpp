@@ -241,12 +241,17 @@ Precursors::Precursors(const Params& p, const Context& ctx) : params_(spec().che
 
     if (std::isnan(params_.quiet_speed)) {
         const double v = rupture_scales::find(q, rupture_scales::drive_velocity_name);
-        if (!(v > 0))
+        if (std::isnan(v) && !ctx.effects_refused)
             throw InputError(
                 "quiet_speed is auto, half the drive's speed, but no loader of this scene publishes a "
                 "drive_velocity (a driving_spring or plate_springs does): set quiet_speed in m/s");
-        params_.quiet_speed = quiet_fraction_of_drive * v;
-        ctx.resolved("quiet_speed", number(params_.quiet_speed), fmt::format("half the drive's {} m/s", number(v)));
+        if (v == 0)
+            throw InputError(
+                "quiet_speed is auto, half the drive's speed, but the drive stands still (its velocity is 0): "
+                "set quiet_speed in m/s, or give the drive a velocity");
+        params_.quiet_speed = quiet_fraction_of_drive * v;  // NaN when the drive was refused: no run follows
+        if (v > 0)
+            ctx.resolved("quiet_speed", number(params_.quiet_speed), fmt::format("half the drive's {} m/s", number(v)));
     }
     if (std::isnan(params_.rate_window)) {
         const Body& body = *ctx.body;

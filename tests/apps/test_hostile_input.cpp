@@ -67,6 +67,21 @@ TEST_F(HostileInput, RuptureDetectorSettingsThatMakeNoSenseAreRefusedAtTheirKey)
     EXPECT_NE(doc.output.find("min_slip: auto"), std::string::npos) << doc.output;
 }
 
+TEST_F(HostileInput, ARefusedDriveIsOneErrorNotAKnockOnAtTheRuptureDetector) {
+    // The detector's quiet_speed follows the drive's speed: a driving spring refused for its own
+    // mistake is the one error, not the detector that then finds no drive.
+    const std::string headline = FRICTIONLAB_SOURCE_DIR "/configs/headline.yaml";
+    const auto r = frictionlab("check " + headline + " --set loaders[2].node_set=nope", dir_);
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("error: loaders[2]: the bulk model has no node set 'nope'"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("observers[1]"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("1 error in"), std::string::npos) << r.output;
+    // A drive that stands still is said as such.
+    expect_refused(headline + " --set loaders[2].velocity=0",
+                   "observers[1]: quiet_speed is auto, half the drive's speed, but the drive stands still (its "
+                   "velocity is 0): set quiet_speed in m/s, or give the drive a velocity");
+}
+
 TEST_F(HostileInput, OnlyARegularFileOfSensibleSizeIsReadAsAScene) {
     for (const char* device : {"/dev/zero", "/dev/urandom"}) {
         const auto r = frictionlab(std::string("check ") + device, dir_);

@@ -106,7 +106,11 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
                                            why, scene.integrator.type, integrator_->nominal_dt()));
     // Observers last: they read what the effects publish (and choose by it, e.g. a criterion left auto).
     for (const auto& o : scene.observers) {
-        observers_.push_back(build(o, [&] { return registry.create<Observer>(o.type, o.values, context(o.path)); }));
+        observers_.push_back(build(o, [&] {
+            Context c = context(o.path);
+            c.effects_refused = effect_refused;
+            return registry.create<Observer>(o.type, o.values, c);
+        }));
         record_plugin(o, Kind::observer);
     }
     if (!effect_refused) check_needed_fields(refusals);

@@ -37,6 +37,9 @@ struct Context {
     /// Where the run records the values components choose for keys left `auto` (null: nowhere, as
     /// in a test that builds a component alone).
     ResolvedChoices* resolved_choices = nullptr;
+    /// An effect of the scene was refused (the scene is refused with it): what it would publish is
+    /// missing, so a component built after it does not refuse for want of it (no knock-on error).
+    bool effects_refused = false;
 
     /// Records that this component chose `value` for its `key` (resolved_choice.hpp), and why.
     void resolved(const std::string& key, std::string value, std::string reason) const {
