@@ -136,33 +136,18 @@ ContactArea::ContactArea(const Params& p, const Context& ctx)
             "interface_history");
 }
 
-double ContactArea::bond_force_x(double k, double r0, double dx, double dy, double dz) {
-    // On a line the same length as before the body had a width, to the last bit.
-    const double r = dy == 0 ? std::hypot(dx, dz) : std::hypot(dx, dy, dz);
+double ContactArea::bond_force_x(double k, double r0, double xi, double zi, double xj, double zj) {
+    const double dx = xj - xi, dz = zj - zi;
+    const double r = std::hypot(dx, dz);
     return k * (r - r0) * dx / r;
 }
 
-ContactArea::Bond ContactArea::bond_between(const Body& body, Index node, Index neighbour) {
-    const Eigen::ArrayXXd& p = body.reference_position;
+ContactArea::Bond ContactArea::bond_between(const Body& body, Index node, Index neighbour) const {
     for (const auto& [a, b] : body.bonds)
         if ((a == node && b == neighbour) || (a == neighbour && b == node))
-            return {neighbour, body.dimension() == 2
-                                   ? std::hypot(p(neighbour, 0) - p(node, 0), p(neighbour, 1) - p(node, 1))
-                                   : (p.row(neighbour) - p.row(node)).matrix().norm()};
+            return {neighbour,
+                    std::hypot(body.x0()(neighbour) - body.x0()(node), body.z0()(neighbour) - body.z0()(node))};
     return {};
-}
-
-Index ContactArea::neighbour_along_x(const Body& body, const std::vector<Index>& interface, Index block, int side) {
-    // On a line the blocks are in x order; on a grid the neighbour is in the same row across.
-    const Eigen::ArrayXXd& p = body.reference_position;
-    const Index node = interface[block];
-    Index nearest = -1;
-    for (Index other : interface) {
-        const double dx = side * (p(other, 0) - p(node, 0));
-        const bool same_row = body.dimension() == 2 || p(other, 1) == p(node, 1);
-        if (same_row && dx > 0 && (nearest < 0 || dx < side * (p(nearest, 0) - p(node, 0)))) nearest = other;
-    }
-    return nearest;
 }
 
 void ContactArea::begin(const RunView& view) {
@@ -183,9 +168,12 @@ void ContactArea::begin(const RunView& view) {
         Block b;
         b.index = i;
         b.node = interface_[i];
-        for (auto [side, bond] : {std::pair{-1, &b.left}, std::pair{+1, &b.right}})
-            if (const Index neighbour = neighbour_along_x(body, interface_, i, side); neighbour >= 0)
-                *bond = bond_between(body, b.node, neighbour);
+        // In 3D Body::bond_stiffness is the 2D lattice's K, which a layer's straight bond and its
+        // diagonals across give together, not one spring's: its bond forces are not known (NaN).
+        if (body.dimension() == 2) {
+            if (i > 0) b.left = bond_between(body, b.node, interface_[i - 1]);
+            if (i + 1 < n) b.right = bond_between(body, b.node, interface_[i + 1]);
+        }
         b.table = open_table(view.output_directory / block_file(params_, i), block_columns, count_types, view.info,
                              params_.format, view.resuming);
         blocks_.push_back(std::move(b));
@@ -208,9 +196,8 @@ void ContactArea::begin(const RunView& view) {
 double ContactArea::bond_force(const RunView& view, const Block& b, const Bond& bond) const {
     if (bond.neighbour < 0 || stiffness_ <= 0) return nan;
     const StageView& s = view.state;
-    const double dy = s.dimension() == 3 ? s.position(bond.neighbour, 1) - s.position(b.node, 1) : 0.0;
-    return bond_force_x(stiffness_, bond.rest_length, s.x(bond.neighbour) - s.x(b.node), dy,
-                        s.z(bond.neighbour) - s.z(b.node));
+    return bond_force_x(stiffness_, bond.rest_length, s.x(b.node), s.z(b.node), s.x(bond.neighbour),
+                        s.z(bond.neighbour));
 }
 
 void ContactArea::observe(const RunView& view) {

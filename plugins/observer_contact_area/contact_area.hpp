@@ -37,7 +37,8 @@ namespace frictionlab {
 ///                              is in Body::bonds, or when the bulk model states no stiffness.
 ///
 /// On a 2D interface (a 3D body) block i is the i-th of the interface set (interface_history's
-/// column block_<i>), its neighbours and bonds those along x in its row, its bond lengths in 3D.
+/// column block_<i>), and its bond forces are NaN: Body::bond_stiffness is then the 2D lattice's K,
+/// which a layer's straight bond and its diagonals across give together, not one spring's.
 ///
 /// Whole interface, <prefix>.csv: total junction count N = Σ_i (N_p + N_s + N_d), the pinned, sliding
 /// and dislocated totals and the pinned fraction. The real contact area A = N π r̄² (Li2020 §2.2) is a
@@ -71,12 +72,9 @@ public:
     void begin(const RunView& view) override;
     void observe(const RunView& view) override;
 
-    /// x-force (N) on a node from a straight spring of stiffness k and reference length r0 to a
-    /// node at (dx, dy, dz) from it (dy = 0 in 2D): k (r - r0) dx / r.
-    static double bond_force_x(double k, double r0, double dx, double dy, double dz);
-    /// The interface block next to `block` along x on `side` (-1 behind, +1 ahead) in its row, as a
-    /// node; -1 at the interface's end.
-    static Index neighbour_along_x(const Body& body, const std::vector<Index>& interface, Index block, int side);
+    /// x-force (N) on node `i` from a straight spring of stiffness k to node `j` whose reference
+    /// length is r0: k (r - r0) (x_j - x_i) / r.
+    static double bond_force_x(double k, double r0, double xi, double zi, double xj, double zj);
 
 private:
     /// A straight interface spring from a block to one neighbour.
@@ -97,7 +95,7 @@ private:
         }
     };
 
-    static Bond bond_between(const Body& body, Index node, Index neighbour);
+    Bond bond_between(const Body& body, Index node, Index neighbour) const;
     double bond_force(const RunView& view, const Block& b, const Bond& bond) const;
 
     Params params_;
