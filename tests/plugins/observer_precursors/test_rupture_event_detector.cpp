@@ -295,6 +295,41 @@ TEST(RuptureEventDetector, ABlockJoinsTheExtentOnceItSlippedMinSlip) {
     EXPECT_EQ(none.summary().too_small, 1);
 }
 
+// A block's slip counts until the event's end, quiet_time after its last rupture, not until the
+// observation that finds it over: block 5 ruptures until t = 1.04 ms, slipping 0.9 um, then creeps
+// on at 1 mm/s without rupturing, observed every microsecond while the event is open. At its end,
+// 1.245 ms, it slipped 1.095 um; at the last fine observation before the 1.25 ms observation that
+// ends it, 1.249 ms, 1.099 um. With min_slip 1.097 um the event is too small to report.
+TEST(RuptureEventDetector, AnEventsSlipIsReadAtItsEndWhateverTheCadence) {
+    const auto run = [](double min_slip) {
+        RuptureEventDetector d(interface41(), {2.05e-4, 0.95, min_slip, 1e-5, 0, 1e-4});
+        RuptureMask mask(blocks);
+        BlockMask contact = BlockMask::Constant(blocks, true);
+        Eigen::ArrayXd slip(blocks);
+        const auto state = [&](double t) {
+            mask.setConstant(false), slip.setZero();
+            mask(5) = t >= 1e-3 - 1e-12 && t <= 1.04e-3 + 1e-12;
+            slip(5) = t < 1.05e-3 ? 0.9e-6 * std::clamp((t - 1e-3) / 5e-5, 0.0, 1.0) : 0.9e-6 + 1e-3 * (t - 1.05e-3);
+            return InterfaceObservation{mask, contact, mask, slip, never, never};
+        };
+        for (int k = 0; k <= 200; ++k) {
+            const double t = k * dt;
+            d.observe(t, state(t), loading_rate * t, normal_load);
+            for (int f = 1; f < 10; ++f) d.observe_between(t + f * 1e-6, state(t + f * 1e-6));
+        }
+        d.close();
+        std::vector<RuptureEvent> events;
+        while (auto e = d.next_reported()) events.push_back(*e);
+        return std::pair{events, d.summary().too_small};
+    };
+    const auto [kept, none_small] = run(1.090e-6);
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_NEAR(kept[0].block_slip[5], 1.095e-6, 1e-12) << "read at 1.245 ms, quiet_time after 1.04 ms";
+    const auto [left_out, too_small] = run(1.097e-6);
+    EXPECT_TRUE(left_out.empty());
+    EXPECT_EQ(too_small, 1);
+}
+
 TEST(RuptureEventDetector, FinerObservationsRefineFrontTimesAndStartNothing) {
     auto d = detector();
     RuptureMask mask = RuptureMask::Constant(blocks, false);
