@@ -14,7 +14,7 @@
 // The matrix crosses the five shipped laws, drives from the paper's 1e-4 m/s to 3e-2 m/s, the
 // 41 x 9, 81 x 17 and (short) 161 x 33 lattices, theta = -0.833, 0 and 0.833, and seeds. The cases
 // that failed before theory.md §5a's definition are in the part every test run does
-// (EventConformance.*); the whole matrix (EventConformanceMatrix.*) takes about ten minutes on
+// (EventConformance.*); the whole matrix (EventConformanceMatrix.*) takes about seven minutes on
 // two cores and is built with -DFRICTIONLAB_EVENT_MATRIX=ON (`ctest -R EventConformanceMatrix -j 2`).
 #include <algorithm>
 #include <cmath>
