@@ -89,6 +89,7 @@ StickSlipLaw<Strength>::StickSlipLaw(const Params& p, const Context& ctx)
     if (!ctx.body || !ctx.quantities)
         throw InputError(name_ + ": needs the bulk model's body and the run's quantities");
     nodes_ = ctx.body->nodes(settings_.node_set);
+    lightest_block_ = nodes_.empty() ? 0.0 : ctx.body->mass(nodes_).minCoeff();
     axes_ = ctx.body->contact_frame.tangential;
     Quantities& q = *ctx.quantities;
     const Index n = static_cast<Index>(nodes_.size());
@@ -171,6 +172,17 @@ void StickSlipLaw<Strength>::add_velocity_jacobian(const StageView& s, Eigen::Re
         const double c = std::cosh(v[node] / v_r);  // inf far from 0: the slope is then 0
         dfx_dvx[node] -= strength_(normal, b.slip + std::abs(x[node] - b.x_start[0])) / (v_r * c * c);
     }
+}
+
+template <class Strength>
+std::string StickSlipLaw<Strength>::explicit_step_caveat(double dt) const {
+    const double v_r = settings_.regularisation_velocity;
+    return fmt::format(
+        "its regularised sign, a slipping block's force -S tanh(v/v_r) with v_r = {:.3g} m/s, is a dashpot of up "
+        "to S/v_r as its velocity passes through zero, which a step of {:.3g} s resolves only while the kinetic "
+        "force S stays below 2.8 m v_r/dt = {:.3g} N (m = {:.3g} kg, the lightest block); beyond, the events "
+        "depend on the step (theory.md §0)",
+        v_r, dt, 2.8 * lightest_block_ * v_r / dt, lightest_block_);
 }
 
 template <class Strength>

@@ -175,6 +175,11 @@ public:
     /// tangential velocities of a block, which the per-axis Jacobian cannot say: none is given.
     bool has_velocity_jacobian() const override { return tangential_axes() == 1; }
     void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
+    /// An explicit step resolves that dashpot only while S dt / (m v_r) stays below ~2.8 (RK4's bound
+    /// on the negative real axis), i.e. for kinetic forces below 2.8 m v_r / dt: with any load a
+    /// scene names, far beyond, and which precursor grows into a global slip depends on the step
+    /// (theory.md §0).
+    std::string explicit_step_caveat(double dt) const override;
     /// Quasi-static regime: no block slipping (a slipping block's force follows its velocity, and it
     /// re-sticks on its velocity). A stuck block adds k_t to each of its tangential axes; the
     /// foreseen event is the first stuck block whose spring reaches mu_s f_N at the blocks'
@@ -222,7 +227,8 @@ private:
     Settings settings_;
     Strength strength_;
     NodeSet nodes_;
-    std::vector<int> axes_;  // the contact frame's tangential axes, x first
+    double lightest_block_ = 0;  // the least mass of a block (kg)
+    std::vector<int> axes_;      // the contact frame's tangential axes, x first
     std::variant<Blocks<1>, Blocks<2>> blocks_;
     const Eigen::ArrayXd* normal_force_;
     NormalForceDrift drift_;  // k_t follows f_N at commits: a quiet span ends before it drifts

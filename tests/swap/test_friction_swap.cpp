@@ -441,6 +441,46 @@ TEST(FrictionSwap, TheHeadlineTakesEveryLawByItsFrictionBlockOrCheckNamesEveryFi
                         " --set 'integrator={type: imex_euler, dt: 2.0e-7}'"});
 }
 
+// A stick-slip law's regularised sign is a dashpot that an explicit step cannot resolve, so the
+// law's events depend on the step (theory.md §0). check and run say so, once, with the bound and the
+// integrator that takes it implicitly (on a line; on a 3D body none does), and run.yaml records it;
+// the shipped 2D scenes step with imex_euler and are not warned.
+TEST(FrictionSwap, AStickSlipLawSteppedExplicitlyIsWarnedThatItsEventsDependOnTheStep) {
+    const fs::path dir = testing::work_directory();
+    const std::string scene = FRICTIONLAB_SOURCE_DIR "/configs/peer_laws/maegawa_coulomb.yaml";
+    const auto shipped = testing::frictionlab("check " + scene, dir);
+    EXPECT_EQ(shipped.code, 0) << shipped.output;
+    EXPECT_EQ(shipped.output.find("warning"), std::string::npos) << shipped.output;
+
+    const std::string rk4 = " --set 'integrator={type: rk4, dt: 2.0e-7}'";
+    const std::string said =
+        "warning: integrator: rk4 steps coulomb explicitly: its regularised sign, a slipping block's force "
+        "-S tanh(v/v_r) with v_r = 1e-06 m/s, is a dashpot of up to S/v_r as its velocity passes through zero, "
+        "which a step of 2e-07 s resolves only while the kinetic force S stays below 2.8 m v_r/dt = 0.000448 N "
+        "(m = 3.2e-05 kg, the lightest block); beyond, the events depend on the step (theory.md §0); "
+        "integrator: {type: imex_euler, dt: 2e-07} takes it implicitly";
+    const auto checked = testing::frictionlab("check " + scene + rk4, dir);
+    EXPECT_EQ(checked.code, 0) << checked.output;
+    const auto at = checked.output.find(said);
+    EXPECT_NE(at, std::string::npos) << checked.output;
+    EXPECT_EQ(checked.output.find("warning", at + 1), std::string::npos) << "once: " << checked.output;
+
+    const auto ran = testing::frictionlab("run -q " + scene + rk4 + " --set stages[1].duration=1.0e-4 -o out", dir);
+    EXPECT_EQ(ran.code, 0) << ran.output;
+    EXPECT_NE(ran.output.find(said.substr(std::string("warning: ").size())), std::string::npos) << ran.output;
+    const YAML::Node caveats = YAML::LoadFile((dir / "out" / "run.yaml").string())["caveats"];
+    ASSERT_TRUE(caveats.IsSequence());
+    ASSERT_EQ(caveats.size(), 1u);
+    EXPECT_EQ("warning: " + caveats[0].as<std::string>(), said);
+
+    const auto in_3d = testing::frictionlab("check " FRICTIONLAB_SOURCE_DIR "/configs/3d/maegawa_coulomb.yaml", dir);
+    EXPECT_EQ(in_3d.code, 0) << in_3d.output;
+    EXPECT_NE(in_3d.output.find("warning: integrator: quasi_static_hybrid steps coulomb explicitly"), std::string::npos)
+        << in_3d.output;
+    EXPECT_NE(in_3d.output.find("(theory.md §0); show what depends on it at two steps"), std::string::npos)
+        << in_3d.output;
+}
+
 TEST(FrictionSwap, TheHeadlineTakesEveryBulkModelByItsBulkBlock) {
     swap_into_headline({"bulk", "bulk:\n  type: spring_lattice_2d\n", {}, {}, ""});
     swap_into_headline({"bulk", "bulk:\n  type: chain_1d\n", {}, {}, ""});

@@ -36,15 +36,16 @@ int check(CheckOptions o, const Invocation& in) {
     if (!o.output.directory.empty()) o.overrides.push_back("output=" + o.output.directory);
     const auto scene = read_scene(o.file, o.overrides, in.global, registry);
     if (!scene) return exit_code::bad_input;
-    const ResolvedChoices choices = check_scene_builds(*scene, registry, *in.global.checking_logger());
+    const RunInfo built = check_scene_builds(*scene, registry, *in.global.checking_logger());
     Diagnostics diagnostics;
     std::vector<std::string> stable_steps;
     check_stage_starts(*scene, registry, *in.global.checking_logger(), diagnostics, &stable_steps);
     if (!diagnostics.empty()) return report_errors(diagnostics, o.file);
     std::cout << o.file.string() << ": ok\n";
     for (const auto& line : stable_steps) std::cout << "  " << line << "\n";
-    for (const auto& c : choices)
+    for (const auto& c : built.resolved_choices)
         std::cout << "  " << c.key_path << ": auto is " << c.value << " (" << c.reason << ")\n";
+    for (const auto& caveat : built.caveats) std::cout << "  warning: " << caveat << "\n";
     return exit_code::ok;
 }
 

@@ -53,6 +53,7 @@ public:
     SceneRun(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options)
         : scene_(scene), log_(log), options_(options), sim_(scene, registry, log) {
         sim_.refuse_unstable_steps(!options.allow_unstable_step);
+        for (const auto& caveat : sim_.info().caveats) log_.warn("{}", caveat);
         output_ = scene.output_directory;
         auto observers = sim_.take_observers();
         for (std::size_t i = 0; i < observers.size(); ++i) {
@@ -348,13 +349,13 @@ private:
 
 }  // namespace
 
-ResolvedChoices check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
+RunInfo check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log) {
     Simulation sim(scene, registry, log);
     const auto observers = sim.take_observers();
     std::vector<const Observer*> built;
     for (const auto& o : observers) built.push_back(o.get());
     not_checkpointable(scene, sim, built);
-    return sim.info().resolved_choices;
+    return sim.info();
 }
 
 RunSummary run_scene(const Scene& scene, const Registry& registry, spdlog::logger& log, const RunOptions& options) {

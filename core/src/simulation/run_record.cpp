@@ -64,6 +64,8 @@ std::string RunRecord::text() const {
               << c.value << YAML::Key << "reason" << YAML::Value << c.reason << YAML::EndMap;
         y << YAML::EndMap;
     }
+    // What the integrator's step misses (the run warned of each as it began).
+    if (!info.caveats.empty()) y << YAML::Key << "caveats" << YAML::Value << info.caveats;
     y << YAML::Key << "scene" << YAML::Value << YAML::Load(info.resolved_scene);
     y << YAML::EndMap;
     return std::string(y.c_str()) + "\n";

@@ -98,12 +98,20 @@ Simulation::Simulation(const Scene& scene, const Registry& registry, spdlog::log
     });
     record_plugin(scene.integrator, Kind::integrator);
     if (integrator_ && !integrator_->implicit_in_local_velocity())
-        for (const auto& e : effects)
+        for (const auto& e : effects) {
+            const double dt = integrator_->nominal_dt();
             if (const std::string why = e.effect->needs_implicit_velocity(); !why.empty())
                 refusals.error(scene.integrator.where, "integrator",
                                fmt::format("{}, and {} steps it explicitly: use an integrator that takes it "
                                            "implicitly, integrator: {{type: imex_euler, dt: {:.3g}}}",
-                                           why, scene.integrator.type, integrator_->nominal_dt()));
+                                           why, scene.integrator.type, dt));
+            else if (const std::string caveat = e.effect->explicit_step_caveat(dt); !caveat.empty())
+                info_.caveats.push_back(fmt::format(
+                    "integrator: {} steps {} explicitly: {}{}", scene.integrator.type, e.label, caveat,
+                    e.effect->has_velocity_jacobian()
+                        ? fmt::format("; integrator: {{type: imex_euler, dt: {:.3g}}} takes it implicitly", dt)
+                        : std::string("; show what depends on it at two steps")));
+        }
     // Observers last: they read what the effects publish (and choose by it, e.g. a criterion left auto).
     for (const auto& o : scene.observers) {
         observers_.push_back(build(o, [&] {

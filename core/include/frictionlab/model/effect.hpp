@@ -80,6 +80,10 @@ public:
     /// rest says so, and a scene whose integrator does not take its velocity dependence implicitly
     /// (Integrator::implicit_in_local_velocity) is refused at assembly, naming the integrator to use.
     virtual std::string needs_implicit_velocity() const { return {}; }
+    /// What an explicit step of dt misses of this effect's velocity dependence (empty: nothing): a law
+    /// that such a step integrates stably but whose events then depend on the step says so, and a
+    /// scene whose integrator steps it explicitly is warned.
+    virtual std::string explicit_step_caveat(double /*dt*/) const { return {}; }
 
     // Quasi-static solving (share/docs/quasi-static.md). Between discrete events a stuck system is an
     // elastic structure loaded by its drive: an integrator may then solve for static equilibrium

@@ -20,6 +20,7 @@ struct RunInfo {
     std::string resolved_scene;         // YAML, every default written out
     ResolvedChoices resolved_choices;   // what the components chose for keys left `auto`
     double loading_start = 0;           // s of simulated time: when loading started (loading_start())
+    std::vector<std::string> caveats;   // what the integrator's step misses (Effect::explicit_step_caveat)
 };
 
 }  // namespace frictionlab

@@ -57,8 +57,9 @@ struct RunOptions {
 /// Builds every component of a validated scene as `run` would (bulk, loaders, friction law,
 /// integrator with the step count, observers) without writing or stepping: what `check` adds to the
 /// validation, so it refuses what `run` would refuse at set-up. Throws SceneErrors, every refusal at
-/// its component. Returns what the components chose for keys the scene leaves `auto`.
-ResolvedChoices check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log);
+/// its component. Returns the run's facts: what the components chose for keys the scene leaves
+/// `auto`, and what the step misses (RunInfo::caveats).
+RunInfo check_scene_builds(const Scene& scene, const Registry& registry, spdlog::logger& log);
 
 /// Throws RunError on failure and Interrupted when stopped, after every observer has closed its outputs
 /// (and a checkpoint has been written, when every component can be checkpointed).
