@@ -72,3 +72,17 @@ def test_the_figure_is_drawn(sweep, tmp_path):
     path = str(tmp_path / "width.png")
     width_study.figure(width_study.cases(sweep), path)
     assert os.path.getsize(path) > 10000
+
+
+def test_a_second_sweep_adds_its_cases_after_the_first(sweep, tmp_path, capsys):
+    """The square interface is a sweep of its own (configs/3d/width_study_square.yaml): its cases
+    join the table and the slopes after the first sweep's."""
+    square = tmp_path / "square"
+    write_run(str(square), "ny41_seed-1", 41, "bounded", [(0, 0.2), (1, 1.0)])
+    with open(square / "sweep.csv", "w") as f:
+        f.write(HEADER + "ny41,1,ny41_seed-1,done,2,0.41,true\n")
+    assert width_study.main([sweep, str(square)]) == 0
+    rows = [line.split(" |")[0] for line in capsys.readouterr().out.splitlines() if line.startswith("| ny")]
+    assert rows == ["| ny2", "| ny5", "| ny41"]
+    # One seed: its value without an interval.
+    assert "| ny41 | 102.5 | 1 | 0.4100 |" in width_study.table(width_study.cases(str(square)))

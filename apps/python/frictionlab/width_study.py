@@ -3,7 +3,7 @@
 against the slider's width, each a mean over seeds with its bootstrap interval (frictionlab.ensembles),
 and the slope of each against the width over the bounded cases.
 
-    python3 -m frictionlab.width_study out/width_study [--figure width_study.png]
+    python3 -m frictionlab.width_study out/width_study [out/width_study_square] [--figure width_study.png]
 
 A case's width is its node count across times the spacing, n_y a: with every node carrying the same
 load, mass and drive (the study's scaling), that is the width each node's column stands for. A
@@ -117,12 +117,13 @@ def figure(study: List[Case], path: str) -> None:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python3 -m frictionlab.width_study", description=__doc__.split("\n\n")[0])
-    parser.add_argument("sweep", help="the output folder of frictionlab sweep configs/3d/width_study.yaml")
+    parser.add_argument("sweeps", nargs="+", help="the output folders of frictionlab sweep configs/3d/width_study.yaml "
+                        "(and of width_study_square.yaml), their cases in this order")
     parser.add_argument("--figure", help="also draw the statistics against the width into this file")
     args = parser.parse_args(argv)
-    study = cases(args.sweep)
+    study = [case for sweep in args.sweeps for case in cases(sweep)]
     if not study:
-        print(f"{args.sweep}: no finished case", file=sys.stderr)
+        print(f"{', '.join(args.sweeps)}: no finished case", file=sys.stderr)
         return 1
     print(table(study))
     if args.figure:
