@@ -56,3 +56,22 @@ def test_the_command_draws_them_for_a_3d_run(run_3d):
     for ext in ("png", "svg"):
         assert os.path.exists(os.path.join(out, "interface." + ext)), os.listdir(out)
     assert os.path.exists(os.path.join(out, "loading_curve.png"))
+
+
+def test_a_wide_interfaces_maps_fill_a_grid_row_by_row(run_3d, monkeypatch):
+    # The tiny slider's snapshots, redrawn on an interface as wide as it is long: 21 x 21 blocks.
+    times, _, _, speeds = interface_series(run_3d)
+    grid = np.arange(21) * 0.005
+    x, y = (a.ravel() for a in np.meshgrid(grid, grid))
+    wide = np.tile(speeds[:, :1], (1, x.size)) * (1 + x / 0.1)  # faster towards the leading edge
+    monkeypatch.setattr("frictionlab.plot.interface_figures.interface_series", lambda run: (times, x, y, wide))
+    axes = interface_maps(run_3d, maps=5)
+    assert len(axes) == 5 and len(axes[0].figure.axes) == 5 + 1  # the maps and the colour bar, no empty panel
+    corners = [ax.get_position() for ax in axes]  # 3 columns, 2 rows: the first row full
+    assert corners[0].y0 == pytest.approx(corners[2].y0) and corners[3].y0 < corners[0].y0
+    assert corners[3].x0 == pytest.approx(corners[0].x0) and corners[1].x0 > corners[0].x0
+    assert [ax.get_ylabel() for ax in axes] == ["y (mm)", "", "", "y (mm)", ""]
+    assert [ax.get_xlabel() for ax in axes] == ["", "", "x (mm)", "x (mm)", "x (mm)"]  # nothing below them
+    width, height = axes[0].figure.get_size_inches()
+    assert height < 2 * width  # where one column of five square maps would be five times as tall
+    plt.close(axes[0].figure)

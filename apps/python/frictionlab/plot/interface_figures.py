@@ -51,7 +51,8 @@ def interface_series(run):
 
 
 def interface_maps(run, ax=None, maps=6, until=None):
-    """`maps` maps of the interface's slip speed, one above the other, at the snapshots up to and
+    """`maps` maps of the interface's slip speed, one above the other (a grid row by row on an interface
+    wider than half its length), at the snapshots up to and
     including the one whose mean speed is the largest, or the last at or before `until` (s since
     loading started: a nucleation, say, from a global slip's t_start_since_loading); one logarithmic
     colour scale from STILL."""
@@ -65,8 +66,18 @@ def interface_maps(run, ax=None, maps=6, until=None):
             raise NothingToDraw(f"{run_directory(run)}: no snapshot by {until} s after {since}")
     shown = list(range(max(0, last - maps + 1), last + 1))
     xs, ys = np.unique(x), np.unique(y)
-    height = 0.45 + 6.5 * np.ptp(ys) / np.ptp(xs)  # inches a map takes: its title and the interface's shape
-    axes = np.ravel(axes_of(ax, len(shown), 1, figsize=(8, 1.0 + height * len(shown)), sharex=True, squeeze=False))
+    # A narrow interface's maps stand one above the other; a wide one's fill a grid, row by row.
+    aspect = np.ptp(ys) / np.ptp(xs)
+    columns = 1 if aspect <= 0.5 else int(np.ceil(np.sqrt(len(shown))))
+    rows = int(np.ceil(len(shown) / columns))
+    side = 6.5 / columns  # inches of x a map takes, of which the colour bar leaves about 3/4 in a grid
+    drawn = side if columns == 1 else 0.75 * side
+    figure = {"figsize": (1.5 + side * columns, 1.0 + (0.45 + drawn * aspect) * rows), "squeeze": False}
+    grid = np.ravel(axes_of(ax, rows, columns, sharex=True, sharey=True, **figure))
+    if ax is None:
+        for unused in grid[len(shown):]:
+            unused.remove()
+    axes = grid[:len(shown)]
     column, row = np.searchsorted(xs, x), np.searchsorted(ys, y)
     norm = matplotlib.colors.LogNorm(STILL, max(float(speeds[shown].max()), 10 * STILL))
     for k, ax_k in zip(shown, axes):
@@ -74,10 +85,16 @@ def interface_maps(run, ax=None, maps=6, until=None):
         speed[row, column] = np.maximum(speeds[k], STILL)
         image = ax_k.pcolormesh(xs * 1e3, ys * 1e3, speed, norm=norm, cmap="magma", shading="nearest")
         ax_k.set_aspect("equal")
-        ax_k.set_ylabel("y (mm)")
-        ax_k.set_title(f"{(times[k] - t0) * 1e3:.3f} ms after {since}", fontsize=8, loc="left")
-    axes[-1].set_xlabel("x (mm)")
+        after = f" after {since}" if columns == 1 else ""  # in a grid, the suptitle says it once
+        ax_k.set_title(f"{(times[k] - t0) * 1e3:.3f} ms{after}", fontsize=8, loc="left")
+    for n, ax_n in enumerate(axes):
+        if n % columns == 0:
+            ax_n.set_ylabel("y (mm)")
+        if n + columns >= len(axes):  # nothing below it
+            ax_n.set_xlabel("x (mm)")
+            ax_n.xaxis.set_tick_params(labelbottom=True)
     axes[0].figure.colorbar(image, ax=list(axes), label="slip speed |v| (m/s)", shrink=0.9)
     up_to = "its fastest snapshot" if until is None else f"{until * 1e3:g} ms after {since}"
-    axes[0].figure.suptitle(f"{run_label(run)}\nthe interface from below, up to {up_to}", fontsize=8)
+    times_are = "" if columns == 1 else f" (times after {since})"
+    axes[0].figure.suptitle(f"{run_label(run)}\nthe interface from below, up to {up_to}{times_are}", fontsize=8)
     return axes
