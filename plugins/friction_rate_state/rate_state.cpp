@@ -95,11 +95,11 @@ double RateState::coefficient_slope(double v, double psi) const {
     return p_.a / std::hypot(v, 2 * p_.v0 * std::exp(-psi / p_.a));
 }
 
-void RateState::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
+void RateState::add_velocity_jacobian(const StageView& s, LocalVelocityJacobian& j) const {
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
         const auto i = static_cast<Index>(k);
         const Index node = nodes_[k];
-        dfx_dvx[node] -= coefficient_slope(s.vx[node], s.aux[offset_ + i]) * (*normal_force_)[i];
+        j.slope[node] -= coefficient_slope(s.vx[node], s.aux[offset_ + i]) * (*normal_force_)[i];
     }
 }
 

@@ -69,7 +69,7 @@ public:
     /// w = 2 v0 exp(-psi/a): f_N a/|v| while sliding, f_N a/w at rest (5e41 N s/m at the defaults, f_N = 10 N).
     /// imex_euler takes it implicitly; an explicit step would need h f_N a / (m |v|) < ~2.
     bool has_velocity_jacobian() const override { return true; }
-    void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
+    void add_velocity_jacobian(const StageView& s, LocalVelocityJacobian& j) const override;
     std::string needs_implicit_velocity() const override {
         return "rate_state is too stiff in the slip velocity near rest for an explicit step (dF/dv = f_N a / w, "
                "theory.md D.2.4)";

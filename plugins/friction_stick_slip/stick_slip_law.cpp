@@ -160,18 +160,32 @@ void StickSlipLaw<Strength>::add_forces(const StageView& s, ForceView& f) {
 }
 
 template <class Strength>
-void StickSlipLaw<Strength>::add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const {
-    const Blocks<1>& blocks = std::get<Blocks<1>>(blocks_);
+template <int T>
+void StickSlipLaw<Strength>::add_velocity_jacobian_on(const Blocks<T>& blocks, const StageView& s,
+                                                      LocalVelocityJacobian& j) const {
     const double v_r = settings_.regularisation_velocity;
-    const auto x = s.positions_along(axes_[0]), v = s.velocities_along(axes_[0]);
+    const auto x = along<T>(s, axes_, false), v = along<T>(s, axes_, true);
     for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const Block<1>& b = blocks[k];
+        const Block<T>& b = blocks[k];
         if (b.mode != Mode::slipping) continue;
         const Index node = nodes_[k];
-        const double normal = std::max(0.0, (*normal_force_)[static_cast<Index>(k)]);
-        const double c = std::cosh(v[node] / v_r);  // inf far from 0: the slope is then 0
-        dfx_dvx[node] -= strength_(normal, b.slip + std::abs(x[node] - b.x_start[0])) / (v_r * c * c);
+        const Tangent<T> position = gather<T>(x, node), velocity = gather<T>(v, node);
+        const double strength = strength_(std::max(0.0, (*normal_force_)[static_cast<Index>(k)]),
+                                          b.slip + magnitude<T>(position - b.x_start));
+        double along_direction = velocity[0];  // v . s, with s = x on one axis
+        if constexpr (T == 2) {
+            const Tangent<T> direction = sliding_direction(b, position, strength);
+            along_direction = velocity.dot(direction);
+            j.direction.row(node) = direction.transpose().array();
+        }
+        const double c = std::cosh(along_direction / v_r);  // inf far from 0: the slope is then 0
+        j.slope[node] -= strength / (v_r * c * c);
     }
+}
+
+template <class Strength>
+void StickSlipLaw<Strength>::add_velocity_jacobian(const StageView& s, LocalVelocityJacobian& j) const {
+    std::visit([&](const auto& blocks) { add_velocity_jacobian_on(blocks, s, j); }, blocks_);
 }
 
 template <class Strength>

@@ -169,12 +169,12 @@ public:
     void begin_step(const StageView&) override;
     void commit(const StageView& end, double dt) override;
     double potential_energy(const StageView& s) const override;
-    /// Local in velocity on a 2D body: only a slipping block's force depends on its vx, with
-    /// dF/dv = -(S / v_r) sech^2(v / v_r), a dashpot of up to S / v_r near v = 0 that imex_euler takes
-    /// implicitly (stuck and detached blocks: 0). On a 3D body the kinetic force couples the two
-    /// tangential velocities of a block, which the per-axis Jacobian cannot say: none is given.
-    bool has_velocity_jacobian() const override { return tangential_axes() == 1; }
-    void add_velocity_jacobian(const StageView& s, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override;
+    /// Local in velocity: only a slipping block's force depends on its velocity, along its sliding
+    /// direction s (x on a 2D body; on a 3D body fixed by the positions, sliding_direction) and
+    /// through v . s only, with dF/d(v . s) = -(S / v_r) sech^2(v . s / v_r), a dashpot of up to
+    /// S / v_r near v . s = 0 that imex_euler takes implicitly (stuck and detached blocks: 0).
+    bool has_velocity_jacobian() const override { return true; }
+    void add_velocity_jacobian(const StageView& s, LocalVelocityJacobian& j) const override;
     /// An explicit step resolves that dashpot only while S dt / (m v_r) stays below ~2.8 (RK4's bound
     /// on the negative real axis), i.e. for kinetic forces below 2.8 m v_r / dt: with any load a
     /// scene names, far beyond, and which precursor grows into a global slip depends on the step
@@ -212,6 +212,8 @@ private:
     template <int T>
     void commit_block(stick_slip::Block<T>& b, const stick_slip::Tangent<T>& x, const stick_slip::Tangent<T>& v,
                       double normal) const;
+    template <int T>
+    void add_velocity_jacobian_on(const Blocks<T>& blocks, const StageView& s, LocalVelocityJacobian& j) const;
     template <int T>
     void add_forces_on(Blocks<T>& blocks, const StageView& s, ForceView& f);
     template <int T>

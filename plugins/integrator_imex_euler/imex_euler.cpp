@@ -27,9 +27,10 @@ double inside(double low, double high) {
 
 ParamSpec<ImexEuler::Params> ImexEuler::spec() {
     return fixed_step_spec(
-        "IMEX symplectic Euler, fixed step, 1st order: forces that depend locally on a node's x-velocity (friction "
-        "laws with a velocity Jacobian, e.g. rate_state) are taken implicitly at the new velocity, the rest "
-        "explicitly; stable for omega*dt < 2 in the explicit part, however stiff the friction.");
+        "IMEX symplectic Euler, fixed step, 1st order: forces that depend locally on a node's velocity along their "
+        "direction (friction laws with a velocity Jacobian: rate_state, the stick-slip laws' regularised sign, in "
+        "2D and on a 3D body's interface plane) are taken implicitly at the new velocity, the rest explicitly; "
+        "stable for omega*dt < 2 in the explicit part, however stiff the friction.");
 }
 
 ImexEuler::ImexEuler(const Params& p, const Context&) : FixedStepIntegrator(p) {}
@@ -54,39 +55,68 @@ double ImexEuler::step(System& system, double max_dt) {
 
 void ImexEuler::solve_velocity(System& system, double t, double h) {
     const StateLayout& layout = system.layout();
+    const std::vector<int>& axes = system.body().contact_frame.tangential;
+    const Eigen::ArrayXXd& direction = jacobian0_.direction;  // d_i: fixed by the positions, which stay x_n
     const Index n = layout.nodes;
     const Eigen::ArrayXd& mass = system.body().mass;
-    const auto v_start = layout.velocities_along(system.y(), 0).array();
-    auto v_explicit = layout.velocities_along(next_, 0).array();  // vx_n + h F/m, replaced by the solution
-    // G(v) = v - v_explicit - (h/m)(F_L(v) - F_L(vx_n)) increases with v (G' = 1 - (h/m) J >= 1);
-    // its root lies between vx_n, where G = vx_n - v_explicit, and v_explicit, where G >= 0 side.
-    low_ = v_start.min(v_explicit);
-    high_ = v_start.max(v_explicit);
-    v_ = v_start + (v_explicit - v_start) / (1 - h * jacobian0_ / mass);  // linearly implicit first guess
-    trial_ = system.y();
+    // u = v . d at the step start and after the explicit kick (vx_n + h F/m and the like).
+    const auto along_direction = [&](const Eigen::VectorXd& state, Eigen::ArrayXd& u) {
+        u.setZero(n);
+        for (std::size_t a = 0; a < axes.size(); ++a)
+            u += layout.velocities_along(state, axes[a]).array() * direction.col(static_cast<Index>(a));
+    };
+    along_direction(system.y(), u_start_);
+    along_direction(next_, u_explicit_);
+    // u is known only to the round-off of the velocity it is part of: a block sliding slowly along d
+    // while it moves across d faster carries an error of ~eps |v across| in v . d, which no iteration
+    // removes (0 on a 2D body, whose velocity is u itself).
+    noise_.setZero(n);
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        const auto d = direction.col(static_cast<Index>(a));
+        noise_ += (layout.velocities_along(next_, axes[a]).array() - u_explicit_ * d).square();
+    }
+    noise_ = 4 * std::numeric_limits<double>::epsilon() * noise_.sqrt();
+    // The velocity with its part along d replaced by u: v - (v . d) d + u d, which is u itself along
+    // the one axis of a 2D body (d = 1).
+    const auto set_along_direction = [&](Eigen::VectorXd& state, const Eigen::ArrayXd& from, const Eigen::ArrayXd& u) {
+        for (std::size_t a = 0; a < axes.size(); ++a) {
+            const auto d = direction.col(static_cast<Index>(a));
+            auto v = layout.velocities_along(state, axes[a]).array();
+            v = (v - from * d) + u * d;
+        }
+    };
+    // G(u) = u - u_explicit - (h/m)(F_L(u) - F_L(u_n)) increases with u (G' = 1 - (h/m) J >= 1);
+    // its root lies between u_n, where G = u_n - u_explicit, and u_explicit, where G >= 0 side.
+    low_ = u_start_.min(u_explicit_);
+    high_ = u_start_.max(u_explicit_);
+    v_ = u_start_ + (u_explicit_ - u_start_) / (1 - h * jacobian0_.slope / mass);  // linearly implicit first guess
     for (int iteration = 0;; ++iteration) {
-        layout.velocities_along(trial_, 0) = v_.matrix();
+        trial_ = system.y();
+        set_along_direction(trial_, u_start_, v_);
         system.local_velocity_forces(t, trial_, force_, jacobian_);
         Index unconverged = -1;
         for (Index i = 0; i < n; ++i) {
-            const double g = v_[i] - v_explicit[i] - h / mass[i] * (force_[i] - force0_[i]);
+            const double g = v_[i] - u_explicit_[i] - h / mass[i] * (force_[i] - force0_[i]);
             const double scale =
-                mass[i] / h * std::abs(v_explicit[i] - v_start[i]) + std::abs(force0_[i]) + std::abs(force_[i]);
-            if (mass[i] / h * std::abs(g) <= 1e-12 * scale) continue;
+                mass[i] / h * std::abs(u_explicit_[i] - u_start_[i]) + std::abs(force0_[i]) + std::abs(force_[i]);
+            const double stiffness = mass[i] / h - jacobian_.slope[i];  // of m/h G(u), in N per m/s
+            const double noise = noise_[i] > 0 ? stiffness * noise_[i] : 0.0;
+            if (mass[i] / h * std::abs(g) <= 1e-12 * scale + noise) continue;
             (g > 0 ? high_[i] : low_[i]) = v_[i];
-            if (high_[i] - low_[i] <= 4 * std::numeric_limits<double>::epsilon() * std::abs(v_[i])) continue;
+            if (high_[i] - low_[i] <= 4 * std::numeric_limits<double>::epsilon() * std::abs(v_[i]) + noise_[i])
+                continue;
             if (unconverged < 0) unconverged = i;
-            const double newton = v_[i] - g / (1 - h * jacobian_[i] / mass[i]);
+            const double newton = v_[i] - g / (1 - h * jacobian_.slope[i] / mass[i]);
             v_[i] = newton > low_[i] && newton < high_[i] ? newton : inside(low_[i], high_[i]);
         }
         if (unconverged < 0) break;
         if (iteration == max_iterations)
             throw RunError(fmt::format(
-                "imex_euler: step {}, t = {:.9g} s: the implicit x-velocity update of node {} "
-                "did not converge in {} Newton iterations (vx between {:.6g} and {:.6g} m/s)",
+                "imex_euler: step {}, t = {:.9g} s: the implicit velocity update of node {} along its force "
+                "did not converge in {} Newton iterations (v between {:.6g} and {:.6g} m/s)",
                 system.step_index() + 1, t, unconverged, max_iterations, low_[unconverged], high_[unconverged]));
     }
-    v_explicit = v_;
+    set_along_direction(next_, u_explicit_, v_);
 }
 
 bool ImexEuler::linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,

@@ -48,7 +48,10 @@ constexpr double creep_resume = 0.5;
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<Integrator> dynamic_scheme(const Params& p, const Context& ctx) {
-    const char* type = p.dynamic == QuasiStaticHybrid::Dynamic::velocity_verlet ? "velocity_verlet" : "rk4";
+    using Dynamic = QuasiStaticHybrid::Dynamic;
+    const char* type = p.dynamic == Dynamic::velocity_verlet ? "velocity_verlet"
+                       : p.dynamic == Dynamic::imex_euler    ? "imex_euler"
+                                                             : "rk4";
     if (!ctx.registry)
         throw InputError(
             fmt::format("quasi_static_hybrid builds its dynamic scheme ({}) through the run's registry, "
@@ -80,10 +83,13 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
     ParamSpec<Params> s(
         "Quasi-static / dynamic hybrid: quiet phases (every junction pinned) crossed by static equilibrium solves "
         "from event to event (sparse LDL^T of the stiffness, Newton on the geometric springs, the viscous lag "
-        "of the steady velocity field), ruptures by an explicit scheme at its step; switching with hysteresis. "
+        "of the steady velocity field), ruptures by a fixed-step scheme at its step; switching with hysteresis. "
         "Effects that cannot describe their quasi-static regime keep the run dynamic.");
-    s.choice("dynamic", &Params::dynamic, {{"rk4", Dynamic::rk4}, {"velocity_verlet", Dynamic::velocity_verlet}},
-             "Explicit scheme of the dynamic phase.");
+    s.choice(
+        "dynamic", &Params::dynamic,
+        {{"rk4", Dynamic::rk4}, {"velocity_verlet", Dynamic::velocity_verlet}, {"imex_euler", Dynamic::imex_euler}},
+        "Scheme of the dynamic phase: rk4 or velocity_verlet (explicit), or imex_euler (implicit in the friction "
+        "forces that depend locally on a block's velocity, such as the stick-slip laws' regularised sign).");
     s.choice("jumps", &Params::jumps,
              {{"dynamic", Jumps::dynamic}, {"checked", Jumps::checked}, {"quasi_static", Jumps::quasi_static}},
              "How a jump (a commit's change of the forces at fixed positions: a junction breaking, a clock ending, a "

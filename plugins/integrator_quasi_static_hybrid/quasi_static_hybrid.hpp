@@ -34,7 +34,8 @@ namespace frictionlab {
 /// takes it as the reference does. Which jumps are checked so, and whether spans with a junction
 /// clock running may be quiet, is the `jumps` choice (spec(); share/docs/quasi-static.md, "Jumps").
 ///
-/// Dynamic phase: the scene's explicit scheme (rk4 or velocity_verlet) at its step dt. It starts
+/// Dynamic phase: the scene's scheme (rk4, velocity_verlet, or imex_euler for friction too stiff in a
+/// block's velocity for an explicit step) at its step dt. It starts
 /// when an effect leaves its regime, a jump's transient could trigger an event (or, with jumps:
 /// dynamic, a clock starts), events come closer together than dt, or no static solution is found.
 /// Every check_interval of simulated time the stepper checks whether it may return: every effect
@@ -52,8 +53,8 @@ namespace frictionlab {
 /// back below half of it (the hysteresis).
 class QuasiStaticHybrid final : public Integrator {
 public:
-    /// The explicit scheme of the dynamic phase.
-    enum class Dynamic { rk4, velocity_verlet };
+    /// The scheme of the dynamic phase.
+    enum class Dynamic { rk4, velocity_verlet, imex_euler };
     /// How jumps (the class comment) are taken: the `jumps` choice, documented in spec().
     enum class Jumps { dynamic, checked, quasi_static };
     struct Params {
@@ -90,6 +91,7 @@ public:
     /// The dynamic scheme's order: a quiet step is an equilibrium solve, exact for the linear
     /// response. Evaluations per step vary (solves, the calm checks): not stated.
     int order() const override { return dynamic_->order(); }
+    bool implicit_in_local_velocity() const override { return dynamic_->implicit_in_local_velocity(); }
     bool linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override {
         return dynamic_->linearised_step(jacobian, h, positions, u, out);

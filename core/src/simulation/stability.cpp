@@ -169,7 +169,7 @@ public:
     std::size_t effects() const { return implicit_.size(); }
 
     /// Effect k's dy/dt at y. One whose local velocity dependence the integrator treats implicitly
-    /// sees the velocities of y0 (along x, Effect::has_velocity_jacobian) instead: what is left is the
+    /// sees the velocities of y0 (in the interface plane, Effect::has_velocity_jacobian) instead: what is left is the
     /// part the explicit scheme must resolve.
     void effect_rate(std::size_t k, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
         if (!implicit_[k]) {
@@ -177,7 +177,8 @@ public:
             return;
         }
         frozen_ = y;
-        layout_.velocities_along(frozen_, 0) = layout_.velocities_along(y0_, 0);
+        for (const int axis : system_.body().contact_frame.tangential)
+            layout_.velocities_along(frozen_, axis) = layout_.velocities_along(y0_, axis);
         derivative(system_, t_, frozen_, dy, loaded(Evaluation::outside_step(k)));
         layout_.positions(dy) = layout_.velocities(y);
     }

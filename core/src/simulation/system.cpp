@@ -93,10 +93,11 @@ void System::add_work(std::size_t part, const StageView& s, double weight) {
     pending_work_[part] += weight * layout_.velocities(effect_force_).dot(velocity);
 }
 
-bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx) {
+bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& force,
+                                   LocalVelocityJacobian& jacobian) {
     const Index n = layout_.nodes;
-    fx.setZero(n);
-    dfx_dvx.setZero(n);
+    const std::vector<int>& axes = body_.contact_frame.tangential;
+    jacobian.reset(n, static_cast<Index>(axes.size()));
     if (local_scratch_.size() != layout_.size()) local_scratch_.resize(layout_.size());
     local_scratch_.setZero();
     shown_ = false;
@@ -108,9 +109,11 @@ bool System::local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::Ar
         if (!e->has_velocity_jacobian()) continue;
         any = true;
         e->add_forces(s, f);
-        e->add_velocity_jacobian(s, dfx_dvx);
+        e->add_velocity_jacobian(s, jacobian);
     }
-    fx = f.fx;
+    force = f.forces_along(axes[0]) * jacobian.direction.col(0);
+    for (std::size_t a = 1; a < axes.size(); ++a)
+        force += f.forces_along(axes[a]) * jacobian.direction.col(static_cast<Index>(a));
     return any;
 }
 

@@ -53,7 +53,7 @@ public:
     std::string describe() const override { return "base damping"; }
     void add_forces(const StageView& s, ForceView& f) override { f.fx -= c_ * s.vx; }
     bool has_velocity_jacobian() const override { return true; }
-    void add_velocity_jacobian(const StageView&, Eigen::Ref<Eigen::ArrayXd> dfx_dvx) const override { dfx_dvx -= c_; }
+    void add_velocity_jacobian(const StageView&, LocalVelocityJacobian& j) const override { j.slope -= c_; }
 
 private:
     double c_;

@@ -94,10 +94,12 @@ TEST(RateState, VelocityJacobianIsTheDerivativeOfItsForce) {
         Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size());
         y[layout.velocity_index(0, 0)] = v;
         layout.aux_variables(y)[s.law->aux_offset()] = psi;
-        Eigen::ArrayXd j = Eigen::ArrayXd::Zero(1);
+        LocalVelocityJacobian j;
+        j.reset(1, 1);
         EXPECT_TRUE(s.law->has_velocity_jacobian());
         s.law->add_velocity_jacobian(view_of(y, layout, 0), j);
-        return j[0];
+        EXPECT_EQ(j.direction(0, 0), 1.0);  // along x
+        return j.slope[0];
     };
     for (double v : {-1e-3, 1e-9, 1e-6, 1e-3}) {
         const double h = 1e-6 * std::abs(v);

@@ -106,11 +106,13 @@ TEST(Coulomb, KineticForceOpposesVelocityAndFollowsStageNormalForce) {
 TEST(Coulomb, VelocityJacobianIsTheSlopeOfTheKineticForce) {
     Rig r = pressed();
     const auto jacobian = [&](double v) {
-        Eigen::ArrayXd j = Eigen::ArrayXd::Zero(2);
+        LocalVelocityJacobian j;
+        j.reset(2, 1);
         r.y[r.layout.velocity_index(0, 0)] = v;
         r.law->add_velocity_jacobian(r.view(), j);
-        EXPECT_EQ(j[1], 0.0);  // block 1 stays stuck
-        return j[0];
+        EXPECT_EQ(j.slope[1], 0.0);         // block 1 stays stuck
+        EXPECT_EQ(j.direction(0, 0), 1.0);  // along x on a 2D body
+        return j.slope[0];
     };
     EXPECT_TRUE(r.law->has_velocity_jacobian());
     EXPECT_EQ(jacobian(0.0), 0.0);  // stuck: the spring depends on x only

@@ -141,6 +141,52 @@ TEST(StickSlipInAPlane, ASlippingBlocksForceTurnsTowardsItsSlip) {
     EXPECT_NEAR(r.force().y(), reversed.y(), 1e-12);
 }
 
+TEST(StickSlipInAPlane, ItsVelocityJacobianIsAlongTheDirectionItSlidesIn) {
+    // Slipping along s, turned from x towards e: the force lies along s at any velocity, and its
+    // slope in v . s is that of -S tanh(v . s / v_r), what imex_euler solves with.
+    PlaneRig<Coulomb> r(exact());
+    r.press();
+    const auto jacobian = [&] {
+        LocalVelocityJacobian j;
+        j.reset(1, 2);
+        r.law->add_velocity_jacobian(r.view(), j);
+        return j;
+    };
+    EXPECT_EQ(jacobian().slope[0], 0.0);  // stuck: the spring depends on x only
+    const Eigen::Vector2d e(0.6, 0.8);
+    r.move({4e-3, 0}, 0.5 * e);
+    ASSERT_EQ(r.law->mode(0), Mode::slipping);
+    const double S = 0.17 * exact_normal, v_r = 1e-6;
+    r.law->begin_step(r.view());
+    const Eigen::Vector2d turned = Eigen::Vector2d(4e-3, 0) + 0.5 * S / exact_stiffness * e;
+    r.y(r.layout.position_index(0, 0)) = turned.x(), r.y(r.layout.position_index(0, 1)) = turned.y();
+    const auto set_velocity = [&](const Eigen::Vector2d& v) {
+        r.y(r.layout.velocity_index(0, 0)) = v.x(), r.y(r.layout.velocity_index(0, 1)) = v.y();
+    };
+    set_velocity(Eigen::Vector2d(0, 0));
+    const LocalVelocityJacobian at_rest = jacobian();
+    const Eigen::Vector2d s = at_rest.direction.row(0).transpose().matrix();
+    EXPECT_NEAR(s.norm(), 1.0, 1e-15);
+    EXPECT_GT(s.y(), 0.0);  // turned towards e
+    EXPECT_LT(s.y(), e.y());
+    const Eigen::Vector2d across(-s.y(), s.x());
+    for (const double u : {0.0, 4e-7, -1.5e-6}) {
+        const double dv = 1e-12;
+        const auto force_along = [&](double w, double lateral) {
+            set_velocity(w * s + lateral * across);
+            return r.force().head<2>().dot(s);
+        };
+        const double slope = (force_along(u + dv, 0) - force_along(u - dv, 0)) / (2 * dv);
+        set_velocity(u * s + 0.3 * across);  // the velocity across s changes neither slope nor direction
+        const LocalVelocityJacobian j = jacobian();
+        EXPECT_NEAR(j.slope[0] / slope, 1.0, 1e-6) << u;
+        EXPECT_NEAR(j.slope[0], -S / (v_r * std::pow(std::cosh(u / v_r), 2)), 1e-9 * S / v_r) << u;
+        EXPECT_NEAR((j.direction.row(0) - at_rest.direction.row(0)).abs().maxCoeff(), 0.0, 1e-15) << u;
+        EXPECT_NEAR(r.force().head<2>().dot(across), 0.0, 1e-15) << u;  // no force across s
+        EXPECT_NEAR(force_along(u, 0.3), force_along(u, 0), 1e-9 * S) << u;
+    }
+}
+
 TEST(StickSlipInAPlane, ItReSticksWhenItStopsSlidingThoughItMovesAcross) {
     // Broken along x at 0.1 m/s, then at 1 um/s along x while it moves across at 50 um/s: faster
     // than stick_velocity (10 um/s) in magnitude, slower along the direction it slides in. It sticks.

@@ -1,9 +1,11 @@
 // IMEX Euler: backward Euler in the forces that depend locally on a node's velocity, symplectic
-// Euler in the rest. Exact against a linear local dashpot, identical to semi_implicit_euler without
-// one, and a rate-and-state block (theory.md D.2.4) creeping or sliding stably at the Li 2020 step
-// of 2e-7 s, where explicit schemes need h f_N a / (m v) < ~2, reaching the closed-form steady state.
+// Euler in the rest. Exact against a linear local dashpot and, in the plane of a 3D body's
+// interface, along a kinetic force's direction, identical to semi_implicit_euler without one, and a rate-and-state
+// block (theory.md D.2.4) creeping or sliding stably at the Li 2020 step of 2e-7 s, where explicit schemes need h f_N a
+// / (m v) < ~2, reaching the closed-form steady state.
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -29,7 +31,7 @@ public:
     std::string describe() const override { return "local dashpot"; }
     void add_forces(const StageView& s, ForceView& f) override { f.fx(0) -= c_ * s.vx(0); }
     bool has_velocity_jacobian() const override { return true; }
-    void add_velocity_jacobian(const StageView&, Eigen::Ref<Eigen::ArrayXd> j) const override { j(0) -= c_; }
+    void add_velocity_jacobian(const StageView&, LocalVelocityJacobian& j) const override { j.slope(0) -= c_; }
 
 private:
     double c_;
@@ -51,6 +53,76 @@ TEST(ImexEuler, IsBackwardEulerInALocalDashpotAtAnyStiffness) {
         EXPECT_NEAR(system.state().vx(0), v, 1e-14 * v0);
         EXPECT_NEAR(system.state().x(0), x, 1e-14 * h * v0);
     }
+}
+
+/// On one node of a 3D body (base below: the interface plane x, y), a kinetic force
+/// -S tanh(v . s / v_r) s along a fixed unit vector s of the plane, as a block slipping on a 2D
+/// interface feels it (its s fixed by the positions), and a constant push P across s.
+class PlaneSliding final : public Effect {
+public:
+    PlaneSliding(double strength, double v_r, Eigen::Vector2d s, double push)
+        : strength_(strength), v_r_(v_r), s_(s), across_(-s.y(), s.x()), push_(push) {}
+    std::string describe() const override { return "kinetic force in a plane"; }
+    void add_forces(const StageView& st, ForceView& f) override {
+        const Eigen::Vector2d force = -strength_ * std::tanh(along(st) / v_r_) * s_ + push_ * across_;
+        for (int a = 0; a < 2; ++a) f.force(0, a) += force[a];
+    }
+    bool has_velocity_jacobian() const override { return true; }
+    void add_velocity_jacobian(const StageView& st, LocalVelocityJacobian& j) const override {
+        const double c = std::cosh(along(st) / v_r_);
+        j.slope(0) -= strength_ / (v_r_ * c * c);
+        j.direction.row(0) = s_.transpose().array();
+    }
+    /// v . s and v across s.
+    double along(const StageView& st) const { return st.velocity(0, 0) * s_.x() + st.velocity(0, 1) * s_.y(); }
+    double across(const StageView& st) const {
+        return st.velocity(0, 0) * across_.x() + st.velocity(0, 1) * across_.y();
+    }
+
+private:
+    double strength_, v_r_;
+    Eigen::Vector2d s_, across_;
+    double push_;
+};
+
+TEST(ImexEuler, IsBackwardEulerAlongAForcesDirectionInAPlaneAndExplicitAcrossIt) {
+    // h S / (m v_r) = 1e4: an explicit step would throw the velocity along s from side to side by
+    // h S / m; backward Euler along s brings the block to rest from 0.05 m/s in five steps and holds it
+    // there, while the push across s accelerates it as symplectic Euler does.
+    Services services;
+    const double m = 1e-3, S = 1.0, v_r = 1e-6, h = 1e-5, P = 0.3, u0 = 0.05;
+    const Eigen::Vector2d s = Eigen::Vector2d(3, 4) / 5;
+    Body body;
+    body.reference_position = Eigen::ArrayXXd::Zero(1, 3);
+    body.mass = Eigen::ArrayXd::Constant(1, m);
+    body.contact_frame = ContactFrame::horizontal_base(3);
+    System system(body, 0);
+    auto owned = std::make_unique<PlaneSliding>(S, v_r, s, P);
+    const PlaneSliding& sliding = *owned;
+    system.add_effect(std::move(owned));
+    const StateLayout& layout = system.layout();
+    for (int a = 0; a < 2; ++a) system.initial_state()(layout.velocity_index(0, a)) = u0 * s[a];
+    ImexEuler imex({h}, services.context());
+    double u = u0, w = 0;
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 40; ++i) {
+        imex.step(system, 1.0);
+        const StageView st = system.state();
+        const double next = sliding.along(st);
+        // v . s is known to the round-off of v, eps |v|, which backward Euler's residual carries
+        // with its slope 1 + h S / (m v_r) = 1e4: the velocity across s (w, growing) sets it.
+        const double round_off = 8 * std::numeric_limits<double>::epsilon() * (1 + h * S / (m * v_r)) * (u0 + w);
+        EXPECT_NEAR(next - u, -h / m * S * std::tanh(next / v_r), 1e-12 * h * S / m + round_off) << "step " << i;
+        EXPECT_GE(next, -4 * std::numeric_limits<double>::epsilon() * (u0 + w))
+            << "step " << i << ": it stops without turning back";
+        u = next;
+        w += h * P / m;
+        EXPECT_NEAR(sliding.across(st), w, 1e-12 * (u0 + w)) << "step " << i;
+        x += h * st.velocity.row(0).transpose().matrix();
+        for (int a = 0; a < 3; ++a) EXPECT_NEAR(st.position(0, a), x[a], 1e-15) << "step " << i;
+        EXPECT_EQ(st.velocity(0, 2), 0.0);
+    }
+    EXPECT_LT(u, 1e-3 * v_r);  // at rest along s
 }
 
 TEST(ImexEuler, WithoutALocalEffectItIsSemiImplicitEulerBitForBit) {

@@ -13,6 +13,7 @@
 #include <Eigen/SparseCore>
 
 #include "frictionlab/model/component.hpp"
+#include "frictionlab/model/local_velocity_jacobian.hpp"
 #include "frictionlab/model/stage.hpp"
 #include "frictionlab/model/state.hpp"
 
@@ -68,14 +69,16 @@ public:
     virtual void initialise_aux(Eigen::Ref<Eigen::ArrayXd> /*aux*/) const {}
 
     /// Whether this effect's velocity dependence is local and given by add_velocity_jacobian(): its
-    /// force on node i along x (the sliding direction) depends on the velocities through vx_i only,
-    /// and its forces along the other axes not at all. An
-    /// integrator may then treat that dependence implicitly (a rate-and-state law is far too stiff in
-    /// v for an explicit step near v = 0, theory.md D.2.4), and the stable-step estimate leaves it out.
+    /// force on node i lies in the interface plane along a unit tangential vector d_i and depends on
+    /// the velocities through v_i . d_i only (in 2D: its x-force on vx_i), and d_i on no velocity
+    /// (LocalVelocityJacobian). An integrator may then treat that dependence implicitly (a
+    /// rate-and-state law is far too stiff in v for an explicit step near v = 0, theory.md D.2.4),
+    /// and the stable-step estimate leaves it out.
     virtual bool has_velocity_jacobian() const { return false; }
-    /// Adds the diagonal d(fx_i)/d(vx_i) of this effect's x-force at a stage (N s/m, <= 0: the force
-    /// resists the velocity) into dfx_dvx (one entry per node). Called only if has_velocity_jacobian().
-    virtual void add_velocity_jacobian(const StageView&, Eigen::Ref<Eigen::ArrayXd> /*dfx_dvx*/) const {}
+    /// Adds d(F_i . d_i)/d(v_i . d_i) of this effect's force at a stage into j.slope (N s/m, <= 0:
+    /// the force resists the velocity) and sets j.direction's rows of the nodes it acts on to d_i
+    /// where d_i is not the first tangential axis. Called only if has_velocity_jacobian().
+    virtual void add_velocity_jacobian(const StageView&, LocalVelocityJacobian& /*j*/) const {}
     /// Why no explicit step can integrate this effect (empty: one can): a law far too stiff in v near
     /// rest says so, and a scene whose integrator does not take its velocity dependence implicitly
     /// (Integrator::implicit_in_local_velocity) is refused at assembly, naming the integrator to use.

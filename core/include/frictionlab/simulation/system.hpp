@@ -78,12 +78,14 @@ public:
     void add_forces(double t, const Eigen::VectorXd& y, Eigen::Ref<Eigen::VectorXd> f, const Evaluation& how = {});
     /// 1/m of every node: derivative(), and integrators that divide by the masses themselves (RK4).
     const Eigen::ArrayXd& inverse_mass() const { return inverse_mass_; }
-    /// The x-forces and the diagonal d(fx)/d(vx) (both [nnode]; x the sliding direction) of the active effects whose
-    /// velocity dependence is local (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats that
-    /// dependence implicitly solves with (IMEX). False, and both zero, when no effect has one. Effects read the
-    /// quantities others published in the last evaluation (a friction law reads the base contact's normal force), so
-    /// call it at the positions of that evaluation.
-    bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& fx, Eigen::ArrayXd& dfx_dvx);
+    /// The forces along their directions, F_i . d_i, and the Jacobian (slopes and directions d_i,
+    /// LocalVelocityJacobian) of the active effects whose velocity dependence is local
+    /// (Effect::has_velocity_jacobian) at (t, y): what an integrator that treats that dependence
+    /// implicitly solves with (IMEX). False, the forces and slopes zero, when no effect has one.
+    /// Effects read the quantities others published in the last evaluation (a friction law reads the
+    /// base contact's normal force), so call it at the positions of that evaluation.
+    bool local_velocity_forces(double t, const Eigen::VectorXd& y, Eigen::ArrayXd& force,
+                               LocalVelocityJacobian& jacobian);
     /// Whether an active part (index into pipeline()) has a local velocity Jacobian: the stable-step
     /// estimate, for integrators implicit in it.
     bool has_velocity_jacobian(std::size_t active_index) const {
