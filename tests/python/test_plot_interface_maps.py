@@ -75,3 +75,41 @@ def test_a_wide_interfaces_maps_fill_a_grid_row_by_row(run_3d, monkeypatch):
     width, height = axes[0].figure.get_size_inches()
     assert height < 2 * width  # where one column of five square maps would be five times as tall
     plt.close(axes[0].figure)
+
+
+def test_the_slipping_patch_is_the_blocks_each_snapshot_shows_slipping(run_3d):
+    import xml.etree.ElementTree as ElementTree
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+    from frictionlab.plot.interface_figures import slipping_patch
+
+    patch = slipping_patch(run_3d)
+    times, x, y, _ = interface_series(run_3d)
+    np.testing.assert_array_equal(patch["time"], times)
+    busiest = int(np.argmax(patch["blocks"]))
+    assert patch["blocks"][busiest] > 1, "the tiny slider slips somewhere"
+    # That snapshot read here with VTK: its interface nodes (those with a friction force) that slip.
+    pvd = os.path.join(run_3d.directory, "lattice.pvd")
+    files = [d.get("file") for d in ElementTree.parse(pvd).getroot().iter("DataSet")]
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(run_3d.directory, files[busiest]))
+    reader.Update()
+    data = reader.GetOutput().GetPointData()
+    on = ~np.isnan(vtk_to_numpy(data.GetArray("friction_force")))
+    slipping = vtk_to_numpy(data.GetArray("slipping"))[on] > 0.5
+    velocity = vtk_to_numpy(data.GetArray("velocity"))[on]
+    row = patch[busiest]
+    assert row["blocks"] == slipping.sum()
+    assert row["along"] == pytest.approx(np.ptp(x[slipping])) and row["across"] == pytest.approx(np.ptp(y[slipping]))
+    assert row["speed"] == pytest.approx(np.hypot(velocity[slipping, 0], velocity[slipping, 1]).mean())
+    assert np.isnan(row["slip"]) and data.GetArray("slip") is None  # Coulomb publishes no slip
+    still = patch["blocks"] == 0
+    assert np.isnan(patch["along"][still]).all() and np.isnan(patch["speed"][still]).all()
+
+
+def test_a_2d_run_has_no_slipping_patch(csv_run):
+    from frictionlab.plot.interface_figures import slipping_patch
+
+    with pytest.raises(NothingToDraw):
+        slipping_patch(csv_run)

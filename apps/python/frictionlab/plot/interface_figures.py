@@ -17,26 +17,28 @@ from ._tables import run_directory
 STILL = 1e-6
 
 
-def interface_series(run):
-    """(times, x, y, speeds) of the interface blocks (the nodes whose friction force is published) in
-    every snapshot of the run's lattice series: x, y their reference positions (m), speeds an array of
-    |v| in the interface plane (m/s), a row per snapshot. NothingToDraw without a series, or for an
-    interface that is a line."""
+def _interface_snapshots(run, arrays, optional=()):
+    """(times, x, y, {name: values}) of the interface blocks (the nodes whose friction force is
+    published) in every snapshot of the run's lattice series: x, y their reference positions (m), each
+    of `arrays` and `optional` (point arrays of the series) a row per snapshot, an optional one NaN
+    where a snapshot lacks it. NothingToDraw without a series, for snapshots without `arrays`, or for
+    an interface that is a line."""
     pvd = os.path.join(run_directory(run), "lattice.pvd")
     if not os.path.exists(pvd):
         raise NothingToDraw(f"{run_directory(run)}: no lattice series")
     import vtk
     from vtk.util.numpy_support import vtk_to_numpy
 
-    times, speeds, x, y = [], [], None, None
+    times, values, x, y = [], {name: [] for name in tuple(arrays) + tuple(optional)}, None, None
     for d in ElementTree.parse(pvd).getroot().iter("DataSet"):
         reader = vtk.vtkXMLUnstructuredGridReader()
         reader.SetFileName(os.path.join(os.path.dirname(pvd), d.get("file")))
         reader.Update()
         grid = reader.GetOutput()
         data = grid.GetPointData()
-        if data.GetArray("friction_force") is None or data.GetArray("velocity") is None:
-            raise NothingToDraw(f"{pvd}: no friction force or velocity in its snapshots")
+        missing = [name for name in ("friction_force",) + tuple(arrays) if data.GetArray(name) is None]
+        if missing:
+            raise NothingToDraw(f"{pvd}: no {' or '.join(missing)} in its snapshots")
         on = ~np.isnan(vtk_to_numpy(data.GetArray("friction_force")))
         if x is None:
             reference = vtk_to_numpy(grid.GetPoints().GetData())[on] - vtk_to_numpy(data.GetArray("displacement"))[on]
@@ -44,10 +46,41 @@ def interface_series(run):
             if np.ptp(y) == 0:
                 raise NothingToDraw(f"{pvd}: the interface is a line (a 2D run)")
         times.append(float(d.get("timestep")))
-        speeds.append(np.hypot(*vtk_to_numpy(data.GetArray("velocity"))[on][:, :2].T))
+        for name in arrays:
+            values[name].append(vtk_to_numpy(data.GetArray(name))[on])
+        for name in optional:
+            array = data.GetArray(name)
+            values[name].append(vtk_to_numpy(array)[on] if array is not None else np.full(on.sum(), np.nan))
     if not times:
         raise NothingToDraw(f"{pvd}: no snapshots")
-    return np.array(times), x, y, np.array(speeds)
+    return np.array(times), x, y, {name: np.array(rows) for name, rows in values.items()}
+
+
+def interface_series(run):
+    """(times, x, y, speeds) of the interface blocks in every snapshot of the run's lattice series:
+    x, y their reference positions (m), speeds an array of |v| in the interface plane (m/s), a row per
+    snapshot. NothingToDraw without a series, or for an interface that is a line."""
+    times, x, y, values = _interface_snapshots(run, ("velocity",))
+    return times, x, y, np.hypot(values["velocity"][:, :, 0], values["velocity"][:, :, 1])
+
+
+def slipping_patch(run):
+    """The blocks in the slipping state (the friction law's `slipping` quantity) in every snapshot of
+    the run's lattice series, as a structured array with a row per snapshot: time (s, of the run),
+    blocks (how many), along and across (the span of their reference positions in x and y, m, 0 for
+    one block, NaN for none), speed (their mean slip speed, m/s) and slip (the largest slip of any
+    block, m; NaN for a law that publishes none). A slow patch creeping below the precursors
+    observer's quiet_speed is no event for it, and shows here (theory.md 5a)."""
+    times, x, y, values = _interface_snapshots(run, ("slipping", "velocity"), optional=("slip",))
+    rows = []
+    for t, slipping, velocity, slip in zip(times, values["slipping"], values["velocity"], values["slip"]):
+        on = slipping > 0.5
+        some = bool(on.any())
+        speed = np.hypot(velocity[on, 0], velocity[on, 1]).mean() if some else np.nan
+        rows.append((t, int(on.sum()), np.ptp(x[on]) if some else np.nan, np.ptp(y[on]) if some else np.nan,
+                     speed, np.abs(slip).max()))
+    return np.array(rows, dtype=[("time", float), ("blocks", int), ("along", float), ("across", float),
+                                 ("speed", float), ("slip", float)])
 
 
 def interface_maps(run, ax=None, maps=6, until=None):
