@@ -28,12 +28,13 @@ LatticeRig::LatticeRig(const TestLattice::Params& p) : lattice(p, services.conte
     for (auto& e : lattice.effects(context())) system.add_effect(std::move(e));
 }
 
-std::unique_ptr<Integrator> LatticeRig::integrator(const std::string& type, double dt) {
+std::unique_ptr<Integrator> LatticeRig::integrator(const std::string& type, double dt, const ParamValues& more) {
     Context ctx = context();
     ctx.registry = &integrator_registry();
     ParamValues values{{"dt", dt}};
     if (type == "dormand_prince")
         values = {{"rtol", 1e-10}, {"atol_position", 1e-16}, {"atol_velocity", 1e-12}, {"initial_step", dt}};
+    values.insert(more.begin(), more.end());
     return integrator_registry().create<Integrator>(type, values, ctx);
 }
 

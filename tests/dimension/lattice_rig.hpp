@@ -26,8 +26,9 @@ struct LatticeRig {
     /// Adds an effect (a loader built on the body) to the pipeline after the lattice's.
     void add(std::unique_ptr<Effect> effect) { system.add_effect(std::move(effect)); }
     Context context() { return services.context(&lattice.body()); }
-    /// The integrator `type` at step dt (an adaptive one at a tight tolerance, its first step dt).
-    std::unique_ptr<Integrator> integrator(const std::string& type, double dt);
+    /// The integrator `type` at step dt (an adaptive one at a tight tolerance, its first step dt),
+    /// with the values `more` besides.
+    std::unique_ptr<Integrator> integrator(const std::string& type, double dt, const ParamValues& more = {});
     /// Kinetic energy plus every effect's stored energy at the accepted state.
     double energy() const;
     /// Steps until t_end, the last step landing on it.

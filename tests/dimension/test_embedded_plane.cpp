@@ -47,11 +47,12 @@ struct Comparison {
     double difference = 0, displacement = 0, across = 0;  // across: |y - y0| in 3D
 };
 
-Comparison compare(const std::string& integrator, double dt, int steps) {
+Comparison compare(const std::string& integrator, double dt, int steps, const ParamValues& more = {}) {
     LatticeRig planar(in(2)), solid(in(3));
     load(planar);
     load(solid);
-    const auto step_planar = planar.integrator(integrator, dt), step_solid = solid.integrator(integrator, dt);
+    const auto step_planar = planar.integrator(integrator, dt, more),
+               step_solid = solid.integrator(integrator, dt, more);
     Comparison c;
     for (int k = 0; k < steps; ++k) {
         step_planar->step(planar.system, dt);
@@ -84,6 +85,15 @@ TEST(EmbeddedPlane, AOneLayer3dSliderMovesAsThe2dOneWithTheAdaptiveAndHybridSche
         EXPECT_EQ(c.difference, 0.0) << integrator;
         EXPECT_EQ(c.across, 0.0) << integrator;
     }
+    // The hybrid with imex_euler's dynamic phases, which take the friction implicitly as imex_euler does.
+    const Comparison c = compare("quasi_static_hybrid", 1e-5, 1500, {{"dynamic", std::string("imex_euler")}});
+    EXPECT_GT(c.displacement, 1e-6);
+    EXPECT_EQ(c.difference, 0.0);
+    EXPECT_EQ(c.across, 0.0);
+    LatticeRig rig(in(3));
+    EXPECT_TRUE(rig.integrator("quasi_static_hybrid", 1e-5, {{"dynamic", std::string("imex_euler")}})
+                    ->implicit_in_local_velocity());
+    EXPECT_FALSE(rig.integrator("quasi_static_hybrid", 1e-5)->implicit_in_local_velocity());
 }
 
 }  // namespace
