@@ -61,8 +61,8 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
     const Eigen::ArrayXd& mass = system.body().mass;
     // u = v . d at the step start and after the explicit kick (vx_n + h F/m and the like).
     const auto along_direction = [&](const Eigen::VectorXd& state, Eigen::ArrayXd& u) {
-        u.setZero(n);
-        for (std::size_t a = 0; a < axes.size(); ++a)
+        u = layout.velocities_along(state, axes[0]).array() * direction.col(0);
+        for (std::size_t a = 1; a < axes.size(); ++a)
             u += layout.velocities_along(state, axes[a]).array() * direction.col(static_cast<Index>(a));
     };
     along_direction(system.y(), u_start_);
@@ -71,18 +71,21 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
     // while it moves across d faster carries an error of ~eps |v across| in v . d, which no iteration
     // removes (0 on a 2D body, whose velocity is u itself).
     noise_.setZero(n);
-    for (std::size_t a = 0; a < axes.size(); ++a) {
-        const auto d = direction.col(static_cast<Index>(a));
-        noise_ += (layout.velocities_along(next_, axes[a]).array() - u_explicit_ * d).square();
-    }
-    noise_ = 4 * std::numeric_limits<double>::epsilon() * noise_.sqrt();
-    // The velocity with its part along d replaced by u: v - (v . d) d + u d, which is u itself along
-    // the one axis of a 2D body (d = 1).
-    const auto set_along_direction = [&](Eigen::VectorXd& state, const Eigen::ArrayXd& from, const Eigen::ArrayXd& u) {
+    if (axes.size() > 1) {
         for (std::size_t a = 0; a < axes.size(); ++a) {
             const auto d = direction.col(static_cast<Index>(a));
-            auto v = layout.velocities_along(state, axes[a]).array();
-            v = (v - from * d) + u * d;
+            noise_ += (layout.velocities_along(next_, axes[a]).array() - u_explicit_ * d).square();
+        }
+        noise_ = 4 * std::numeric_limits<double>::epsilon() * noise_.sqrt();
+    }
+    // Into `state`: the velocity of `source`, whose part along d is u_source, with that part replaced
+    // by u: v - (v . d) d + u d, which is u itself along the one axis of a 2D body (d = 1).
+    const auto set_along_direction = [&](Eigen::VectorXd& state, const Eigen::VectorXd& source,
+                                         const Eigen::ArrayXd& u_source, const Eigen::ArrayXd& u) {
+        for (std::size_t a = 0; a < axes.size(); ++a) {
+            const auto d = direction.col(static_cast<Index>(a));
+            layout.velocities_along(state, axes[a]).array() =
+                (layout.velocities_along(source, axes[a]).array() - u_source * d) + u * d;
         }
     };
     // G(u) = u - u_explicit - (h/m)(F_L(u) - F_L(u_n)) increases with u (G' = 1 - (h/m) J >= 1);
@@ -90,9 +93,9 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
     low_ = u_start_.min(u_explicit_);
     high_ = u_start_.max(u_explicit_);
     v_ = u_start_ + (u_explicit_ - u_start_) / (1 - h * jacobian0_.slope / mass);  // linearly implicit first guess
+    trial_ = system.y();
     for (int iteration = 0;; ++iteration) {
-        trial_ = system.y();
-        set_along_direction(trial_, u_start_, v_);
+        set_along_direction(trial_, system.y(), u_start_, v_);
         system.local_velocity_forces(t, trial_, force_, jacobian_);
         Index unconverged = -1;
         for (Index i = 0; i < n; ++i) {
@@ -116,7 +119,7 @@ void ImexEuler::solve_velocity(System& system, double t, double h) {
                 "did not converge in {} Newton iterations (v between {:.6g} and {:.6g} m/s)",
                 system.step_index() + 1, t, unconverged, max_iterations, low_[unconverged], high_[unconverged]));
     }
-    set_along_direction(next_, u_explicit_, v_);
+    set_along_direction(next_, next_, u_explicit_, v_);
 }
 
 bool ImexEuler::linearised_step(const JacobianProduct& jacobian, double h, Index positions, const Eigen::VectorXd& u,
