@@ -8,7 +8,7 @@
 //
 // Newton on q1 with J = K + (2/h) C + (4/h^2) M, K = -dF/dq assembled from the effects
 // (Effect::add_stiffness), C = -dF/dv found once by probing the forces along each velocity (the
-// dashpots are linear), M the masses; J is factorised by a sparse LDL^T (SparseLdlt) and kept from step to step
+// dashpots are linear), M the masses; J is factorised by a sparse Cholesky (SparseLdlt) and kept from step to step
 // (its residual is always exact, so the solution is too) until a step needs more than slow_after
 // iterations. A step ends exactly where it was asked to: a step is refused (nothing done, the
 // explicit scheme takes over) when an event is due within it (a junction clock, a threshold the
@@ -33,12 +33,13 @@ public:
         double event_overshoot = 1e-12;     // s: how far past a foreseen event a step may end
         int max_iterations = 8;
         int slow_after = 3;  // iterations: a step that needed more renews J for the next
+        Factorisation factorisation = Factorisation::simplicial;
     };
     struct Counts {
         long long steps = 0, iterations = 0, factorisations = 0, refused = 0;
     };
 
-    explicit CreepStepper(const Settings& s) : s_(s) {}
+    explicit CreepStepper(const Settings& s) : s_(s), ldlt_(s.factorisation) {}
 
     /// One step of `step` seconds from the system's state, accepted; false (nothing accepted) if an
     /// event is due within it, max_dt is shorter, an effect leaves its quasi-static regime, the

@@ -5,7 +5,7 @@
 //
 //   Newton:   K dq = F(q, v, t),  q <- q + dq,  until max |dq| <= position_tolerance, with
 //             K = -dF/dq assembled from the effects (Effect::add_stiffness) and factorised by a
-//             sparse LDL^T (SparseLdlt: CHOLMOD's). The factorisation is kept from
+//             sparse Cholesky (SparseLdlt: CHOLMOD's). The factorisation is kept from
 //             solve to solve: while the set of pinned junctions and contacts is unchanged and the
 //             geometric springs barely turn, K hardly changes, and Newton with the kept K (its
 //             residual always evaluated exactly, so the solution is exact) converges in an
@@ -38,12 +38,13 @@ public:
         // Relative; the difference quotient's round-off leaves ~1e-9 of |v| (measured on the 41 x 9 lattice).
         double velocity_tolerance = 1e-6;
         double probe_displacement = 1e-8;  // m: largest displacement of the difference quotient K v
+        Factorisation factorisation = Factorisation::simplicial;
     };
     struct Counts {
         long long solves = 0, iterations = 0, factorisations = 0;
     };
 
-    explicit EquilibriumSolver(const Settings& s) : s_(s) {}
+    explicit EquilibriumSolver(const Settings& s) : s_(s), ldlt_(s.factorisation) {}
 
     /// Solves F(q, v, t) = 0 for the positions of y (updated in place, from the guess they hold),
     /// with the velocities of y held; returns false if the stiffness cannot be factorised (a body

@@ -69,6 +69,7 @@ public:
         double position_tolerance = 1e-13;
         double creep_step = 0;
         double creep_speed = 1e-3;
+        Factorisation factorisation = Factorisation::simplicial;
     };
     static constexpr std::string_view type = "quasi_static_hybrid";
     static ParamSpec<Params> spec();

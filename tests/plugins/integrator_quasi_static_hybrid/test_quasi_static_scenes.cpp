@@ -1,6 +1,7 @@
 // Whole scenes with the hybrid stepper against RK4, the paper's method (dt = 2e-7 s): the Li 2020
 // baseline slider settled, then loaded at 20 mm/s into its first precursors (scenes/loading.yaml;
 // the reference runs swap its integrator for rk4).
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -86,6 +87,30 @@ TEST(QuasiStaticScenes, CreepStepsLetTheLatticeCalmWhateverNewtonLeaves) {
     const double loose = quiet_fraction("loose", "3.0e-12"), tight = quiet_fraction("default", "1.0e-13");
     EXPECT_GT(tight, 0.9);
     EXPECT_GT(loose, tight - 0.01) << "the lattice calms as soon with the looser tolerance";
+}
+
+TEST(QuasiStaticScenes, TheSupernodalFactorisationGivesTheSimplicialRunToRoundOff) {
+    // The stuck loading with creep steps, so that both the equilibrium solver's and the creep
+    // stepper's factorisations are used: the two forms solve the same systems, to round-off.
+    const std::string stuck =
+        "--set loaders[2].velocity=1.0e-4 --set stages[1].duration=0.03 --set integrator.creep_step=2.0e-6 ";
+    const auto work = testing::work_directory();
+    const LoadingRun simplicial = run_loading(work, "simplicial", stuck),
+                     supernodal = run_loading(work, "supernodal", stuck + "--set integrator.factorisation=supernodal");
+    EXPECT_EQ(supernodal.record["scene"]["integrator"]["factorisation"].as<std::string>(), "supernodal");
+    const YAML::Node a = simplicial.record["integrator_statistics"], b = supernodal.record["integrator_statistics"];
+    EXPECT_GT(a["creep_steps"].as<double>(), 0);
+    EXPECT_GT(a["quiet_steps"].as<double>(), 0);
+    for (const char* count : {"quiet_steps", "creep_steps", "dynamic_steps", "static_solves"})
+        EXPECT_EQ(a[count].as<double>(), b[count].as<double>()) << count;
+    ASSERT_EQ(simplicial.curve.at("time").size(), supernodal.curve.at("time").size());
+    for (const char* column : {"driving_force", "driving_displacement", "total_friction_force", "total_normal_force"}) {
+        const auto &x = simplicial.curve.at(column), &y = supernodal.curve.at(column);
+        const auto [low, high] = std::minmax_element(x.begin(), x.end());
+        double worst = 0;
+        for (std::size_t k = 0; k < x.size(); ++k) worst = std::max(worst, std::abs(x[k] - y[k]));
+        EXPECT_LE(worst, 1e-9 * (*high - *low)) << column;
+    }
 }
 
 // An observation within a quiet span is a state on the span's line, not a step: it must show what a

@@ -1,6 +1,7 @@
-// The hybrid's sparse LDL^T: solves a symmetric positive definite system to round-off from its lower
-// triangle, and tells a singular or indefinite matrix (a body mode nothing holds, an unstable
-// equilibrium) from a positive definite one, the hybrid's test of whether a static solve is possible.
+// The hybrid's sparse Cholesky, in both its forms (simplicial LDL^T, supernodal LL^T): solves a
+// symmetric positive definite system to round-off from its lower triangle, and tells a singular or
+// indefinite matrix (a body mode nothing holds, an unstable equilibrium) from a positive definite
+// one, the hybrid's test of whether a static solve is possible.
 #include <vector>
 
 #include <Eigen/Dense>
@@ -25,9 +26,11 @@ Eigen::SparseMatrix<double> chain(int n, double anchor) {
     return k;
 }
 
-TEST(SparseLdlt, SolvesAPositiveDefiniteSystemToRoundOff) {
+class SparseLdltForm : public ::testing::TestWithParam<Factorisation> {};
+
+TEST_P(SparseLdltForm, SolvesAPositiveDefiniteSystemToRoundOff) {
     const Eigen::SparseMatrix<double> k = chain(50, 0.5);
-    SparseLdlt ldlt;
+    SparseLdlt ldlt(GetParam());
     ldlt.compute(k);
     ASSERT_TRUE(ldlt.positive_definite());
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(50, -1.0, 2.0);
@@ -37,8 +40,8 @@ TEST(SparseLdlt, SolvesAPositiveDefiniteSystemToRoundOff) {
     EXPECT_LT((k * x - b).norm(), 1e-12 * b.norm() * 50 * 50);
 }
 
-TEST(SparseLdlt, TellsASingularOrIndefiniteMatrixFromAPositiveDefiniteOne) {
-    SparseLdlt ldlt;
+TEST_P(SparseLdltForm, TellsASingularOrIndefiniteMatrixFromAPositiveDefiniteOne) {
+    SparseLdlt ldlt(GetParam());
     ldlt.compute(chain(20, 0.0));  // free to slide: singular
     EXPECT_FALSE(ldlt.positive_definite());
     ldlt.compute(chain(20, -0.01));  // pushed away from its rest: indefinite
@@ -46,6 +49,11 @@ TEST(SparseLdlt, TellsASingularOrIndefiniteMatrixFromAPositiveDefiniteOne) {
     ldlt.compute(chain(20, 0.01));  // the same factor object again, held
     EXPECT_TRUE(ldlt.positive_definite());
 }
+
+INSTANTIATE_TEST_SUITE_P(SparseLdlt, SparseLdltForm,
+                         ::testing::Values(Factorisation::simplicial, Factorisation::supernodal), [](const auto& info) {
+                             return info.param == Factorisation::simplicial ? "Simplicial" : "Supernodal";
+                         });
 
 }  // namespace
 }  // namespace frictionlab
