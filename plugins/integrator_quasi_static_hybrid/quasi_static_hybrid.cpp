@@ -138,10 +138,10 @@ ParamSpec<Params> QuasiStaticHybrid::spec() {
         .greater_than(0);
     s.choice("factorisation", &Params::factorisation,
              {{"simplicial", Factorisation::simplicial}, {"supernodal", Factorisation::supernodal}},
-             "How the sparse stiffness and creep matrices are factorised (CHOLMOD): 'simplicial' LDL^T, fastest "
-             "to solve with on 2D lattices and small 3D ones; 'supernodal' LL^T through BLAS, far faster to "
-             "factorise on large 3D lattices (25 times at 41 x 41 x 9 nodes with serial OpenBLAS). The two differ "
-             "by round-off; a supernodal run's round-off is that of the machine's BLAS.");
+             "How the sparse stiffness and creep matrices are factorised (CHOLMOD): 'simplicial' LDL^T, the "
+             "faster on 2D lattices; 'supernodal' LL^T through the BLAS, the faster on 3D lattices, the more so "
+             "the larger (a run 4.2 times faster at 41 x 21 x 9 nodes with serial OpenBLAS, quasi-static.md). "
+             "The two differ by round-off; a supernodal run's round-off is that of the machine's BLAS.");
     s.rule("quiet_hold", hold_rule);
     s.rule("creep_step", creep_rule);
     s.dimensions({2, 3});
