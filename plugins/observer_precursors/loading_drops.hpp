@@ -34,6 +34,8 @@ public:
     void observe(double t, double ratio);
     /// Every fall, in order; the drops are those `major`.
     const std::vector<LoadingDrop>& falls() const { return falls_; }
+    /// Whether the history is in a fall now (it has not risen again beyond the ringing).
+    bool falling() const { return falling_; }
 
     template <class Archive>
     void serialize(Archive& ar) {

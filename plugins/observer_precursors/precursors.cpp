@@ -1,5 +1,7 @@
 #include "precursors.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 #include <map>
@@ -197,6 +199,12 @@ ParamSpec<Precursors::Params> Precursors::spec() {
     s.add("check", &Params::check,
           "Check the events against the loading curve's drops and the slip field (theory.md §5a); false skips "
           "the check (verdict: not_checked), for a run that measures what it costs.");
+    s.choice("end_stage", &Params::end_stage,
+             {{"never", EndStage::never}, {"after_global_slip", EndStage::after_global_slip}},
+             "'after_global_slip': end the stage the first global slip happens in once that slip is over (reported "
+             "ended, and with the check on the loading curve risen again after its fall), for a run that measures "
+             "the static coefficient and the precursors before it; later stages still run, and run.yaml records the "
+             "early end under stages_ended_early. 'never': every stage runs its duration.");
     s.add("events_file", &Params::events_file,
           "File of the events, one row each, in the output directory (extension .h5 in HDF5).");
     s.add("fronts_file", &Params::fronts_file,
@@ -396,6 +404,17 @@ void Precursors::observe(const RunView& view) {
     detector_->observe(view.state.t, {rupturing_, contact_, fast_, slip_, broke_at_, intact_at_}, f_s, f_n);
     if (params_.check) drops_.observe(view.state.t, f_s / f_n);
     report_ended(view);
+    judge_stage_end(view);
+}
+
+void Precursors::judge_stage_end(const RunView& view) {
+    if (params_.end_stage != EndStage::after_global_slip || stage_to_end_ >= 0) return;
+    const auto first_global =
+        std::find_if(checked_.begin(), checked_.end(), [](const CheckedEvent& e) { return e.global; });
+    if (first_global == checked_.end() || !first_global->finished || (params_.check && drops_.falling())) return;
+    stage_end_ = fmt::format("the first global slip (event {}, F_S/F_N {:.4f}) is over", first_global->index,
+                             first_global->force_ratio);
+    stage_to_end_ = view.stage.index;
 }
 
 void Precursors::report_ended(const RunView& view) {
@@ -510,6 +529,7 @@ std::string Precursors::summary_text(const RunView& view, const EventCheck& c, b
     line("lift_offs", std::to_string(contact_changes_.lift_offs()));
     line("re_contacts", std::to_string(contact_changes_.re_contacts()));
     line("blocks_out_of_contact", std::to_string(contact_changes_.out_of_contact()));
+    if (!stage_end_.empty()) line("stage_ended_early", fmt::format("\"{}\"", stage_end_));  // end_stage
     // What decided the events, every auto resolved: enough to run the detector again by hand.
     const auto& o = detector_->options();
     const char* criteria[] = {"auto", "pinned_fraction", "slipping", "slip_rate"};

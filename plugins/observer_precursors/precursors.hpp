@@ -57,6 +57,11 @@ namespace frictionlab {
 ///                                events, the check of the events, run metadata; rewritten
 ///                                atomically after each event
 ///
+/// With end_stage: after_global_slip, the stage ends once the first global slip is over: the detector
+/// has reported it ended and, with the check on, the loading curve has risen again after its fall,
+/// so that the event and its check are complete. An ensemble of the static coefficient and the
+/// precursors before it need not load on.
+///
 /// Only observations during stages named `stage` count (empty: all), so the settling ramp, when
 /// junctions are still being created, is not taken for a rupture.
 class Precursors final : public Observer {
@@ -68,9 +73,10 @@ public:
     template <class Archive>
     void serialize(Archive& ar) {
         ar(as_built(detector_), slip_rate_, drops_, checked_, rupturing_, broke_at_, intact_at_, last_observed_,
-           contact_changes_);
+           contact_changes_, stage_end_, stage_to_end_);
     }
     enum class Criterion { automatic, pinned_fraction, slipping, slip_rate };
+    enum class EndStage { never, after_global_slip };
     static constexpr double auto_value = std::numeric_limits<double>::quiet_NaN();
     struct Params {
         Criterion criterion = Criterion::automatic;
@@ -85,6 +91,7 @@ public:
         double drop_threshold = 0.03;
         double match_tolerance = 0.05;
         bool check = true;
+        EndStage end_stage = EndStage::never;
         std::string stage = "load";
         std::string events_file = "precursors.csv";
         std::string fronts_file = "precursor_fronts.csv";
@@ -107,6 +114,10 @@ public:
     void end(const RunView& view) override;
     /// front_every while an event is open: its front's arrivals resolved to it.
     double finer_cadence() const override { return detector_ && detector_->open() ? params_.front_every : 0.0; }
+    /// end_stage after_global_slip: the stage the first global slip ended in, once it is over.
+    std::string stage_end(const StageInfo& stage) const override {
+        return stage.index == stage_to_end_ ? stage_end_ : std::string();
+    }
 
     /// The settings as resolved for this scene (every `auto` replaced by its value).
     const Params& settings() const { return params_; }
@@ -117,12 +128,15 @@ private:
     void classify(const RunView& view, bool record);
     void observe_contact(const RunView& view);
     void report_ended(const RunView& view);
+    void judge_stage_end(const RunView& view);
     void write(const RuptureEvent& e);
     EventCheck check() const;
     void write_summary(const RunView& view, bool run_ended) const;
     std::string summary_text(const RunView& view, const EventCheck& check, bool run_ended) const;
 
     Params params_;
+    std::string stage_end_;              // why the stage ends (end_stage), once it must
+    int stage_to_end_ = -1;              // the index of that stage
     bool min_slip_follows_law_ = false;  // min_slip auto while the law's scale is not yet known
     double characteristic_slip_ = std::numeric_limits<double>::quiet_NaN();
     double kinetic_coefficient_ = std::numeric_limits<double>::quiet_NaN();

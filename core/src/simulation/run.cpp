@@ -89,7 +89,8 @@ public:
                               sim_.system().time(),
                               std::chrono::duration<double>(Clock::now() - start).count(),
                               static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC,
-                              sim_.integrator().statistics()};
+                              sim_.integrator().statistics(),
+                              stages_ended_early_};
         };
         try {
             run_stages(first_stage);
@@ -183,10 +184,27 @@ private:
             }
             calm_.observe(sys);
             if (!observers_.empty()) observe_due(stage, false);
+            if (ends_early(stage)) break;
             if (checkpoint_due()) write_checkpoint();
             progress.update(stage, sys.time(), sys.step_index());
             stop_if_asked(stage);
         }
+    }
+
+    /// Whether an observer ends the stage now (Observer::stage_end); if so, logs and records why.
+    bool ends_early(const StageInfo& stage) {
+        for (const auto& o : observers_) {
+            const std::string why = o.observer->stage_end(stage);
+            if (why.empty()) continue;
+            const double t = sim_.system().time();
+            const std::string end =
+                fmt::format("stage '{}' ended at t = {:.9g} s, {:.6g} s before its duration ran out: {}", stage.name, t,
+                            stage.t_start + stage.duration - t, why);
+            log_.info("{}", end);
+            stages_ended_early_.push_back(end);
+            return true;
+        }
+        return false;
     }
 
     /// Begins stage i; refuses it, as `check` does, if it must end at rest but a load still ramps up then.
@@ -340,8 +358,9 @@ private:
     std::filesystem::path output_;
     std::vector<ObserverSlot> observers_;  // after sim_: destroyed first
     StageInfo last_stage_;
-    CalmWatch calm_;         // of the stage running
-    bool resuming_ = false;  // observers are being begun again on a resumed run
+    std::vector<std::string> stages_ended_early_;  // Observer::stage_end, as run.yaml records it
+    CalmWatch calm_;                               // of the stage running
+    bool resuming_ = false;                        // observers are being begun again on a resumed run
     bool checkpoints_possible_ = false;
     double next_checkpoint_time_ = 0;
     Clock::time_point last_checkpoint_wall_ = Clock::now();

@@ -51,6 +51,8 @@ std::string RunRecord::text() const {
     entry("wall_seconds", summary.wall_seconds);
     entry("cpu_seconds", summary.cpu_seconds);
     entry("threads", worker_threads());  // what the times were taken with; the results do not depend on it
+    if (!summary.stages_ended_early.empty())
+        y << YAML::Key << "stages_ended_early" << YAML::Value << summary.stages_ended_early;
     if (!summary.integrator_statistics.empty()) {
         y << YAML::Key << "integrator_statistics" << YAML::Value << YAML::BeginMap;
         for (const auto& [name, value] : summary.integrator_statistics) entry(name, value);

@@ -332,6 +332,45 @@ TEST_F(PrecursorsTest, AGlobalSlipWithItsDropAgrees) {
     EXPECT_NE(summary.find("global_slip_event: 0}"), std::string::npos) << summary;
 }
 
+// end_stage after_global_slip: the global slip above ends the stage it happened in once the event is
+// over and F_S/F_N has risen again after its fall (0.01 of F_N, 40 observations after it bottomed out),
+// not before and no other stage; without the check, as soon as the event is over.
+TEST_F(PrecursorsTest, AfterTheFirstGlobalSlipItEndsItsStage) {
+    publish_junctions();
+    const fs::path base = dir_;
+    for (const bool check : {true, false}) {
+        dir_ = base / (check ? "checked" : "unchecked");  // each observer its own files
+        fs::create_directories(dir_);
+        Precursors::Params p;
+        p.end_stage = Precursors::EndStage::after_global_slip;
+        p.check = check;
+        Precursors observer = make(p);
+        observer.begin(view());
+        observe_at(observer, dt, {}, {}, 160);
+        observe_at(observer, 2 * dt, {0, 1, 2, 3, 4, 5}, {}, 160);
+        observe_at(observer, 3 * dt, {0, 1, 2, 3, 4, 5}, {}, 150);
+        int ended_at = 0;
+        for (int k = 4; k <= 60 && ended_at == 0; ++k) {
+            observe_at(observer, k * dt, {}, {}, 130 + 0.1 * (k - 4));
+            if (!observer.stage_end(stage_).empty()) ended_at = k;
+        }
+        EXPECT_EQ(ended_at, check ? 44 : 14) << "check " << check;  // the event ends 0.1 ms after its last rupture
+        EXPECT_EQ(observer.stage_end(stage_), "the first global slip (event 0, F_S/F_N 0.4000) is over");
+        EXPECT_EQ(observer.stage_end(StageInfo{"load", 2, 1.0, 1.0, true}), "") << "another stage goes on";
+        observer.end(view());
+        EXPECT_NE(read_text(dir_ / "precursors_summary.yaml")
+                      .find("stage_ended_early: \"the first global slip (event 0, F_S/F_N 0.4000) is over\"\n"),
+                  std::string::npos);
+    }
+    dir_ = base / "never";
+    fs::create_directories(dir_);
+    Precursors never = make();
+    never.begin(view());
+    observe_at(never, 2 * dt, {0, 1, 2, 3, 4, 5}, {}, 160);
+    for (int k = 3; k <= 60; ++k) observe_at(never, k * dt, {}, {}, 130 + 0.1 * k);
+    EXPECT_EQ(never.stage_end(stage_), "") << "end_stage never: the stage runs its duration";
+}
+
 TEST_F(PrecursorsTest, AGlobalSlipWithoutADropDisagrees) {
     publish_junctions();
     Precursors observer = make();

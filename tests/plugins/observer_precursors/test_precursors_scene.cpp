@@ -8,6 +8,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -94,6 +96,47 @@ TEST(PrecursorsScene, TheFirstPrecursorsOfAFastLoadedSlider) {
         frictionlab::testing::read_text(dir / "unchecked" / "precursors_summary.yaml");
     EXPECT_NE(unchecked_summary.find("  verdict: not_checked\n  falls: []\n  problems: []\n"), std::string::npos)
         << unchecked_summary;
+}
+
+// end_stage after_global_slip on the same slider: loading stops once its first global slip (the fourth
+// event, at 16.4 ms) is over, 17.1 ms in, where the scene would load for 20 ms; what it wrote until then
+// is what the run that loads on wrote, line for line, and run.yaml says when and why it stopped.
+TEST(PrecursorsScene, AfterTheFirstGlobalSlipLoadingEndsWithTheSameEvents) {
+    const fs::path dir = fs::path(FRICTIONLAB_BINARY_DIR) / "tests" / "observer_precursors" / "end_stage";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string scene = "run -q '" PRECURSOR_SCENES "/fast_loading.yaml' --set stages[1].duration=0.016 ";
+    const auto full = frictionlab::testing::frictionlab(scene + "-o full", dir);
+    ASSERT_EQ(full.code, 0) << full.output;
+    const auto ended =
+        frictionlab::testing::frictionlab(scene + "--set observers[1].end_stage=after_global_slip -o ended", dir);
+    ASSERT_EQ(ended.code, 0) << ended.output;
+
+    const auto lines = [](const fs::path& file) {
+        std::vector<std::string> out;
+        std::istringstream in(frictionlab::testing::read_text(file));
+        for (std::string line; std::getline(in, line);) out.push_back(line);
+        return out;
+    };
+    for (const char* table : {"precursors.csv", "loading_curve.csv", "precursor_fronts.csv"}) {
+        const auto a = lines(dir / "full" / table), b = lines(dir / "ended" / table);
+        ASSERT_GT(b.size(), 1u) << table;
+        ASSERT_LT(b.size(), a.size()) << table << ": the run that loads on writes more";
+        EXPECT_TRUE(std::equal(b.begin(), b.end(), a.begin())) << table << " is a beginning of the full run's";
+    }
+    auto events = read_csv(dir / "ended" / "precursors.csv");
+    ASSERT_EQ(events["global"].size(), 4u) << "three precursors, then the global slip";
+    EXPECT_EQ(events["global"][3], 1);
+
+    const std::string record = frictionlab::testing::read_text(dir / "ended" / "run.yaml");
+    EXPECT_NE(record.find("stages_ended_early:\n  - \"stage 'load' ended at t = 0.01713 s, 0.00287 s before its "
+                          "duration ran out: the first global slip (event 3, F_S/F_N 0.4174) is over\"\n"),
+              std::string::npos)
+        << record;
+    EXPECT_NE(record.find("simulated_time: 0.01713\n"), std::string::npos) << record;
+    const std::string summary = frictionlab::testing::read_text(dir / "ended" / "precursors_summary.yaml");
+    EXPECT_NE(summary.find("  verdict: agree\n"), std::string::npos) << summary;
+    EXPECT_EQ(frictionlab::testing::read_text(dir / "full" / "run.yaml").find("stages_ended_early"), std::string::npos);
 }
 
 }  // namespace

@@ -63,6 +63,11 @@ public:
     /// or scalars). If not (positions and committed discrete state only), the run serves it without
     /// evaluating the system at the observed state: a finer cadence then costs its sampling alone.
     virtual bool between_reads_forces() const { return true; }
+    /// Asked after every step of a stage: why that stage should end now, before its duration has run
+    /// out, or empty. A detector told to end its stage at an event answers once the event is over;
+    /// the run then ends the stage after this step, as if its duration had run out (later stages
+    /// still run), and logs and records the reason.
+    virtual std::string stage_end(const StageInfo& /*stage*/) const { return {}; }
 };
 
 /// Advances the system by one accepted step, obeying the freeze-and-commit rule.

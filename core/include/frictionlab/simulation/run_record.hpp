@@ -19,6 +19,7 @@ struct RunSummary {
     double simulated_time = 0, wall_seconds = 0;
     double cpu_seconds = 0;  // processor time of the run: what it costs, whatever else shares the machine
     std::vector<std::pair<std::string, double>> integrator_statistics;  // Integrator::statistics()
+    std::vector<std::string> stages_ended_early;                        // when and why (Observer::stage_end)
 };
 
 /// The run's record as the run writes it: at its start and again at its end, also when it fails
