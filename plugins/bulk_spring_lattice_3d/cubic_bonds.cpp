@@ -5,8 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "frictionlab/base/hot_kernel.hpp"
-
 namespace frictionlab {
 
 namespace {
@@ -23,89 +21,22 @@ Vec3 bond_vector(const StageView& s, const CubicBond& b) {
 
 CubicLatticeSprings::CubicLatticeSprings(std::shared_ptr<const CubicFamilies> families, double stiffness,
                                          std::string shape, Law law)
-    : families_(std::move(families)),
-      stiffness_(stiffness),
-      shape_(std::move(shape)),
-      law_(law),
-      pair_(families_->nodes()) {}
+    : families_(std::move(families)), stiffness_(stiffness), shape_(std::move(shape)), law_(law) {}
 
-namespace {
-
-/// Family f's spring forces on the nodes [from, to) that start a bond: k (1 - l/r) d, geometric.
-FRICTIONLAB_HOT_KERNEL
-void geometric_forces(const double* x, const double* y, const double* z, const Index* end, const double* image_y,
-                      Index from, Index to, double k, double l, double* fx, double* fy, double* fz) {
-    for (Index p = from; p < to; ++p) {
-        const Index q = end[p];
-        if (q < 0) {
-            fx[p] = fy[p] = fz[p] = 0;
-            continue;
-        }
-        const double dx = x[q] - x[p], dy = y[q] - y[p] + image_y[p], dz = z[q] - z[p];
-        const double t = k * (1 - l / std::sqrt(dx * dx + dy * dy + dz * dz));
-        fx[p] = t * dx, fy[p] = t * dy, fz[p] = t * dz;
-    }
+CubicBondLaw CubicLatticeSprings::bond_law() const {
+    return {law_ == Law::small_strain ? CubicBondLaw::Springs::small_strain : CubicBondLaw::Springs::geometric,
+            stiffness_};
 }
 
-/// The same law linearised about the rest vector r = l e: k ((d - r) . e) e.
-FRICTIONLAB_HOT_KERNEL
-void small_strain_forces(const double* x, const double* y, const double* z, const Index* end, const double* image_y,
-                         Index from, Index to, double k, const std::array<double, 3>& rest, double l, double* fx,
-                         double* fy, double* fz) {
-    const double ex = rest[0] / l, ey = rest[1] / l, ez = rest[2] / l;
-    for (Index p = from; p < to; ++p) {
-        const Index q = end[p];
-        if (q < 0) {
-            fx[p] = fy[p] = fz[p] = 0;
-            continue;
-        }
-        const double dx = x[q] - x[p] - rest[0], dy = y[q] - y[p] + image_y[p] - rest[1], dz = z[q] - z[p] - rest[2];
-        const double t = k * (dx * ex + dy * ey + dz * ez);
-        fx[p] = t * ex, fy[p] = t * ey, fz[p] = t * ez;
-    }
+void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) {
+    add_cubic_bond_forces(*families_, bond_law(), s, f);
 }
-
-/// Family f's dashpot forces eta (v_q - v_p) on the nodes [from, to) that start a bond: onto the
-/// springs' forces of the same bonds (`onto`), or in their place.
-FRICTIONLAB_HOT_KERNEL
-void dashpot_forces(const double* vx, const double* vy, const double* vz, const Index* end, Index from, Index to,
-                    double eta, bool onto, double* fx, double* fy, double* fz) {
-    for (Index p = from; p < to; ++p) {
-        const Index q = end[p];
-        const bool bond = q >= 0;
-        const double gx = bond ? eta * (vx[q] - vx[p]) : 0, gy = bond ? eta * (vy[q] - vy[p]) : 0,
-                     gz = bond ? eta * (vz[q] - vz[p]) : 0;
-        if (onto)
-            fx[p] += gx, fy[p] += gy, fz[p] += gz;
-        else
-            fx[p] = gx, fy[p] = gy, fz[p] = gz;
-    }
-}
-
-}  // namespace
-
-void CubicLatticeSprings::add_forces(const StageView& s, ForceView& f) { add_bond_forces(s, nullptr, f); }
 
 void CubicLatticeSprings::add_forces_with_dashpots(const StageView& s, const CubicBondDamping& dashpots, ForceView& f) {
-    add_bond_forces(s, &dashpots, f);
-}
-
-void CubicLatticeSprings::add_bond_forces(const StageView& s, const CubicBondDamping* dashpots, ForceView& f) {
-    const double *x = s.positions_along(0).data(), *y = s.positions_along(1).data(), *z = s.positions_along(2).data();
-    const double *vx = s.velocities_along(0).data(), *vy = s.velocities_along(1).data(),
-                 *vz = s.velocities_along(2).data();
-    const CubicFamilies& c = *families_;
-    for_each_family_chunk(c.nodes(), [&](int family, Index from, Index to) {
-        double *fx = pair_.along(family, 0), *fy = pair_.along(family, 1), *fz = pair_.along(family, 2);
-        if (law_ == Law::small_strain)
-            small_strain_forces(x, y, z, c.ends(family), c.image_y(family), from, to, stiffness_, c.rest(family),
-                                c.rest_length(family), fx, fy, fz);
-        else
-            geometric_forces(x, y, z, c.ends(family), c.image_y(family), from, to, stiffness_, c.rest_length(family),
-                             fx, fy, fz);
-        if (dashpots) dashpot_forces(vx, vy, vz, c.ends(family), from, to, dashpots->coefficient(), true, fx, fy, fz);
-    });
-    pair_.add_to(c, f);
+    CubicBondLaw law = bond_law();
+    law.dashpots = true;
+    law.eta = dashpots.coefficient();
+    add_cubic_bond_forces(*families_, law, s, f);
 }
 
 double CubicLatticeSprings::potential_energy(const StageView& s) const {
@@ -147,15 +78,7 @@ std::string CubicBondDamping::describe() const {
 }
 
 void CubicBondDamping::add_forces(const StageView& s, ForceView& f) {
-    const double *vx = s.velocities_along(0).data(), *vy = s.velocities_along(1).data(),
-                 *vz = s.velocities_along(2).data();
-    const CubicFamilies& c = *families_;
-    if (!pair_) pair_.emplace(c.nodes());  // only when evaluated apart from the springs (energy bookkeeping)
-    for_each_family_chunk(c.nodes(), [&](int family, Index from, Index to) {
-        dashpot_forces(vx, vy, vz, c.ends(family), from, to, eta_, false, pair_->along(family, 0),
-                       pair_->along(family, 1), pair_->along(family, 2));
-    });
-    pair_->add_to(c, f);
+    add_cubic_bond_forces(*families_, {CubicBondLaw::Springs::none, 0, true, eta_}, s, f);
 }
 
 }  // namespace frictionlab

@@ -1,15 +1,15 @@
 #pragma once
 // The bonds of the simple-cubic lattice and the two effects that act on them: central springs and
-// the dashpots on the same bonds. Forces are computed by bond family (cubic_families.hpp): in
-// parallel, and the same bits at any thread count.
+// the dashpots on the same bonds. Forces are computed by bond family in one pass over the nodes
+// (cubic_bond_forces.hpp): in parallel, and the same bits at any thread count.
 #include <array>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "cubic_bond_forces.hpp"
 #include "cubic_families.hpp"
 #include "frictionlab/model/effect.hpp"
 
@@ -55,13 +55,12 @@ public:
     void add_stiffness(const StageView& s, std::vector<Eigen::Triplet<double>>& stiffness) const override;
 
 private:
-    void add_bond_forces(const StageView& s, const CubicBondDamping* dashpots, ForceView& f);
+    CubicBondLaw bond_law() const;  // the springs alone
 
     std::shared_ptr<const CubicFamilies> families_;
     double stiffness_;
     std::string shape_;  // "nx x ny x nz", for describe()
     Law law_;
-    CubicPairForces pair_;  // scratch of add_forces()
 };
 
 /// A dashpot eta on every bond, along the full relative velocity: eta (v_j - v_i) on node i (the
@@ -82,7 +81,6 @@ public:
 private:
     std::shared_ptr<const CubicFamilies> families_;
     double eta_;
-    std::optional<CubicPairForces> pair_;  // scratch of add_forces(), made when first evaluated alone
 };
 
 /// The springs and the dashpots on the same bonds as one effect of the pipeline, evaluated in one

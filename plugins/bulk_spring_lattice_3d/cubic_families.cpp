@@ -4,9 +4,25 @@
 #include <cmath>
 
 #include "cubic_bonds.hpp"
-#include "frictionlab/base/hot_kernel.hpp"
 
 namespace frictionlab {
+
+namespace {
+
+/// Each node's link (another node, or -1) as runs of one offset, and of one image_y(node).
+std::vector<CubicRun> runs_of(const std::vector<Index>& link, const std::vector<double>& image_y) {
+    std::vector<CubicRun> runs;
+    for (Index p = 0; p < static_cast<Index>(link.size()); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        const Index offset = link[i] < 0 ? 0 : link[i] - p;
+        if (runs.empty() || runs.back().offset != offset || runs.back().image_y != image_y[i])
+            runs.push_back({p, p, offset, image_y[i]});
+        runs.back().end = p + 1;
+    }
+    return runs;
+}
+
+}  // namespace
 
 CubicFamilies::CubicFamilies(Index nx, Index ny, Index nz, double a, bool periodic)
     : nodes_(nx * ny * nz), spacing_(a) {
@@ -14,10 +30,9 @@ CubicFamilies::CubicFamilies(Index nx, Index ny, Index nz, double a, bool period
     for (int f = 0; f < count; ++f) {
         const auto [dx, dy, dz] = directions[static_cast<std::size_t>(f)];
         auto& end = end_[static_cast<std::size_t>(f)];
-        auto& start = start_[static_cast<std::size_t>(f)];
         auto& image = image_y_[static_cast<std::size_t>(f)];
+        std::vector<Index> start(static_cast<std::size_t>(nodes_), -1);
         end.assign(static_cast<std::size_t>(nodes_), -1);
-        start.assign(static_cast<std::size_t>(nodes_), -1);
         image.assign(static_cast<std::size_t>(nodes_), 0.0);
         for (Index iz = 0; iz < nz; ++iz)
             for (Index iy = 0; iy < ny; ++iy)
@@ -35,6 +50,11 @@ CubicFamilies::CubicFamilies(Index nx, Index ny, Index nz, double a, bool period
                     start[static_cast<std::size_t>(q)] = p;
                     image[static_cast<std::size_t>(p)] = shift;
                 }
+        std::vector<double> start_image(static_cast<std::size_t>(nodes_), 0.0);
+        for (std::size_t q = 0; q < start.size(); ++q)
+            if (start[q] >= 0) start_image[q] = image[static_cast<std::size_t>(start[q])];
+        own_runs_[static_cast<std::size_t>(f)] = runs_of(end, image);
+        incoming_runs_[static_cast<std::size_t>(f)] = runs_of(start, start_image);
     }
 }
 
@@ -52,32 +72,6 @@ std::vector<CubicBond> CubicFamilies::bonds(double stiffness) const {
     std::vector<CubicBond> out;
     for_each_bond(stiffness, [&](const CubicBond& b) { out.push_back(b); });
     return out;
-}
-
-namespace {
-
-/// One family's bonds onto the forces F of the nodes [from, to): each node's own bond's force, less
-/// that of the bond ending on it.
-FRICTIONLAB_HOT_KERNEL
-void add_family(double* F, const double* pair, const Index* start, Index from, Index to) {
-    for (Index p = from; p < to; ++p) {
-        const Index s = start[p];
-        F[p] += s >= 0 ? pair[p] - pair[s] : pair[p];
-    }
-}
-
-}  // namespace
-
-void CubicPairForces::add_to(const CubicFamilies& families, ForceView& f) const {
-    const Index n = nodes_;
-    for_each_chunk(3 * n, [&](std::int64_t from, std::int64_t to) {
-        for (int axis = static_cast<int>(from / n); axis < 3 && axis * n < to; ++axis) {
-            const Index lo = std::max<Index>(from - axis * n, 0), hi = std::min<Index>(to - axis * n, n);
-            double* F = f.forces_along(axis).data();
-            for (int family = 0; family < CubicFamilies::count; ++family)
-                add_family(F, along(family, axis), families.starts(family), lo, hi);
-        }
-    });
 }
 
 }  // namespace frictionlab

@@ -2,7 +2,9 @@
 // The bonds of the simple-cubic lattice in families, one per direction, so that their forces can be
 // computed node by node in parallel and summed on each node in a fixed order (bit-identical results
 // at any thread count): family f holds, for every node p, the bond from p to p's neighbour along
-// f's direction, if there is one.
+// f's direction, if there is one. The hot loops walk a family as runs of consecutive nodes whose
+// neighbours lie at one offset, so they read the neighbours contiguously rather than through an
+// index per node.
 #include <array>
 #include <vector>
 
@@ -11,6 +13,24 @@
 namespace frictionlab {
 
 struct CubicBond;
+
+/// Consecutive nodes [begin, end) whose bonds in one family all end `offset` nodes on, with the
+/// same image_y; offset 0 when they have none (a bond never ends on its own node).
+struct CubicRun {
+    Index begin, end, offset;
+    double image_y;
+};
+
+/// A stretch of nodes on which both a family's bonds from them and its bonds to them keep their
+/// offsets: each node's own bond ends `own` nodes on (none if 0), and the bond ending on it starts
+/// `incoming` nodes on (a negative offset; none if 0).
+struct CubicStretch {
+    Index begin, end;
+    Index own;
+    double own_image_y;
+    Index incoming;
+    double incoming_image_y;
+};
 
 class CubicFamilies {
 public:
@@ -27,9 +47,9 @@ public:
     Index nodes() const { return nodes_; }
     /// The node family f's bond from p ends on, or -1 if p has none in f.
     Index end(int f, Index p) const { return end_[static_cast<std::size_t>(f)][static_cast<std::size_t>(p)]; }
-    const Index* ends(int f) const { return end_[static_cast<std::size_t>(f)].data(); }
-    /// The node whose bond in family f ends on p, or -1.
-    const Index* starts(int f) const { return start_[static_cast<std::size_t>(f)].data(); }
+    /// Calls visit(stretch) for family f's nodes in [from, to), stretch by stretch in order.
+    template <class Visit>
+    void for_each_stretch(int f, Index from, Index to, Visit&& visit) const;
     /// What takes y_j - y_i to the bond's y component: +-B for a bond across the period, else 0.
     const double* image_y(int f) const { return image_y_[static_cast<std::size_t>(f)].data(); }
     /// The rest vector a (dx, dy, dz) of family f.
@@ -44,43 +64,32 @@ public:
 private:
     Index nodes_;
     double spacing_;
-    std::array<std::vector<Index>, count> end_, start_;
+    std::array<std::vector<Index>, count> end_;
     std::array<std::vector<double>, count> image_y_;
+    // Family f's bonds by the node they start on and by the node they end on, as runs.
+    std::array<std::vector<CubicRun>, count> own_runs_, incoming_runs_;
 };
-
-/// Scratch for one evaluation: per family and axis, the force each node's bond in that family puts
-/// on the node (its end takes the opposite).
-class CubicPairForces {
-public:
-    explicit CubicPairForces(Index nodes) : nodes_(nodes), values_(static_cast<std::size_t>(3 * 9 * nodes), 0.0) {}
-    double* along(int family, int axis) { return values_.data() + (3 * family + axis) * nodes_; }
-    const double* along(int family, int axis) const { return values_.data() + (3 * family + axis) * nodes_; }
-    /// Adds to every node its bonds' forces, family by family in a fixed order (its own bond's less
-    /// that of the bond ending on it, onto the force), shared among threads by node and axis.
-    void add_to(const CubicFamilies& families, ForceView& f) const;
-
-private:
-    Index nodes_;
-    std::vector<double> values_;
-};
-
-/// Calls body(family, from, to) over every family's nodes [from, to), shared among threads in
-/// chunks of the families' nodes laid end to end (each index done once, with the same arithmetic).
-template <class Body>
-void for_each_family_chunk(Index nodes, Body&& body);
 
 }  // namespace frictionlab
 
-#include "frictionlab/base/parallel_chunks.hpp"
+#include <algorithm>
 
 namespace frictionlab {
 
-template <class Body>
-void for_each_family_chunk(Index nodes, Body&& body) {
-    for_each_chunk(CubicFamilies::count * nodes, [&](std::int64_t from, std::int64_t to) {
-        for (int f = static_cast<int>(from / nodes); f < CubicFamilies::count && f * nodes < to; ++f)
-            body(f, std::max<Index>(from - f * nodes, 0), std::min<Index>(to - f * nodes, nodes));
-    });
+template <class Visit>
+void CubicFamilies::for_each_stretch(int f, Index from, Index to, Visit&& visit) const {
+    const auto first = [&](const std::vector<CubicRun>& runs) {
+        return std::upper_bound(runs.begin(), runs.end(), from, [](Index p, const CubicRun& r) { return p < r.end; });
+    };
+    const auto& own = own_runs_[static_cast<std::size_t>(f)];
+    const auto& incoming = incoming_runs_[static_cast<std::size_t>(f)];
+    for (auto o = first(own), i = first(incoming); from < to;) {
+        const Index end = std::min({o->end, i->end, to});
+        visit(CubicStretch{from, end, o->offset, o->image_y, i->offset, i->image_y});
+        from = end;
+        if (o->end == end) ++o;
+        if (i->end == end) ++i;
+    }
 }
 
 }  // namespace frictionlab
