@@ -64,9 +64,9 @@ ParamSpec<SpringLattice3d::Params> SpringLattice3d::spec() {
 }
 
 std::string SpringLattice3d::too_large(const Params& p) {
-    // Measured: a run's peak memory grows by 3.3 kB a node (41 x ny x 9 with rk4 and Coulomb friction,
-    // 1845 to 15129 nodes: the state and the stages, the bond families and their scratch).
-    constexpr double bytes_per_node = 3400;
+    // Measured: a run's peak memory grows by 2.8 kB a node (41 x ny x 9 with rk4 and Coulomb friction,
+    // 1107 to 15129 nodes: the state and the stages, the bond families and their runs).
+    constexpr double bytes_per_node = 2900;
     return body_too_large(static_cast<double>(p.nx) * static_cast<double>(p.ny) * static_cast<double>(p.nz),
                           bytes_per_node, "nx x ny x nz", "lattice");
 }
