@@ -23,7 +23,7 @@ struct CubicRun {
 
 /// A stretch of nodes on which both a family's bonds from them and its bonds to them keep their
 /// offsets: each node's own bond ends `own` nodes on (none if 0), and the bond ending on it starts
-/// `incoming` nodes on (a negative offset; none if 0).
+/// `incoming` nodes on (none if 0).
 struct CubicStretch {
     Index begin, end;
     Index own;
