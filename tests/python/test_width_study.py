@@ -3,6 +3,7 @@ periodic), its seeds' first global slip, precursor count and first precursor's a
 share of the n_x n_y cells), the means with their intervals, and the slopes over the bounded cases."""
 import math
 import os
+import re
 
 import pytest
 
@@ -45,7 +46,7 @@ def sweep(tmp_path):
 
 
 def test_each_case_has_its_width_and_its_seeds_values(sweep):
-    study = {c.name: c for c in width_study.cases(sweep)}
+    study = {c.name: c for c in width_study.cases(width_study.load([sweep]))}
     assert list(study) == ["periodic", "ny2", "ny5"]
     assert math.isinf(study["periodic"].width)
     assert study["ny2"].width == pytest.approx(2 * SPACING) and study["ny5"].width == pytest.approx(5 * SPACING)
@@ -58,7 +59,7 @@ def test_each_case_has_its_width_and_its_seeds_values(sweep):
 
 
 def test_the_table_gives_means_with_intervals_and_the_slopes_over_the_bounded_widths(sweep):
-    study = width_study.cases(sweep)
+    study = width_study.cases(width_study.load([sweep]))
     text = width_study.table(study)
     ny5 = next(c for c in study if c.name == "ny5")
     mean = ensembles.mean(ny5.global_ratio)
@@ -70,7 +71,7 @@ def test_the_table_gives_means_with_intervals_and_the_slopes_over_the_bounded_wi
 
 def test_the_figure_is_drawn(sweep, tmp_path):
     path = str(tmp_path / "width.png")
-    width_study.figure(width_study.cases(sweep), path)
+    width_study.figure(width_study.cases(width_study.load([sweep])), path)
     assert os.path.getsize(path) > 10000
 
 
@@ -85,4 +86,44 @@ def test_a_second_sweep_adds_its_cases_after_the_first(sweep, tmp_path, capsys):
     rows = [line.split(" |")[0] for line in capsys.readouterr().out.splitlines() if line.startswith("| ny")]
     assert rows == ["| ny2", "| ny5", "| ny41"]
     # One seed: its value without an interval.
-    assert "| ny41 | 102.5 | 1 | 0.4100 |" in width_study.table(width_study.cases(str(square)))
+    assert "| ny41 | 102.5 | 1 | 0.4100 |" in width_study.table(width_study.cases(width_study.load([str(square)])))
+
+
+def test_a_saved_study_reads_back_and_a_case_run_anew_replaces_its_rows(sweep, tmp_path):
+    """The docs' study is a seeds file (--save): it reads back to the same table, and a later source
+    with a case of the same name replaces that case's rows where they stood."""
+    saved = str(tmp_path / "seeds.csv")
+    assert width_study.main([sweep, "--save", saved]) == 0
+    # repr: NaN, the area without a precursor before the global slip, is not equal to itself.
+    assert list(map(repr, width_study.load([saved]))) == list(map(repr, width_study.load([sweep])))
+    again = tmp_path / "again"
+    write_run(str(again), "ny2_seed-7", 2, "bounded", [(0, 0.3), (1, 1.0)])
+    with open(again / "sweep.csv", "w") as f:
+        f.write(HEADER + "ny2,7,ny2_seed-7,done,4,0.45,true\n")
+    study = width_study.cases(width_study.load([saved, str(again)]))
+    assert [c.name for c in study] == ["periodic", "ny2", "ny5"]
+    assert study[1].global_ratio == [0.45] and study[1].precursors == [4] and study[1].disagreeing == 0
+
+
+def _rows(text):
+    """The case rows of the text's first Markdown table, by case, each cell without the notes in
+    parentheses that the docs add ("(a corner patch)") or the table writes ("(1 disagreeing)")."""
+    rows = {}
+    table = text[text.index("| case |"):].split("\n\n")[0]
+    for line in table.splitlines():
+        if line.startswith("| ") and not line.startswith(("| case", "| ---")):
+            cells = [re.sub(r"\s*\([^)]*\)", "", cell).strip() for cell in line.strip(" |").split(" | ")]
+            rows[cells[0]] = cells[1:]
+    return rows
+
+
+def test_the_docs_table_is_what_the_docs_seeds_file_gives(source_dir):
+    """theory.md 3a quotes the study from share/docs/data/width_study_seeds.csv: each of its rows and
+    the slopes are what the file gives, so the table cannot drift from the data that makes it."""
+    seeds = width_study.load([os.path.join(source_dir, "share/docs/data/width_study_seeds.csv")])
+    expected = width_study.table(width_study.cases(seeds))
+    with open(os.path.join(source_dir, "share/docs/theory.md"), encoding="utf-8") as f:
+        docs = f.read()
+    assert _rows(docs[docs.index("**The width study**"):]) == _rows(expected)
+    slopes = expected.splitlines()[-1].split(": ", 1)[1]
+    assert slopes in " ".join(docs.split())
