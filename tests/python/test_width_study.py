@@ -127,3 +127,9 @@ def test_the_docs_table_is_what_the_docs_seeds_file_gives(source_dir):
     assert _rows(docs[docs.index("**The width study**"):]) == _rows(expected)
     slopes = expected.splitlines()[-1].split(": ", 1)[1]
     assert slopes in " ".join(docs.split())
+
+
+def test_a_sweep_not_yet_ended_is_named_without_a_traceback(tmp_path, capsys):
+    """A sweep writes sweep.csv when it ends: before that its folder is refused in one line."""
+    assert width_study.main([str(tmp_path)]) == 1
+    assert "sweep.csv: No such file or directory (a sweep writes sweep.csv when it ends)" in capsys.readouterr().err
